@@ -1,0 +1,135 @@
+#include "lcm_io/image_codec.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace ws {
+namespace {
+
+using widestereo::image_t;
+
+struct RawLayout {
+  int cv_type;
+  int bytes_per_pixel;
+};
+
+// The raw (uncompressed) formats we accept; false for compressed or unknown.
+bool RawLayoutOf(int32_t pixelformat, RawLayout* layout) {
+  switch (pixelformat) {
+    case image_t::PIXEL_FORMAT_GRAY: *layout = {CV_8UC1, 1}; return true;
+    case image_t::PIXEL_FORMAT_LE_GRAY16: *layout = {CV_16UC1, 2}; return true;
+    case image_t::PIXEL_FORMAT_RGB:
+    case image_t::PIXEL_FORMAT_BGR: *layout = {CV_8UC3, 3}; return true;
+    case image_t::PIXEL_FORMAT_FLOAT_GRAY32: *layout = {CV_32FC1, 4}; return true;
+    default: return false;
+  }
+}
+
+bool IsCompressed(int32_t pixelformat) {
+  return pixelformat == image_t::PIXEL_FORMAT_MJPEG || pixelformat == image_t::PIXEL_FORMAT_PNG;
+}
+
+// Largest image we accept: 65536 pixels a side, 2^28 pixels in all.
+constexpr int64_t kMaxSide = 1 << 16;
+constexpr int64_t kMaxPixels = int64_t(1) << 28;
+
+[[noreturn]] void Reject(const std::string& what) { throw DecodeError("image_t: " + what); }
+
+}  // namespace
+
+Compression ParseCompression(const std::string& name) {
+  if (name == "none") return Compression::none;
+  if (name == "jpeg") return Compression::jpeg;
+  if (name == "png") return Compression::png;
+  throw std::invalid_argument("compression must be none, jpeg or png, not '" + name + "'");
+}
+
+void ValidateImage(const image_t& msg) {
+  if (msg.width <= 0 || msg.height <= 0 || msg.width > kMaxSide || msg.height > kMaxSide ||
+      int64_t(msg.width) * msg.height > kMaxPixels)
+    Reject("bad image size " + std::to_string(msg.width) + "x" + std::to_string(msg.height));
+  if (msg.size < 0 || size_t(msg.size) != msg.data.size())
+    Reject("size field " + std::to_string(msg.size) + " but payload of " +
+           std::to_string(msg.data.size()) + " bytes");
+  if (IsCompressed(msg.pixelformat)) {
+    if (msg.size == 0) Reject("empty compressed payload");
+    return;
+  }
+  RawLayout layout{};
+  if (!RawLayoutOf(msg.pixelformat, &layout))
+    Reject("unsupported pixel format " + std::to_string(msg.pixelformat));
+  const int64_t min_stride = int64_t(msg.width) * layout.bytes_per_pixel;
+  if (msg.row_stride < min_stride)
+    Reject("row_stride " + std::to_string(msg.row_stride) + " shorter than a row of " +
+           std::to_string(min_stride) + " bytes");
+  if (int64_t(msg.height) * msg.row_stride != int64_t(msg.size))
+    Reject("height x row_stride = " + std::to_string(int64_t(msg.height) * msg.row_stride) +
+           " but size is " + std::to_string(msg.size));
+}
+
+cv::Mat ImageToMat(const image_t& msg) {
+  ValidateImage(msg);
+  if (IsCompressed(msg.pixelformat)) {
+    cv::Mat decoded;
+    try {
+      decoded = cv::imdecode(cv::Mat(1, msg.size, CV_8UC1, const_cast<uint8_t*>(msg.data.data())),
+                             cv::IMREAD_UNCHANGED);
+    } catch (const cv::Exception& e) {
+      Reject(std::string("compressed payload does not decode: ") + e.what());
+    }
+    if (decoded.empty()) Reject("compressed payload does not decode");
+    if (decoded.cols != msg.width || decoded.rows != msg.height)
+      Reject("compressed payload is " + std::to_string(decoded.cols) + "x" +
+             std::to_string(decoded.rows) + ", header says " + std::to_string(msg.width) + "x" +
+             std::to_string(msg.height));
+    if (decoded.type() == CV_8UC4) cv::cvtColor(decoded, decoded, cv::COLOR_BGRA2BGR);
+    return decoded;
+  }
+  RawLayout layout{};
+  RawLayoutOf(msg.pixelformat, &layout);
+  cv::Mat view(msg.height, msg.width, layout.cv_type, const_cast<uint8_t*>(msg.data.data()),
+               size_t(msg.row_stride));
+  cv::Mat out;
+  if (msg.pixelformat == image_t::PIXEL_FORMAT_RGB)
+    cv::cvtColor(view, out, cv::COLOR_RGB2BGR);
+  else
+    out = view.clone();
+  return out;
+}
+
+image_t MatToImage(const cv::Mat& mat, int64_t utime, Compression compression, int jpeg_quality) {
+  image_t msg;
+  msg.utime = utime;
+  msg.width = mat.cols;
+  msg.height = mat.rows;
+  msg.nmetadata = 0;
+  if (compression != Compression::none) {
+    std::vector<int> params;
+    std::string ext = ".png";
+    msg.pixelformat = image_t::PIXEL_FORMAT_PNG;
+    if (compression == Compression::jpeg) {
+      if (mat.depth() != CV_8U) throw std::invalid_argument("JPEG needs an 8-bit image");
+      ext = ".jpg";
+      msg.pixelformat = image_t::PIXEL_FORMAT_MJPEG;
+      params = {cv::IMWRITE_JPEG_QUALITY, jpeg_quality};
+    }
+    cv::imencode(ext, mat, msg.data, params);
+    msg.row_stride = 0;
+  } else {
+    switch (mat.type()) {
+      case CV_8UC1: msg.pixelformat = image_t::PIXEL_FORMAT_GRAY; break;
+      case CV_16UC1: msg.pixelformat = image_t::PIXEL_FORMAT_LE_GRAY16; break;
+      case CV_8UC3: msg.pixelformat = image_t::PIXEL_FORMAT_BGR; break;
+      case CV_32FC1: msg.pixelformat = image_t::PIXEL_FORMAT_FLOAT_GRAY32; break;
+      default: throw std::invalid_argument("unsupported cv::Mat type " + std::to_string(mat.type()));
+    }
+    msg.row_stride = int32_t(mat.cols * mat.elemSize());
+    msg.data.resize(size_t(msg.row_stride) * mat.rows);
+    for (int y = 0; y < mat.rows; ++y)
+      std::memcpy(msg.data.data() + size_t(y) * msg.row_stride, mat.ptr(y), msg.row_stride);
+  }
+  msg.size = int32_t(msg.data.size());
+  return msg;
+}
+
+}  // namespace ws
