@@ -1,0 +1,47 @@
+# widestereo: the whole workflow for a newcomer.
+#   make demo   install what is missing, build, run the whole pipeline
+#   make test   install what is missing, build, run every test with ctest
+
+SHELL := /bin/bash
+BUILD ?= build
+JOBS ?= $(shell nproc)
+LCM_URL ?=
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+# Every Debian package the project uses (build, tests, demo, lcm-spy, plots).
+DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
+  liblcm-dev liblcm-bin liblcm-java libjchart2d-java \
+  libopencv-dev libopencv-contrib-dev opencv-doc \
+  libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
+  libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
+  gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev
+
+.PHONY: deps build test demo spy clean
+
+deps:
+	@missing=$$(for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing" $$missing; \
+	  $(SUDO) apt-get update && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; \
+	else echo "make deps: all $(words $(DEB_PACKAGES)) Debian packages present"; fi
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+demo: build
+	scripts/demo.sh
+
+# lcm-spy with our types decoded. Debian's /usr/bin/lcm-spy passes -Xincgc,
+# which Java 17 refuses, so start the Spy class directly.
+spy: build
+	java -cp /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$(BUILD)/share/java/lcmtypes_widestereo.jar \
+	  lcm.spy.Spy $(if $(LCM_URL),--lcm-url=$(LCM_URL))
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,101 @@
+#include "lcm_io/validate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lcm_io/image_codec.h"
+
+namespace ws {
+namespace {
+
+[[noreturn]] void Reject(const char* type, const std::string& what) {
+  throw DecodeError(std::string(type) + ": " + what);
+}
+
+void Require(bool ok, const char* type, const std::string& what) {
+  if (!ok) Reject(type, what);
+}
+
+template <class Range>
+bool AllFinite(const Range& values) {
+  return std::all_of(std::begin(values), std::end(values),
+                     [](double v) { return std::isfinite(v); });
+}
+
+}  // namespace
+
+void Validate(const widestereo::image_t& msg) { ValidateImage(msg); }
+
+void Validate(const widestereo::stereo_frame_t& msg) {
+  Validate(msg.left);
+  Validate(msg.right);
+}
+
+void Validate(const widestereo::camera_corners_t& msg) {
+  const char* t = "camera_corners_t";
+  Require(msg.n >= 0, t, "negative corner count");
+  if (msg.n == 0) return;
+  Require(msg.image_width > 0 && msg.image_height > 0, t, "corners without an image size");
+  for (int i = 0; i < msg.n; ++i) {
+    const auto& p = msg.image_points[i];
+    const auto& o = msg.object_points[i];
+    Require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(o[0]) &&
+                std::isfinite(o[1]) && std::isfinite(o[2]),
+            t, "corner " + std::to_string(i) + " is not finite");
+    Require(msg.ids[i] >= 0, t, "corner " + std::to_string(i) + " has a negative id");
+  }
+}
+
+void Validate(const widestereo::stereo_corners_t& msg) {
+  Validate(msg.left);
+  Validate(msg.right);
+}
+
+void Validate(const widestereo::camera_calibration_t& msg) {
+  const char* t = "camera_calibration_t";
+  Require(msg.image_width > 0 && msg.image_height > 0, t, "bad image size");
+  Require(msg.model == "bspline" || msg.model == "poly6" || msg.model == "poly12", t,
+          "unknown model '" + msg.model + "'");
+  Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
+  Require(std::is_sorted(msg.knots.begin(), msg.knots.end()), t, "knots are not non-decreasing");
+  const double intrinsics[] = {msg.fx, msg.fy, msg.cx, msg.cy, msg.p1, msg.p2};
+  Require(AllFinite(intrinsics) && msg.fx > 0 && msg.fy > 0, t, "bad intrinsics");
+  if (msg.model == "bspline") {
+    Require(msg.degree >= 1, t, "B-spline degree must be at least 1");
+    Require(msg.ncoeffs == msg.nknots - msg.degree - 1, t,
+            "a degree-" + std::to_string(msg.degree) + " spline on " + std::to_string(msg.nknots) +
+                " knots has " + std::to_string(msg.nknots - msg.degree - 1) +
+                " coefficients, not " + std::to_string(msg.ncoeffs));
+  } else {
+    Require(msg.ncoeffs == (msg.model == "poly6" ? 3 : 6), t,
+            msg.model + " has a wrong number of coefficients");
+  }
+}
+
+void Validate(const widestereo::stereo_calibration_t& msg) {
+  Validate(msg.left);
+  Validate(msg.right);
+  Require(AllFinite(msg.R) && AllFinite(msg.T), "stereo_calibration_t", "non-finite R or T");
+}
+
+void Validate(const widestereo::calibration_status_t& msg) {
+  Require(msg.grid_rows >= 0 && msg.grid_cols >= 0, "calibration_status_t", "negative grid size");
+}
+
+void Validate(const widestereo::disparity_t& msg) {
+  Validate(msg.disparity);
+  Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,
+          "disparity_t", "disparity must be FLOAT_GRAY32");
+  Require(msg.num_disparities > 0, "disparity_t", "num_disparities must be positive");
+}
+
+void Validate(const widestereo::point_cloud_t& msg) {
+  Require(msg.nintensity == 0 || msg.nintensity == msg.npoints, "point_cloud_t",
+          "nintensity must be 0 or npoints");
+}
+
+void Validate(const widestereo::cloud_stats_t&) {}
+void Validate(const widestereo::process_status_t&) {}
+void Validate(const widestereo::command_t&) {}
+
+}  // namespace ws

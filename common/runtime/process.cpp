@@ -1,0 +1,255 @@
+#include "runtime/process.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <sstream>
+#include <stdexcept>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
+
+namespace ws {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void OnSignal(int) { g_stop = true; }
+
+void InstallSignalHandlers() {
+  struct sigaction action {};
+  action.sa_handler = OnSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int64_t WallMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::string HostName() {
+  char name[256] = {};
+  gethostname(name, sizeof name - 1);
+  return name;
+}
+
+std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url, const char* role) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good())
+    throw std::runtime_error(std::string("cannot open LCM ") + role + " URL '" +
+                             (url.empty() ? "(LCM default)" : url) + "'");
+  return lcm;
+}
+
+constexpr int64_t kStatusPeriodUs = 1000000;
+constexpr int64_t kRejectLogPeriodUs = 1000000;
+
+}  // namespace
+
+Process::Process(const ProcessOptions& options)
+    : options_(options),
+      log_(options.name, options.log_dir, options.quiet),
+      start_wall_us_(WallMicros()) {
+  InstallSignalHandlers();
+  input_log_ = LcmFileUrlPath(options.in_url);
+  file_input_ = message_clock_ = !input_log_.empty();
+  if (file_input_) {
+    const LcmLogScan scan = ScanLcmLog(input_log_);
+    if (!scan.complete()) {
+      input_log_problem = input_log_ + " is damaged: " + scan.problem + "; replaying the " +
+                          std::to_string(scan.events) + " complete events before it";
+      log_.Error(input_log_problem);
+    }
+    if (scan.events > 0) in_ = OpenLcm(options.in_url, "input");
+  } else {
+    in_ = OpenLcm(options.in_url, "input");
+  }
+  out_ = OpenLcm(options.out_url, "output");
+  log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
+            (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
+            (options.out_url.empty() ? "LCM default" : options.out_url) +
+            (options.config_file.empty() ? "" : ", config " + options.config_file) + ", log " +
+            log_.path() + ")");
+}
+
+Process::~Process() = default;
+
+void Process::Every(int64_t period_us, std::function<void()> fn) {
+  timers_.push_back({period_us, INT64_MIN, std::move(fn)});
+}
+
+void Process::AtEndOfInput(std::function<void()> fn) { at_end_.push_back(std::move(fn)); }
+
+bool Process::Stopping() const { return g_stop || exit_code_ != 0; }
+
+void Process::Stop() { g_stop = true; }
+
+void Process::Fatal(const std::string& error) {
+  ReportError(error);
+  exit_code_ = 1;
+}
+
+int Process::Run() {
+  bool input_ended = false;
+  while (!Stopping()) {
+    if (file_input_) {
+      if (!in_ || in_->handle() < 0) {
+        input_ended = true;
+        break;
+      }
+    } else if (in_->handleTimeout(100) < 0) {
+      Fatal("LCM input failed");
+      break;
+    }
+    Tick();
+  }
+  if (input_ended) {
+    if (!input_log_problem.empty()) ReportError(input_log_problem);
+    log_.Info("end of input " + input_log_);
+    for (auto& fn : at_end_) {
+      if (Stopping()) break;
+      try {
+        fn();
+      } catch (const std::exception& e) {
+        Fatal(e.what());
+      }
+    }
+  }
+  PublishStatus();
+  ShowProgress();
+  log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
+  return exit_code_;
+}
+
+void Process::Tick() {
+  const int64_t now = Now();
+  if (now != 0 && (last_status_us_ == INT64_MIN || now - last_status_us_ >= kStatusPeriodUs)) {
+    last_status_us_ = now;
+    PublishStatus();
+  }
+  for (Timer& timer : timers_) {
+    if (now == 0 || now < timer.next_us) continue;
+    timer.next_us = now + timer.period_us;
+    try {
+      timer.fn();
+    } catch (const std::exception& e) {
+      ReportError(e.what());
+    }
+  }
+  const int64_t wall = WallMicros();
+  if (wall - last_progress_wall_us_ >= kStatusPeriodUs) {
+    last_progress_wall_us_ = wall;
+    ShowProgress();
+  }
+}
+
+int64_t Process::Now() const { return message_clock_ ? message_utime_.load() : WallMicros(); }
+
+void Process::ObserveTime(int64_t utime) {
+  int64_t seen = message_utime_.load();
+  while (utime > seen && !message_utime_.compare_exchange_weak(seen, utime)) {
+  }
+}
+
+void Process::SetState(const std::string& state) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_ = state;
+}
+
+void Process::ReportError(const std::string& error) {
+  log_.Error(error);
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_error_ = error;
+}
+
+ChannelCounters& Process::Counters(const std::string& channel) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto& slot = counters_[channel];
+  if (!slot) slot = std::make_unique<ChannelCounters>();
+  return *slot;
+}
+
+void Process::HandleRejected(const std::string& channel, const std::string& why) {
+  Counters(channel).rejected++;
+  const int64_t wall = WallMicros();
+  bool log_it;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_error_ = channel + ": " + why;
+    int64_t& last = last_reject_log_us_[channel];
+    log_it = wall - last >= kRejectLogPeriodUs;
+    if (log_it) last = wall;
+  }
+  if (log_it)
+    log_.Error("rejected on " + channel + " (" +
+               std::to_string(Counters(channel).rejected.load()) + " so far): " + why);
+}
+
+void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = last_frame_id_.find(channel);
+  if (it != last_frame_id_.end() && frame_id > it->second + 1)
+    counters_[channel]->dropped += frame_id - it->second - 1;
+  last_frame_id_[channel] = frame_id;
+}
+
+void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes) {
+  ChannelCounters& counters = Counters(channel);
+  int rc;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    rc = out_->publish(channel, bytes.data(), unsigned(bytes.size()));
+  }
+  if (rc < 0) {
+    counters.dropped++;
+    ReportError(channel + ": publish failed (" + std::to_string(bytes.size()) + " bytes)");
+  } else {
+    counters.published++;
+  }
+}
+
+void Process::PublishStatus() {
+  widestereo::process_status_t status;
+  status.utime = Now();
+  status.name = options_.name;
+  status.host = HostName();
+  status.pid = getpid();
+  status.uptime_s = (WallMicros() - start_wall_us_) * 1e-6;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status.state = state_;
+    status.last_error = last_error_;
+    for (const auto& [name, c] : counters_) {
+      widestereo::channel_counters_t cc;
+      cc.channel = name;
+      cc.received = c->received;
+      cc.published = c->published;
+      cc.dropped = c->dropped;
+      cc.rejected = c->rejected;
+      status.channels.push_back(cc);
+    }
+  }
+  status.nchannels = int32_t(status.channels.size());
+  Publish(channel::kProcessStatus, status);
+}
+
+void Process::ShowProgress() {
+  std::ostringstream line;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    line << state_;
+    for (const auto& [name, c] : counters_) {
+      line << " | " << name << " in " << c->received << " out " << c->published;
+      if (c->dropped) line << " dropped " << c->dropped;
+      if (c->rejected) line << " rejected " << c->rejected;
+    }
+  }
+  if (progress_) line << " | " << progress_();
+  log_.Progress(line.str());
+}
+
+}  // namespace ws

@@ -1,0 +1,169 @@
+// What every widestereo process shares at run time: its LCM input and output,
+// typed and validated subscriptions, per-channel counters, the 1 Hz
+// PROCESS_STATUS heartbeat, the text log, clean exit on SIGINT/SIGTERM, and
+// exit at the end of a file:// input log, so every process is also a
+// log-to-log filter.
+//
+// Clock. Live, the process clock is the wall clock. With a file:// input it is
+// the utime of the newest input message, so that timers and heartbeats fall at
+// the same places in the output on every replay of the same log.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "lcm_io/decode.h"
+#include "runtime/process_cli.h"
+#include "runtime/text_log.h"
+#include "widestereo/process_status_t.hpp"
+
+namespace ws {
+
+struct ChannelCounters {
+  std::atomic<int64_t> received{0};
+  std::atomic<int64_t> published{0};
+  std::atomic<int64_t> dropped{0};
+  std::atomic<int64_t> rejected{0};
+};
+
+class Process {
+ public:
+  // Opens the text log and both LCM URLs; throws std::runtime_error with the
+  // reason when one cannot be opened.
+  explicit Process(const ProcessOptions& options);
+  ~Process();
+
+  // Decodes, validates and counts every message on `channel`, then calls
+  // `handler`. A message that fails to decode or validate, or whose handler
+  // throws, is counted as rejected and logged; the process goes on. Gaps in
+  // a message's frame_id are counted as dropped (lost upstream or in transit).
+  template <class Msg>
+  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler);
+
+  // Encodes and publishes; thread-safe. A failed publish is counted as dropped.
+  template <class Msg>
+  void Publish(const std::string& channel, const Msg& msg);
+
+  // Calls fn every period_us of the process clock (from Run() or Tick()).
+  void Every(int64_t period_us, std::function<void()> fn);
+  // Calls fn once when a file:// input log has been read to its end.
+  void AtEndOfInput(std::function<void()> fn);
+  // Adds a line to the terminal progress display.
+  void SetProgress(std::function<std::string()> fn) { progress_ = std::move(fn); }
+
+  // Handles input until the end of a file:// input or a stop; returns the exit code.
+  int Run();
+  // Heartbeat, timers and progress; for processes that run their own loop.
+  void Tick();
+  bool Stopping() const;
+  // Ends Run() cleanly, as SIGINT does.
+  void Stop();
+  // Ends Run() with exit code 1 after logging the error.
+  void Fatal(const std::string& error);
+
+  int64_t Now() const;
+  // Advances the message clock (no effect live).
+  void ObserveTime(int64_t utime);
+  bool file_input() const { return file_input_; }
+  // Makes the clock follow ObserveTime() even without file input (a source
+  // process writing a log, for example).
+  void UseMessageClock() { message_clock_ = true; }
+
+  void SetState(const std::string& state);
+  // Logs an error and keeps it as the status's last_error.
+  void ReportError(const std::string& error);
+  ChannelCounters& Counters(const std::string& channel);
+  TextLog& log() { return log_; }
+  const ProcessOptions& options() const { return options_; }
+
+ private:
+  struct Timer {
+    int64_t period_us;
+    int64_t next_us;
+    std::function<void()> fn;
+  };
+
+  void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
+  void PublishStatus();
+  void ShowProgress();
+  void HandleRejected(const std::string& channel, const std::string& why);
+  void CountFrameGap(const std::string& channel, int64_t frame_id);
+
+  ProcessOptions options_;
+  TextLog log_;
+  std::unique_ptr<lcm::LCM> in_;
+  std::unique_ptr<lcm::LCM> out_;
+  std::string input_log_;        // path of a file:// input, "" live
+  std::string input_log_problem; // where a damaged input log stops
+  bool file_input_ = false;
+  bool message_clock_ = false;
+  std::atomic<int64_t> message_utime_{0};
+  int64_t start_wall_us_;
+  int64_t last_status_us_ = INT64_MIN;
+  int64_t last_progress_wall_us_ = 0;
+  int exit_code_ = 0;
+
+  std::mutex mutex_;  // guards state_, last_error_, counters_ creation, publishing
+  std::string state_ = "running";
+  std::string last_error_;
+  std::map<std::string, std::unique_ptr<ChannelCounters>> counters_;
+  std::map<std::string, int64_t> last_frame_id_;
+  std::map<std::string, int64_t> last_reject_log_us_;
+  std::vector<Timer> timers_;
+  std::vector<std::function<void()>> at_end_;
+  std::function<std::string()> progress_;
+  std::vector<std::shared_ptr<void>> handler_contexts_;
+};
+
+namespace detail {
+template <class Msg, class = void>
+struct HasFrameId : std::false_type {};
+template <class Msg>
+struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : std::true_type {};
+}  // namespace detail
+
+template <class Msg>
+void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
+  Counters(channel);
+  if (!in_) return;  // an empty input log: nothing will arrive
+  using Context = std::pair<Process*, std::function<void(const Msg&)>>;
+  auto context = std::make_shared<Context>(this, std::move(handler));
+  handler_contexts_.push_back(context);
+  in_->subscribeFunction(
+      channel,
+      +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
+        Process* self = ctx->first;
+        self->Counters(ch).received++;
+        try {
+          const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
+          self->ObserveTime(msg.utime);
+          if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
+          ctx->second(msg);
+        } catch (const std::exception& e) {
+          self->HandleRejected(ch, e.what());
+        }
+      },
+      context.get());
+}
+
+template <class Msg>
+void Process::Publish(const std::string& channel, const Msg& msg) {
+  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
+  if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0) {
+    Counters(channel).dropped++;
+    ReportError(channel + ": message does not encode");
+    return;
+  }
+  PublishBytes(channel, bytes);
+}
+
+}  // namespace ws

@@ -1,0 +1,45 @@
+#include "runtime/process_cli.h"
+
+#include <iostream>
+#include <memory>
+
+#include "runtime/yaml_config.h"
+
+namespace ws {
+
+ProcessCli::ProcessCli(std::string name, std::string description)
+    : app_(std::move(description), name) {
+  options_.name = std::move(name);
+  app_.config_formatter(std::make_shared<YamlConfig>());
+  app_.allow_config_extras(CLI::config_extras_mode::error);
+  app_.set_config("--config", "", "YAML file of option: value (command-line flags override it)");
+  app_.add_option("--in-url", options_.in_url,
+                  "LCM URL to read from (default: LCM's default, udpm multicast); "
+                  "'file://LOG?speed=0' replays a log as fast as it is processed");
+  app_.add_option("--out-url", options_.out_url,
+                  "LCM URL to publish to (default: LCM's default); 'file://LOG?mode=w' writes a log");
+  app_.add_option("--log-dir", options_.log_dir, "Folder of the text log <name>.log")
+      ->capture_default_str();
+  app_.add_flag("--quiet", options_.quiet, "Only errors on the terminal (the log file gets all)");
+}
+
+std::optional<int> ProcessCli::Parse(int argc, char** argv) {
+  try {
+    app_.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app_.exit(e);  // --help
+    // Name the config file and say "unknown option" where CLI11 says "INI".
+    std::string why = e.what();
+    const std::string ini = "INI was not able to parse ";
+    if (why.rfind(ini, 0) == 0) why = "unknown option '" + why.substr(ini.size()) + "'";
+    const CLI::Option* config = app_.get_config_ptr();
+    const std::string file = config && config->count() ? config->as<std::string>() + ": " : "";
+    std::cerr << options_.name << ": " << file << why << "\nRun with --help for more information.\n";
+    return e.get_exit_code();
+  }
+  if (auto* config = app_.get_config_ptr(); config && config->count() > 0)
+    options_.config_file = config->as<std::string>();
+  return std::nullopt;
+}
+
+}  // namespace ws

@@ -1,0 +1,45 @@
+// stereo-status: a live one-screen table of every widestereo process on the
+// bus (rates, drops, rejections, errors) and of the calibration's progress.
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "lcm_io/channels.h"
+#include "monitor/status_board.h"
+#include "runtime/process.h"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-status",
+                     "Shows every widestereo process on the bus: message rates, drops, "
+                     "rejections, errors, and the calibration's state and coverage.");
+  double duration_s = 0;
+  cli.app().add_option("--duration", duration_s, "Exit after this many seconds (0: run until Ctrl-C)");
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    ws::Process process(cli.options());
+    ws::StatusBoard board;
+    process.Subscribe<widestereo::process_status_t>(
+        ws::channel::kProcessStatus, [&](const auto& m) { board.Add(m); });
+    process.Subscribe<widestereo::calibration_status_t>(
+        ws::channel::kCalibrationStatus, [&](const auto& m) { board.Add(m); });
+    const bool tty = isatty(STDOUT_FILENO);
+    auto show = [&] {
+      std::printf("%s%s\n", tty ? "\033[H\033[2J" : "", board.Render().c_str());
+      std::fflush(stdout);
+    };
+    const int64_t start = process.Now();
+    if (!process.file_input()) {
+      process.Every(1000000, [&] {
+        show();
+        if (duration_s > 0 && process.Now() - start >= duration_s * 1e6) process.Stop();
+      });
+    }
+    const int rc = process.Run();
+    show();
+    return rc;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereo-status: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,266 @@
+// Every message type survives encode/decode, and DecodeMessage rejects what
+// does not decode or validate.
+#include <gtest/gtest.h>
+
+#include "lcm_io/decode.h"
+#include "test_support.h"
+
+namespace {
+
+using namespace widestereo;
+
+template <class Msg>
+std::vector<uint8_t> Encode(const Msg& msg) {
+  return ws::test::Event("X", msg).data;
+}
+
+template <class Msg>
+void ExpectRoundTrip(const Msg& msg) {
+  const auto bytes = Encode(msg);
+  const Msg decoded = ws::DecodeMessage<Msg>(bytes.data(), int(bytes.size()));
+  EXPECT_EQ(Encode(decoded), bytes) << Msg::getTypeName();
+}
+
+image_t Gray(int w, int h, uint8_t value) {
+  return ws::MatToImage(cv::Mat(h, w, CV_8UC1, cv::Scalar(value)), 42);
+}
+
+camera_corners_t Corners() {
+  camera_corners_t c;
+  c.board_id = "chessboard:9x6:0.025";
+  c.image_width = 640;
+  c.image_height = 480;
+  c.n = 2;
+  c.ids = {0, 1};
+  c.image_points = {{10.5, 20.25}, {30.0, 40.0}};
+  c.object_points = {{0, 0, 0}, {0.025, 0, 0}};
+  return c;
+}
+
+camera_calibration_t Calibration(const std::string& name) {
+  camera_calibration_t c;
+  c.name = name;
+  c.image_width = 1280;
+  c.image_height = 960;
+  c.model = "bspline";
+  c.degree = 3;
+  c.knots = {0, 0, 0, 0, 1, 2, 2, 2, 2};
+  c.nknots = int32_t(c.knots.size());
+  c.coeffs = {0, 0, 0.01, 0.02, -0.01};
+  c.ncoeffs = int32_t(c.coeffs.size());
+  c.fx = c.fy = 346.7;
+  c.cx = 640;
+  c.cy = 480;
+  c.p1 = 1e-4;
+  c.p2 = -1e-4;
+  c.rms = 0.1;
+  c.view_rms = {0.1, 0.12};
+  c.nviews = 2;
+  c.param_names = {"fx", "fy"};
+  c.stddev = {0.01, 0.02};
+  c.nparams = 2;
+  return c;
+}
+
+TEST(Messages, EveryTypeRoundTrips) {
+  stereo_frame_t frame;
+  frame.utime = 1;
+  frame.frame_id = 7;
+  frame.left = Gray(4, 3, 1);
+  frame.right = Gray(4, 3, 2);
+  frame.left.nmetadata = 1;
+  frame.left.metadata.resize(1);
+  frame.left.metadata[0].key = "exposure_us";
+  frame.left.metadata[0].n = 2;
+  frame.left.metadata[0].value = {1, 2};
+  ExpectRoundTrip(frame);
+  ExpectRoundTrip(frame.left);
+
+  stereo_corners_t corners;
+  corners.utime = 2;
+  corners.frame_id = 7;
+  corners.left = Corners();
+  corners.right = Corners();
+  ExpectRoundTrip(corners);
+
+  stereo_calibration_t calib;
+  calib.utime = 3;
+  calib.left = Calibration("left");
+  calib.right = Calibration("right");
+  for (int i = 0; i < 9; ++i) calib.R[i] = i % 4 == 0;
+  calib.T[0] = -0.3;
+  calib.rms = 0.2;
+  calib.nviews = 1;
+  calib.view_rms = {0.2};
+  ExpectRoundTrip(calib);
+
+  calibration_status_t status;
+  status.utime = 4;
+  status.state = "collecting";
+  status.grid_rows = 2;
+  status.grid_cols = 3;
+  status.coverage_left = {{1, 2, 3}, {4, 5, 6}};
+  status.coverage_right = {{0, 0, 0}, {1, 1, 1}};
+  status.rms = -1;
+  status.hint = "move the board to the top-left corner";
+  ExpectRoundTrip(status);
+
+  disparity_t disparity;
+  disparity.utime = 5;
+  disparity.disparity = ws::MatToImage(cv::Mat(3, 4, CV_32FC1, cv::Scalar(1.5f)), 5);
+  disparity.num_disparities = 64;
+  disparity.Q[15] = 1;
+  ExpectRoundTrip(disparity);
+
+  point_cloud_t cloud;
+  cloud.utime = 6;
+  cloud.frame = "left_rectified";
+  cloud.npoints = 2;
+  cloud.xyz = {{0, 0, 2}, {0.1f, 0.2f, 2.1f}};
+  cloud.nintensity = 2;
+  cloud.intensity = {10, 20};
+  ExpectRoundTrip(cloud);
+
+  cloud_stats_t stats;
+  stats.utime = 7;
+  stats.plane_found = true;
+  stats.plane_normal[2] = 1;
+  stats.plane_offset = -2;
+  stats.nstages = 2;
+  stats.stage_names = {"input", "voxel"};
+  stats.stage_points = {100, 50};
+  stats.stage_ms = {0.1, 2.5};
+  ExpectRoundTrip(stats);
+
+  process_status_t ps;
+  ps.utime = 8;
+  ps.name = "stereo-detect";
+  ps.host = "robot";
+  ps.pid = 123;
+  ps.nchannels = 1;
+  ps.channels.resize(1);
+  ps.channels[0].channel = "STEREO_IMAGES";
+  ps.channels[0].received = 10;
+  ps.channels[0].dropped = 1;
+  ExpectRoundTrip(ps);
+
+  command_t command;
+  command.utime = 9;
+  command.command = "solve";
+  command.nargs = 1;
+  command.args = {"model=bspline"};
+  ExpectRoundTrip(command);
+}
+
+TEST(Messages, ImageOfEveryFormatRoundTripsThroughMat) {
+  cv::Mat gray(5, 7, CV_8UC1), gray16(5, 7, CV_16UC1), bgr(5, 7, CV_8UC3), f32(5, 7, CV_32FC1);
+  cv::randu(gray, 0, 255);
+  cv::randu(gray16, 0, 65535);
+  cv::randu(bgr, 0, 255);
+  cv::randu(f32, -10, 10);
+  for (const cv::Mat& m : {gray, gray16, bgr, f32})
+    EXPECT_EQ(cv::norm(ws::ImageToMat(ws::MatToImage(m, 1)), m, cv::NORM_INF), 0) << m.type();
+  for (const cv::Mat& m : {gray, gray16, bgr})
+    EXPECT_EQ(cv::norm(ws::ImageToMat(ws::MatToImage(m, 1, ws::Compression::png)), m,
+                       cv::NORM_INF), 0) << m.type();
+  const cv::Mat jpeg = ws::ImageToMat(ws::MatToImage(bgr, 1, ws::Compression::jpeg, 100));
+  EXPECT_EQ(jpeg.size(), bgr.size());
+  EXPECT_EQ(jpeg.type(), CV_8UC3);
+}
+
+TEST(Messages, RgbPayloadComesOutInBgrOrder) {
+  image_t msg = Gray(1, 1, 0);
+  msg.pixelformat = image_t::PIXEL_FORMAT_RGB;
+  msg.row_stride = 3;
+  msg.data = {10, 20, 30};
+  msg.size = 3;
+  const cv::Mat m = ws::ImageToMat(msg);
+  EXPECT_EQ(m.at<cv::Vec3b>(0, 0), cv::Vec3b(30, 20, 10));
+}
+
+TEST(Messages, ImageWhoseSizesDisagreeIsRejected) {
+  image_t msg = Gray(4, 3, 0);
+  msg.height = 4;  // height x row_stride = 16 but 12 bytes of payload
+  EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
+  msg = Gray(4, 3, 0);
+  msg.row_stride = 3;  // shorter than a row
+  EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
+  msg = Gray(4, 3, 0);
+  msg.width = -4;
+  EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
+  msg = Gray(4, 3, 0);
+  msg.pixelformat = 12345;
+  EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
+  // Through the wire: a stereo frame carrying such an image.
+  stereo_frame_t frame;
+  frame.left = Gray(4, 3, 0);
+  frame.right = Gray(4, 3, 0);
+  frame.right.height = 30;
+  const auto bytes = Encode(frame);
+  EXPECT_THROW(ws::DecodeMessage<stereo_frame_t>(bytes.data(), int(bytes.size())), ws::DecodeError);
+}
+
+TEST(Messages, CompressedPayloadMustDecodeToTheAnnouncedSize) {
+  image_t msg = ws::MatToImage(cv::Mat(8, 8, CV_8UC1, cv::Scalar(9)), 1, ws::Compression::jpeg);
+  image_t truncated = msg;
+  truncated.data.resize(truncated.data.size() / 3);
+  truncated.size = int32_t(truncated.data.size());
+  EXPECT_THROW(ws::ImageToMat(truncated), ws::DecodeError);
+  image_t wrong_size = msg;
+  wrong_size.width = 9;
+  EXPECT_THROW(ws::ImageToMat(wrong_size), ws::DecodeError);
+}
+
+TEST(Messages, WrongTypeTruncatedAndTrailingBytesAreRejected) {
+  command_t command;
+  command.command = "solve";
+  command.nargs = 0;
+  auto bytes = Encode(command);
+  EXPECT_THROW(ws::DecodeMessage<stereo_frame_t>(bytes.data(), int(bytes.size())), ws::DecodeError);
+  EXPECT_THROW(ws::DecodeMessage<command_t>(bytes.data(), int(bytes.size()) - 1), ws::DecodeError);
+  bytes.push_back(0);
+  EXPECT_THROW(ws::DecodeMessage<command_t>(bytes.data(), int(bytes.size())), ws::DecodeError);
+}
+
+TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
+  point_cloud_t cloud;
+  cloud.npoints = 0;
+  cloud.nintensity = 0;
+  auto bytes = Encode(cloud);
+  // npoints sits after hash (8), utime (8), frame_id (8), frame (4 + 1 bytes).
+  const size_t npoints_at = 8 + 8 + 8 + 5;
+  for (uint8_t first_byte : {uint8_t(0xff), uint8_t(0x7f)}) {
+    auto bad = bytes;
+    bad[npoints_at] = first_byte;  // -16777216 or 2^31-ish points in a 40-byte message
+    EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(bad.data(), int(bad.size())), ws::DecodeError);
+  }
+}
+
+TEST(Messages, CornersAndCalibrationsAreChecked) {
+  camera_corners_t corners = Corners();
+  corners.image_points[1][0] = std::nan("");
+  EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
+  camera_calibration_t calib = Calibration("left");
+  calib.model = "fisheye9000";
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+  calib = Calibration("left");
+  calib.coeffs.push_back(0);
+  calib.ncoeffs++;
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+  EXPECT_NO_THROW(ws::Validate(Calibration("left")));
+}
+
+}  // namespace
+
+namespace {
+
+// libbot's bot_core.image_metadata_t fingerprint base (its generated code);
+// LCM hashes field names and types, not the package, so ours must equal it
+// for bot_core viewers to decode our images.
+TEST(Messages, ImageLayoutIsLibbotsBotCoreImage) {
+  const uint64_t bot_core_metadata_base = 0x4d25b1a682bbfdc7ULL;
+  const uint64_t rotated = (bot_core_metadata_base << 1) + (bot_core_metadata_base >> 63);
+  EXPECT_EQ(uint64_t(widestereo::image_metadata_t::getHash()), rotated);
+}
+
+}  // namespace

@@ -1,0 +1,120 @@
+// Real processes over real LCM: replay of a file:// log to its end with bad
+// messages rejected and counted, an empty and a damaged input log, and two
+// processes talking over udpm on this host.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <thread>
+
+#include "lcm_io/channels.h"
+#include "test_support.h"
+#include "widestereo/process_status_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace {
+
+using namespace ws::test;
+using widestereo::process_status_t;
+
+process_status_t Status(const std::string& name, int64_t utime) {
+  process_status_t s;
+  s.utime = utime;
+  s.name = name;
+  s.host = "robot";
+  s.pid = 1;
+  s.nchannels = 0;
+  return s;
+}
+
+// The counters of `channel` in the last PROCESS_STATUS that `process` wrote to `log`.
+widestereo::channel_counters_t LastCounters(const std::string& log, const std::string& process,
+                                            const std::string& channel) {
+  const auto statuses = Messages<process_status_t>(ReadLog(log), ws::channel::kProcessStatus);
+  for (auto s = statuses.rbegin(); s != statuses.rend(); ++s)
+    if (s->name == process)
+      for (const auto& c : s->channels)
+        if (c.channel == channel) return c;
+  ADD_FAILURE() << "no counters of " << channel << " from " << process << " in " << log;
+  return {};
+}
+
+TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
+  const std::string dir = TempDir("replay");
+  std::vector<LogEvent> events;
+  for (int i = 0; i < 5; ++i) events.push_back(Event("PROCESS_STATUS", Status("peer", 1000000 * i)));
+  events.push_back({"PROCESS_STATUS", {1, 2, 3, 4, 5, 6, 7, 8, 9}, 0});  // garbage
+  widestereo::stereo_frame_t frame{};
+  events.push_back(Event("PROCESS_STATUS", frame));                        // wrong type
+  auto truncated = Event("PROCESS_STATUS", Status("peer", 9));
+  truncated.data.resize(truncated.data.size() - 2);
+  events.push_back(truncated);
+  WriteLog(dir + "/in.lcmlog", events);
+
+  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                             "file://" + dir + "/out.lcmlog?mode=w"},
+                            30);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("peer@robot"), std::string::npos) << r.output;
+  const auto c = LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS");
+  EXPECT_EQ(c.received, 8);
+  EXPECT_EQ(c.rejected, 3);
+}
+
+TEST(ProcessLcm, EmptyInputLogEndsAtOnce) {
+  const std::string dir = TempDir("empty");
+  WriteLog(dir + "/in.lcmlog", {});
+  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                             "file://" + dir + "/out.lcmlog?mode=w"},
+                            30);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+TEST(ProcessLcm, DamagedInputLogReplaysUpToTheCutAndSaysSo) {
+  const std::string dir = TempDir("cut");
+  std::vector<LogEvent> events;
+  for (int i = 0; i < 4; ++i) events.push_back(Event("PROCESS_STATUS", Status("peer", 1000000 * i)));
+  WriteLog(dir + "/in.lcmlog", events);
+  std::filesystem::resize_file(dir + "/in.lcmlog", std::filesystem::file_size(dir + "/in.lcmlog") - 5);
+  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                             "file://" + dir + "/out.lcmlog?mode=w"},
+                            30);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("damaged"), std::string::npos) << r.output;
+  EXPECT_EQ(LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS").received, 3);
+}
+
+TEST(ProcessLcm, MissingInputLogIsAClearError) {
+  const std::string dir = TempDir("missing");
+  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/nope.lcmlog?speed=0"}, 30);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("cannot open"), std::string::npos) << r.output;
+}
+
+TEST(ProcessLcm, TwoProcessesTalkOverUdpm) {
+  const std::string dir = TempDir("udpm");
+  const std::string bus = UniqueUdpmUrl();
+  // The listener hears the talker's PROCESS_STATUS heartbeats over udpm and
+  // records its own counters in a log.
+  std::thread listener_thread;
+  CommandResult listener;
+  listener_thread = std::thread([&] {
+    listener = RunCommand({"stereo-status", "--log-dir", dir, "--duration", "4", "--in-url", bus,
+                           "--out-url", "file://" + dir + "/listener.lcmlog?mode=w"},
+                          30);
+  });
+  const auto talker = RunCommand({"stereo-status", "--log-dir", dir + "/talker", "--duration", "3",
+                                  "--in-url", UniqueUdpmUrl(1), "--out-url", bus},
+                                 30);
+  listener_thread.join();
+  ASSERT_EQ(talker.exit_code, 0) << talker.output;
+  ASSERT_EQ(listener.exit_code, 0) << listener.output;
+  const auto c = LastCounters(dir + "/listener.lcmlog", "stereo-status", "PROCESS_STATUS");
+  EXPECT_GE(c.received, 2);
+  EXPECT_EQ(c.rejected, 0);
+}
+
+}  // namespace

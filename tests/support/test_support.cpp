@@ -1,0 +1,99 @@
+#include "test_support.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include <lcm/lcm-cpp.hpp>
+
+namespace ws::test {
+
+std::string SourceDir() { return WS_SOURCE_DIR; }
+std::string BinDir() { return std::string(WS_BINARY_DIR) + "/bin"; }
+
+std::string TempDir(const std::string& name) {
+  const auto dir = std::filesystem::path(WS_BINARY_DIR) / "test-tmp" /
+                   (name + "-" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
+  std::string program = argv.at(0);
+  if (program.find('/') == std::string::npos && std::filesystem::exists(BinDir() + "/" + program))
+    program = BinDir() + "/" + program;
+  const std::string out_path = TempDir("cmd-out") + "/output.txt";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args[0] = const_cast<char*>(program.c_str());
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    _exit(127);
+  }
+  CommandResult result;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  int status = 0;
+  while (true) {
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      break;
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  FILE* f = std::fopen(out_path.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while (f && (n = std::fread(buf, 1, sizeof buf, f)) > 0) result.output.append(buf, n);
+  if (f) std::fclose(f);
+  return result;
+}
+
+std::string UniqueUdpmUrl(int offset) {
+  return "udpm://239.255.76.67:" + std::to_string(20000 + (getpid() * 7 + offset) % 20000) +
+         "?ttl=0";
+}
+
+void WriteLog(const std::string& path, const std::vector<LogEvent>& events) {
+  lcm::LogFile log(path, "w");
+  if (!log.good()) throw std::runtime_error("cannot write " + path);
+  int64_t n = 0;
+  for (const auto& e : events) {
+    lcm::LogEvent le;
+    le.eventnum = n++;
+    le.timestamp = e.timestamp ? e.timestamp : 1000000 * n;
+    le.channel = e.channel;
+    le.datalen = int32_t(e.data.size());
+    le.data = const_cast<uint8_t*>(e.data.data());
+    log.writeEvent(&le);
+  }
+}
+
+std::vector<LogEvent> ReadLog(const std::string& path) {
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw std::runtime_error("cannot read " + path);
+  std::vector<LogEvent> events;
+  while (const lcm::LogEvent* le = log.readNextEvent()) {
+    const auto* bytes = static_cast<const uint8_t*>(le->data);
+    events.push_back({le->channel, std::vector<uint8_t>(bytes, bytes + le->datalen), le->timestamp});
+  }
+  return events;
+}
+
+}  // namespace ws::test

@@ -1,0 +1,57 @@
+// Helpers for tests that run real processes over real LCM.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ws::test {
+
+// The repository and build folders (from the build's compile definitions).
+std::string SourceDir();
+std::string BinDir();
+
+// A fresh empty folder under the build tree, unique to this test process.
+std::string TempDir(const std::string& name);
+
+struct CommandResult {
+  int exit_code = -1;  // -1: did not exit before the timeout (then killed)
+  std::string output;  // stdout and stderr together
+};
+
+// Runs argv[0] (a path, or a name in build/bin) with a time limit.
+CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s = 60);
+
+// A udpm URL on this host (ttl=0) with a port unique to this test process, so
+// tests running at the same time do not hear each other.
+std::string UniqueUdpmUrl(int offset = 0);
+
+struct LogEvent {
+  std::string channel;
+  std::vector<uint8_t> data;
+  int64_t timestamp = 0;
+};
+
+void WriteLog(const std::string& path, const std::vector<LogEvent>& events);
+std::vector<LogEvent> ReadLog(const std::string& path);
+
+template <class Msg>
+LogEvent Event(const std::string& channel, const Msg& msg, int64_t timestamp = 0) {
+  LogEvent e{channel, std::vector<uint8_t>(size_t(msg.getEncodedSize())), timestamp};
+  msg.encode(e.data.data(), 0, int(e.data.size()));
+  return e;
+}
+
+// Decodes every event on `channel` as Msg (events of other types are skipped).
+template <class Msg>
+std::vector<Msg> Messages(const std::vector<LogEvent>& events, const std::string& channel) {
+  std::vector<Msg> out;
+  for (const auto& e : events) {
+    Msg m;
+    if (e.channel == channel && m.decode(e.data.data(), 0, int(e.data.size())) > 0)
+      out.push_back(m);
+  }
+  return out;
+}
+
+}  // namespace ws::test
