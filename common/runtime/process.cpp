@@ -57,17 +57,6 @@ Process::Process(const ProcessOptions& options)
   InstallSignalHandlers();
   input_log_ = LcmFileUrlPath(options.in_url);
   file_input_ = message_clock_ = !input_log_.empty();
-  if (file_input_) {
-    const LcmLogScan scan = ScanLcmLog(input_log_);
-    if (!scan.complete()) {
-      input_log_problem = input_log_ + " is damaged: " + scan.problem + "; replaying the " +
-                          std::to_string(scan.events) + " complete events before it";
-      log_.Error(input_log_problem);
-    }
-    if (scan.events > 0) in_ = OpenLcm(options.in_url, "input");
-  } else {
-    in_ = OpenLcm(options.in_url, "input");
-  }
   out_ = OpenLcm(options.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
@@ -77,6 +66,23 @@ Process::Process(const ProcessOptions& options)
 }
 
 Process::~Process() = default;
+
+lcm::LCM* Process::Input() {
+  if (in_opened_) return in_.get();
+  in_opened_ = true;
+  if (!file_input_) {
+    in_ = OpenLcm(options_.in_url, "input");
+    return in_.get();
+  }
+  const LcmLogScan scan = ScanLcmLog(input_log_);
+  if (!scan.complete()) {
+    input_log_problem = input_log_ + " is damaged: " + scan.problem + "; replaying the " +
+                        std::to_string(scan.events) + " complete events before it";
+    log_.Error(input_log_problem);
+  }
+  if (scan.events > 0) in_ = OpenLcm(options_.in_url, "input");
+  return in_.get();
+}
 
 void Process::Every(int64_t period_us, std::function<void()> fn) {
   timers_.push_back({period_us, INT64_MIN, std::move(fn)});
@@ -94,14 +100,15 @@ void Process::Fatal(const std::string& error) {
 }
 
 int Process::Run() {
+  lcm::LCM* in = Input();
   bool input_ended = false;
   while (!Stopping()) {
     if (file_input_) {
-      if (!in_ || in_->handle() < 0) {
+      if (!in || in->handle() < 0) {
         input_ended = true;
         break;
       }
-    } else if (in_->handleTimeout(100) < 0) {
+    } else if (in->handleTimeout(100) < 0) {
       Fatal("LCM input failed");
       break;
     }
@@ -119,6 +126,10 @@ int Process::Run() {
       }
     }
   }
+  return Finish();
+}
+
+int Process::Finish() {
   PublishStatus();
   ShowProgress();
   log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");

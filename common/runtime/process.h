@@ -60,8 +60,11 @@ class Process {
   // Adds a line to the terminal progress display.
   void SetProgress(std::function<std::string()> fn) { progress_ = std::move(fn); }
 
-  // Handles input until the end of a file:// input or a stop; returns the exit code.
+  // Handles input until the end of a file:// input or a stop, then Finish().
   int Run();
+  // The last heartbeat and log line; returns the exit code. For processes
+  // that run their own loop (stereo-capture) instead of Run().
+  int Finish();
   // Heartbeat, timers and progress; for processes that run their own loop.
   void Tick();
   bool Stopping() const;
@@ -92,6 +95,8 @@ class Process {
     std::function<void()> fn;
   };
 
+  // The input LCM, opened on first use; null for an empty input log.
+  lcm::LCM* Input();
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
   void PublishStatus();
   void ShowProgress();
@@ -101,6 +106,7 @@ class Process {
   ProcessOptions options_;
   TextLog log_;
   std::unique_ptr<lcm::LCM> in_;
+  bool in_opened_ = false;
   std::unique_ptr<lcm::LCM> out_;
   std::string input_log_;        // path of a file:// input, "" live
   std::string input_log_problem; // where a damaged input log stops
@@ -134,11 +140,12 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 template <class Msg>
 void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
   Counters(channel);
-  if (!in_) return;  // an empty input log: nothing will arrive
+  lcm::LCM* in = Input();
+  if (!in) return;  // an empty input log: nothing will arrive
   using Context = std::pair<Process*, std::function<void(const Msg&)>>;
   auto context = std::make_shared<Context>(this, std::move(handler));
   handler_contexts_.push_back(context);
-  in_->subscribeFunction(
+  in->subscribeFunction(
       channel,
       +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
         Process* self = ctx->first;

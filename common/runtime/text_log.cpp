@@ -35,6 +35,10 @@ TextLog::TextLog(const std::string& name, const std::string& log_dir, bool quiet
 }
 
 void TextLog::Info(const std::string& line) { Write("info", line); }
+void TextLog::Detail(const std::string& line) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  file_ << WallClockText() << " detail " << line << '\n';
+}
 void TextLog::Error(const std::string& line) { Write("error", line); }
 
 void TextLog::Write(const char* level, const std::string& line) {

@@ -14,6 +14,8 @@ class TextLog {
   TextLog(const std::string& name, const std::string& log_dir, bool quiet);
 
   void Info(const std::string& line);
+  // Only to the file: per-message detail that would flood the terminal.
+  void Detail(const std::string& line);
   void Error(const std::string& line);
   // The one-line progress shown on the terminal (rewritten in place on a TTY).
   void Progress(const std::string& line);

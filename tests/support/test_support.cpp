@@ -25,6 +25,20 @@ std::string TempDir(const std::string& name) {
   return dir.string();
 }
 
+std::string OpenCvStereoSetDir() {
+  const std::string dir = TempDir("opencv-stereo-set");
+  for (int i = 1; i <= 14; ++i) {
+    if (i == 10) continue;
+    char name[16];
+    for (const char* side : {"left", "right"}) {
+      std::snprintf(name, sizeof name, "%s%02d.jpg", side, i);
+      std::filesystem::create_symlink(std::string(kOpenCvDataDir) + "/" + name,
+                                      std::filesystem::path(dir) / name);
+    }
+  }
+  return dir;
+}
+
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
   std::string program = argv.at(0);
   if (program.find('/') == std::string::npos && std::filesystem::exists(BinDir() + "/" + program))

@@ -14,6 +14,13 @@ std::string BinDir();
 // A fresh empty folder under the build tree, unique to this test process.
 std::string TempDir(const std::string& name);
 
+// Debian opencv-doc's stereo calibration set: left01..right14.jpg (640x480,
+// 9x6 inner corners, pair 10 absent).
+inline const char* kOpenCvDataDir = "/usr/share/doc/opencv-doc/examples/data";
+// A folder holding links to exactly those 13 pairs (the data folder also has
+// an unrelated left.jpg/right.jpg pair).
+std::string OpenCvStereoSetDir();
+
 struct CommandResult {
   int exit_code = -1;  // -1: did not exit before the timeout (then killed)
   std::string output;  // stdout and stderr together

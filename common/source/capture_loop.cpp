@@ -1,0 +1,64 @@
+#include "source/capture_loop.h"
+
+#include <chrono>
+#include <thread>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace ws {
+namespace {
+
+int64_t WallMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+void MirrorSourceCounters(Process& process, const StereoSource& source) {
+  for (const auto& [input, counts] : source.Counters()) {
+    ChannelCounters& c = process.Counters(input);
+    c.received = counts.received;
+    c.dropped = counts.dropped;
+    c.rejected = counts.rejected;
+  }
+}
+
+}  // namespace
+
+void RunCapture(Process& process, StereoSource& source, const CaptureOptions& options) {
+  const bool live = LcmFileUrlPath(process.options().out_url).empty();
+  const bool paced = live && options.rate_hz > 0 && !source.Paced();
+  const int64_t period_us = int64_t(1e6 / (options.rate_hz > 0 ? options.rate_hz : 10.0));
+  if (options.frame_clock) process.UseMessageClock();
+  const auto start = std::chrono::steady_clock::now();
+  ChannelCounters& images = process.Counters(channel::kStereoImages);
+  process.SetProgress([&] { return "frame " + std::to_string(images.published.load()); });
+
+  for (int64_t frame_id = 0; !process.Stopping(); ++frame_id) {
+    if (options.count > 0 && frame_id >= options.count) break;
+    if (paced) std::this_thread::sleep_until(start + std::chrono::microseconds(frame_id * period_us));
+    std::optional<StereoPair> pair = source.Next();
+    MirrorSourceCounters(process, source);
+    if (!pair) break;
+    if (pair->left.empty() || pair->right.empty()) {
+      process.ReportError("frame " + std::to_string(frame_id) + " lost: " + pair->label);
+      process.Tick();
+      continue;
+    }
+    widestereo::stereo_frame_t frame;
+    frame.frame_id = frame_id;
+    frame.utime = pair->utime ? pair->utime
+                  : options.frame_clock ? (frame_id + 1) * period_us
+                                        : WallMicros();
+    process.ObserveTime(frame.utime);
+    frame.left = MatToImage(pair->left, frame.utime, options.compression, options.jpeg_quality);
+    frame.right = MatToImage(pair->right, frame.utime, options.compression, options.jpeg_quality);
+    process.Publish(channel::kStereoImages, frame);
+    process.log().Detail("frame " + std::to_string(frame_id) + ": " + pair->label);
+    process.Tick();
+  }
+}
+
+}  // namespace ws

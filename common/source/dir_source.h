@@ -1,0 +1,39 @@
+// A directory of stereo pairs: files whose names differ only in "left" and
+// "right" (left01.jpg/right01.jpg, left_03.png/right_03.png, ...), in sorted
+// order of the left name. A pair that cannot be read as two images of one
+// size and type comes back with empty images (and is counted).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "source/stereo_source.h"
+
+namespace ws {
+
+struct ImagePairPaths {
+  std::string left;
+  std::string right;
+};
+
+// The pairs in `dir`, sorted. Throws std::runtime_error when the directory
+// cannot be read or holds no pair.
+std::vector<ImagePairPaths> FindImagePairs(const std::string& dir);
+
+class DirSource : public StereoSource {
+ public:
+  DirSource(const std::string& dir, bool loop);
+  std::optional<StereoPair> Next() override;
+  std::map<std::string, SourceCounts> Counters() const override;
+
+ private:
+  std::string dir_;
+  std::vector<ImagePairPaths> pairs_;
+  bool loop_;
+  size_t next_ = 0;
+  int64_t read_ = 0;
+  int64_t unreadable_ = 0;
+  size_t consecutive_unreadable_ = 0;
+};
+
+}  // namespace ws

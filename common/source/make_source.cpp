@@ -1,0 +1,21 @@
+#include "source/make_source.h"
+
+#include <stdexcept>
+
+#include "source/dir_source.h"
+
+namespace ws {
+
+std::unique_ptr<StereoSource> MakeStereoSource(const std::string& spec, const SourceOptions& options) {
+  const size_t colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  const std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  if (arg.empty())
+    throw std::invalid_argument("--source must be aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml, not '" +
+                                spec + "'");
+  if (kind == "dir") return std::make_unique<DirSource>(arg, options.loop);
+  throw std::invalid_argument("unknown source kind '" + kind +
+                              "' (use aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml)");
+}
+
+}  // namespace ws

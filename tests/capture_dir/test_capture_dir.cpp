@@ -1,0 +1,115 @@
+// stereo-capture --source dir: over real LCM: pairs found by name, in order,
+// frame ids counting every pair, exit at the end; bad directories are errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "source/dir_source.h"
+#include "test_support.h"
+#include "widestereo/process_status_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace {
+
+using namespace ws::test;
+
+void WriteImage(const std::string& path, int value, int width = 32, int height = 24) {
+  cv::imwrite(path, cv::Mat(height, width, CV_8UC1, cv::Scalar(value)));
+}
+
+TEST(DirSource, PairsNamesThatDifferOnlyInLeftAndRight) {
+  const std::string dir = TempDir("pairs");
+  WriteImage(dir + "/left_03.png", 3);
+  WriteImage(dir + "/right_03.png", 103);
+  WriteImage(dir + "/left_01.png", 1);
+  WriteImage(dir + "/right_01.png", 101);
+  WriteImage(dir + "/left_02.png", 2);  // no right: not a pair
+  std::ofstream(dir + "/notes_left.txt") << "not an image";
+  const auto pairs = ws::FindImagePairs(dir);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(std::filesystem::path(pairs[0].left).filename(), "left_01.png");
+  EXPECT_EQ(std::filesystem::path(pairs[0].right).filename(), "right_01.png");
+  EXPECT_EQ(std::filesystem::path(pairs[1].right).filename(), "right_03.png");
+}
+
+TEST(DirSource, EmptyOrMissingDirectoryIsAClearError) {
+  EXPECT_THROW(ws::FindImagePairs(TempDir("none")), std::runtime_error);
+  EXPECT_THROW(ws::FindImagePairs("/nonexistent/dir"), std::runtime_error);
+}
+
+TEST(CaptureDir, PublishesEveryOpenCvDocPairToALogAndExits) {
+  const std::string dir = TempDir("capture");
+  const auto r = RunCommand({"stereo-capture", "--source", "dir:" + OpenCvStereoSetDir(), "--frame-clock",
+                             "--log-dir", dir, "--out-url", "file://" + dir + "/images.lcmlog?mode=w"},
+                            60);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto frames = Messages<widestereo::stereo_frame_t>(ReadLog(dir + "/images.lcmlog"),
+                                                           ws::channel::kStereoImages);
+  ASSERT_EQ(frames.size(), 13u);  // left01..left14 without 10
+  for (size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(frames[i].frame_id, int64_t(i));
+    EXPECT_EQ(frames[i].utime, int64_t(i + 1) * 100000);
+  }
+  // Pair 0 is left01.jpg / right01.jpg, pixel for pixel.
+  const cv::Mat left01 = cv::imread(std::string(kOpenCvDataDir) + "/left01.jpg", cv::IMREAD_UNCHANGED);
+  const cv::Mat right01 = cv::imread(std::string(kOpenCvDataDir) + "/right01.jpg", cv::IMREAD_UNCHANGED);
+  EXPECT_EQ(cv::norm(ws::ImageToMat(frames[0].left), left01, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(ws::ImageToMat(frames[0].right), right01, cv::NORM_INF), 0);
+}
+
+TEST(CaptureDir, CountAndCompressionAreApplied) {
+  const std::string dir = TempDir("count");
+  const auto r = RunCommand({"stereo-capture", "--source", "dir:" + OpenCvStereoSetDir(), "--count", "3",
+                             "--compression", "png", "--log-dir", dir, "--out-url",
+                             "file://" + dir + "/images.lcmlog?mode=w"},
+                            60);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto frames = Messages<widestereo::stereo_frame_t>(ReadLog(dir + "/images.lcmlog"),
+                                                           ws::channel::kStereoImages);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(frames[2].left.pixelformat, widestereo::image_t::PIXEL_FORMAT_PNG);
+  EXPECT_EQ(ws::ImageToMat(frames[2].left).size(), cv::Size(640, 480));
+}
+
+TEST(CaptureDir, UnreadablePairLeavesAFrameIdGapAndIsCounted) {
+  const std::string dir = TempDir("unreadable");
+  WriteImage(dir + "/left1.png", 1);
+  WriteImage(dir + "/right1.png", 1);
+  std::ofstream(dir + "/left2.png") << "not a png";
+  WriteImage(dir + "/right2.png", 2);
+  WriteImage(dir + "/left3.png", 3);
+  WriteImage(dir + "/right3.png", 3, 16, 24);  // size differs from left3
+  WriteImage(dir + "/left4.png", 4);
+  WriteImage(dir + "/right4.png", 4);
+  const auto r = RunCommand({"stereo-capture", "--source", "dir:" + dir, "--log-dir", dir,
+                             "--out-url", "file://" + dir + "/images.lcmlog?mode=w"},
+                            60);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto events = ReadLog(dir + "/images.lcmlog");
+  const auto frames = Messages<widestereo::stereo_frame_t>(events, ws::channel::kStereoImages);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].frame_id, 0);
+  EXPECT_EQ(frames[1].frame_id, 3);
+  const auto statuses = Messages<widestereo::process_status_t>(events, ws::channel::kProcessStatus);
+  ASSERT_FALSE(statuses.empty());
+  bool counted = false;
+  for (const auto& c : statuses.back().channels)
+    if (c.channel == "dir:" + dir) counted = c.rejected == 2 && c.received == 2;
+  EXPECT_TRUE(counted);
+}
+
+TEST(CaptureDir, BadSourceSpecIsAClearError) {
+  const std::string dir = TempDir("badspec");
+  for (const std::string spec : {"dir:", "camera:1,2", "dir:/nonexistent"}) {
+    const auto r = RunCommand({"stereo-capture", "--source", spec, "--log-dir", dir}, 30);
+    EXPECT_EQ(r.exit_code, 1) << spec << ": " << r.output;
+    EXPECT_NE(r.output.find("stereo-capture:"), std::string::npos) << r.output;
+  }
+}
+
+}  // namespace
