@@ -46,8 +46,11 @@ class Process {
   // `handler`. A message that fails to decode or validate, or whose handler
   // throws, is counted as rejected and logged; the process goes on. Gaps in
   // a message's frame_id are counted as dropped (lost upstream or in transit).
+  // Live, at most `queue_capacity` messages wait for the handler (0: LCM's
+  // default); LCM drops the oldest beyond that, which shows as a frame_id gap.
   template <class Msg>
-  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler);
+  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+                 int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as dropped.
   template <class Msg>
@@ -138,14 +141,15 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 }  // namespace detail
 
 template <class Msg>
-void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler) {
+void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+                        int queue_capacity) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
   using Context = std::pair<Process*, std::function<void(const Msg&)>>;
   auto context = std::make_shared<Context>(this, std::move(handler));
   handler_contexts_.push_back(context);
-  in->subscribeFunction(
+  lcm::Subscription* subscription = in->subscribeFunction(
       channel,
       +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
         Process* self = ctx->first;
@@ -160,6 +164,7 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
         }
       },
       context.get());
+  if (queue_capacity > 0 && !file_input_) subscription->setQueueCapacity(queue_capacity);
 }
 
 template <class Msg>

@@ -1,0 +1,21 @@
+// The 3-D points of a disparity image, in the left rectified camera frame
+// (x right, y down, z forward, metres): Z = f b / d, X = (u - cx) Z / f,
+// Y = (v - cy) Z / f. Only valid disparities (>= min_disparity, > 0) with
+// Z <= max_depth become points; OpenCV's "missing" marker never does.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "rectify/rectification.h"
+#include "widestereo/point_cloud_t.hpp"
+
+namespace ws {
+
+inline constexpr const char* kLeftRectifiedFrame = "left_rectified";
+
+// `intensity` (8-bit grey or BGR, the left rectified image) may be empty.
+widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
+                                           float min_disparity, const cv::Mat& intensity,
+                                           double max_depth);
+
+}  // namespace ws

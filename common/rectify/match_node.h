@@ -1,0 +1,49 @@
+// stereo-match's work: keeps the rectification of the newest calibration,
+// and turns each stereo frame into a disparity image and a point cloud.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "rectify/disparity_cloud.h"
+#include "rectify/matcher.h"
+#include "rectify/rectification.h"
+#include "runtime/process.h"
+#include "widestereo/disparity_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace ws {
+
+struct MatchConfig {
+  MatcherConfig matcher;
+  RectifyOptions rectify;
+  double max_depth = 20.0;  // metres; farther points are left out of the cloud
+};
+
+struct MatchResult {
+  widestereo::disparity_t disparity;
+  widestereo::point_cloud_t cloud;
+};
+
+// Rectifies and matches one frame. Throws std::invalid_argument when the
+// frame's size is not the calibration's.
+MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
+                       const widestereo::stereo_frame_t& frame);
+
+// Wires MatchFrame to the bus: STEREO_CALIBRATION (re)builds the maps,
+// STEREO_IMAGES become STEREO_DISPARITY and STEREO_CLOUD.
+class MatchNode {
+ public:
+  MatchNode(Process& process, MatchConfig config);
+  void SetRig(const StereoRig& rig);  // builds the maps now
+  void OnCalibration(const widestereo::stereo_calibration_t& msg);
+  void OnFrame(const widestereo::stereo_frame_t& frame);
+
+ private:
+  Process& process_;
+  MatchConfig config_;
+  std::optional<Rectification> rect_;
+  int64_t frames_without_calibration_ = 0;
+};
+
+}  // namespace ws

@@ -1,0 +1,65 @@
+#include "rectify/matcher.h"
+
+#include <stdexcept>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace ws {
+namespace {
+
+void Require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("matcher: " + what);
+}
+
+cv::Mat Gray8(const cv::Mat& image) {
+  Require(image.depth() == CV_8U, "images must be 8-bit");
+  if (image.channels() == 1) return image;
+  cv::Mat gray;
+  cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  return gray;
+}
+
+}  // namespace
+
+void CheckMatcherConfig(const MatcherConfig& c) {
+  Require(c.kind == "bm" || c.kind == "sgbm", "kind must be bm or sgbm, not '" + c.kind + "'");
+  Require(c.num_disparities > 0 && c.num_disparities % 16 == 0,
+          "num_disparities must be a positive multiple of 16");
+  Require(c.block_size % 2 == 1 && c.block_size >= 1, "block_size must be odd");
+  Require(c.kind == "sgbm" || (c.block_size >= 5 && c.block_size <= 255),
+          "block_size for bm must be 5..255");
+  Require(c.uniqueness_ratio >= 0 && c.speckle_window >= 0 && c.speckle_range >= 0 &&
+              c.texture_threshold >= 0 && c.p1_per_pixel >= 0 && c.p2_per_pixel > c.p1_per_pixel,
+          "uniqueness_ratio, speckle and texture settings must be >= 0 and p2 > p1");
+}
+
+cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
+  CheckMatcherConfig(c);
+  if (c.kind == "bm") {
+    auto bm = cv::StereoBM::create(c.num_disparities, c.block_size);
+    bm->setMinDisparity(c.min_disparity);
+    bm->setUniquenessRatio(c.uniqueness_ratio);
+    bm->setSpeckleWindowSize(c.speckle_window);
+    bm->setSpeckleRange(c.speckle_range);
+    bm->setTextureThreshold(c.texture_threshold);
+    bm->setDisp12MaxDiff(c.disp12_max_diff);
+    return bm;
+  }
+  const int area = c.block_size * c.block_size;
+  return cv::StereoSGBM::create(c.min_disparity, c.num_disparities, c.block_size,
+                                c.p1_per_pixel * area, c.p2_per_pixel * area, c.disp12_max_diff, 0,
+                                c.uniqueness_ratio, c.speckle_window, c.speckle_range,
+                                cv::StereoSGBM::MODE_SGBM);
+}
+
+cv::Mat ComputeDisparity(const MatcherConfig& config, const cv::Mat& left, const cv::Mat& right) {
+  Require(left.size() == right.size(), "left and right images differ in size");
+  cv::Mat fixed_point, disparity;
+  MakeMatcher(config)->compute(Gray8(left), Gray8(right), fixed_point);
+  // OpenCV marks pixels without a match (min_disparity - 1) * 16.
+  fixed_point.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
+  return disparity;
+}
+
+}  // namespace ws

@@ -1,0 +1,35 @@
+// Dense stereo matching on rectified pairs: OpenCV's block matching (the
+// paper used a 33x33 window) or semi-global block matching.
+#pragma once
+
+#include <string>
+
+#include <opencv2/calib3d.hpp>
+
+namespace ws {
+
+struct MatcherConfig {
+  std::string kind = "sgbm";   // "bm" or "sgbm"
+  int min_disparity = 0;
+  int num_disparities = 128;   // a positive multiple of 16
+  int block_size = 7;          // odd; BM: 5..255 (the paper: 33)
+  int uniqueness_ratio = 10;
+  int speckle_window = 100;
+  int speckle_range = 2;
+  int texture_threshold = 10;  // BM only
+  int p1_per_pixel = 8;        // SGBM: P1 = p1_per_pixel * channels * block_size^2
+  int p2_per_pixel = 32;       // SGBM: P2 likewise
+  int disp12_max_diff = 1;
+};
+
+// Throws std::invalid_argument naming the field when a value is out of range.
+void CheckMatcherConfig(const MatcherConfig& config);
+
+// Disparity in pixels (CV_32FC1) of two rectified 8-bit images (grey or BGR,
+// converted to grey); pixels without a match hold min_disparity - 1.
+cv::Mat ComputeDisparity(const MatcherConfig& config, const cv::Mat& left, const cv::Mat& right);
+
+// The raw OpenCV matcher for `config`, for comparisons with bare OpenCV.
+cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& config);
+
+}  // namespace ws

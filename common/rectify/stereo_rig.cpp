@@ -1,0 +1,34 @@
+#include "rectify/stereo_rig.h"
+
+#include "models/camera_model.h"
+
+namespace ws {
+
+CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) {
+  CameraModel model;
+  model.image_width = msg.image_width;
+  model.image_height = msg.image_height;
+  model.fx = msg.fx;
+  model.fy = msg.fy;
+  model.cx = msg.cx;
+  model.cy = msg.cy;
+  model.p1 = msg.p1;
+  model.p2 = msg.p2;
+  model.distortion.kind = msg.model;
+  model.distortion.degree = msg.degree;
+  model.distortion.knots = msg.knots;
+  model.distortion.coeffs = msg.coeffs;
+  Camera check(model);  // throws std::invalid_argument when inconsistent
+  return model;
+}
+
+StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg) {
+  StereoRig rig;
+  rig.left = CameraModelFromMessage(msg.left);
+  rig.right = CameraModelFromMessage(msg.right);
+  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = msg.R[i];
+  for (int i = 0; i < 3; ++i) rig.T(i) = msg.T[i];
+  return rig;
+}
+
+}  // namespace ws

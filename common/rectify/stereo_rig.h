@@ -1,0 +1,24 @@
+// A calibrated stereo rig: two cameras and the pose of the right camera
+// relative to the left, X_right = R X_left + T (OpenCV's convention).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "models/camera_model.h"
+#include "widestereo/stereo_calibration_t.hpp"
+
+namespace ws {
+
+struct StereoRig {
+  CameraModel left;
+  CameraModel right;
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d T = Eigen::Vector3d::Zero();  // metres
+};
+
+// The camera model a calibration message carries. Throws std::invalid_argument
+// when the message does not describe a usable camera.
+CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg);
+StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg);
+
+}  // namespace ws

@@ -1,0 +1,40 @@
+// stereo-match: rectifies every stereo pair through the calibrated lens model,
+// matches it, and publishes the disparity and the point cloud.
+#include <cstdio>
+
+#include "lcm_io/channels.h"
+#include "rectify/match_node.h"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-match",
+                     "Rectifies STEREO_IMAGES through the calibrated lens model (from "
+                     "STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
+                     "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame).");
+  ws::MatchConfig config;
+  auto& m = config.matcher;
+  auto& app = cli.app();
+  app.add_option("--matcher", m.kind, "bm or sgbm")->check(CLI::IsMember({"bm", "sgbm"}))->capture_default_str();
+  app.add_option("--num-disparities", m.num_disparities, "Disparity search range (multiple of 16)")->capture_default_str();
+  app.add_option("--min-disparity", m.min_disparity, "Smallest disparity searched")->capture_default_str();
+  app.add_option("--block-size", m.block_size, "Matching window (odd; the paper used 33 with bm)")->capture_default_str();
+  app.add_option("--uniqueness", m.uniqueness_ratio, "Uniqueness ratio, percent")->capture_default_str();
+  app.add_option("--speckle-window", m.speckle_window, "Speckle filter window (0: off)")->capture_default_str();
+  app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
+  app.add_option("--focal-scale", config.rectify.focal_scale,
+                 "Rectified focal length over the cameras' smallest (< 1 keeps more field)")->capture_default_str();
+  app.add_option("--max-depth", config.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    ws::Process process(cli.options());
+    ws::MatchNode node(process, config);
+    process.Subscribe<widestereo::stereo_calibration_t>(
+        ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
+    process.Subscribe<widestereo::stereo_frame_t>(
+        ws::channel::kStereoImages, [&](const auto& msg) { node.OnFrame(msg); }, 2);
+    return process.Run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereo-match: %s\n", e.what());
+    return 1;
+  }
+}

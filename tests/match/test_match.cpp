@@ -1,0 +1,206 @@
+// stereo-match: rectification geometry through the full lens model, the
+// Middlebury aloe pair against bare OpenCV SGBM in the same test, bad input.
+#include <gtest/gtest.h>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "match_fixtures.h"
+#include "models/theia_lens.h"
+#include "rectify/match_node.h"
+#include "test_support.h"
+#include "widestereo/disparity_t.hpp"
+#include "widestereo/process_status_t.hpp"
+
+namespace {
+
+using namespace ws::test;
+
+// The Theia-like mustache lens on both sides, 0.3 m baseline, a slightly
+// rotated and offset right camera.
+ws::StereoRig WideRig() {
+  ws::StereoRig rig;
+  rig.left = rig.right = ws::TheiaLikeCamera();
+  rig.right.fx *= 1.01;
+  rig.right.cx += 3;
+  cv::Matx33d R;
+  cv::Rodrigues(cv::Vec3d(0.01, -0.02, 0.005), R);
+  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = R.val[i];
+  rig.T = Eigen::Vector3d(-0.3, 0.004, 0.002);
+  return rig;
+}
+
+TEST(Rectification, CorrespondingPixelsShareARowAcrossTheWholeField) {
+  const ws::StereoRig rig = WideRig();
+  const ws::Rectification rect = ws::BuildRectification(rig);
+  EXPECT_NEAR(rect.baseline, rig.T.norm(), 1e-12);
+  const ws::Camera left(rig.left), right(rig.right);
+  int checked = 0;
+  double worst_row = 0, worst_depth = 0;
+  for (double depth : {1.0, 2.0, 5.0}) {
+    for (int v = 0; v < 960; v += 60) {
+      for (int u = 0; u < 1280; u += 80) {
+        // A scene point seen at (u, v) by the left camera, at this depth.
+        const auto ray = left.Unproject(Eigen::Vector2d(u, v));
+        ASSERT_TRUE(ray);
+        const Eigen::Vector3d X = *ray * (depth / (*ray)(2));
+        const auto pr = right.Project(rig.R * X + rig.T);
+        if (!pr || (*pr)(0) < 0 || (*pr)(0) > 1279 || (*pr)(1) < 0 || (*pr)(1) > 959) continue;
+        cv::Point2d l, r;
+        ASSERT_TRUE(ws::RectifyPoint(rect, rig, true, cv::Point2d(u, v), &l));
+        ASSERT_TRUE(ws::RectifyPoint(rect, rig, false, cv::Point2d((*pr)(0), (*pr)(1)), &r));
+        worst_row = std::max(worst_row, std::abs(l.y - r.y));
+        // The disparity gives back the depth along the rectified axis.
+        const cv::Vec3d Xr = rect.R_left * cv::Vec3d(X(0), X(1), X(2));
+        worst_depth = std::max(worst_depth, std::abs(rect.f * rect.baseline / (l.x - r.x) - Xr[2]));
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_LT(worst_row, 1e-6);
+  EXPECT_LT(worst_depth, 1e-6);
+}
+
+TEST(Rectification, RemapTablesAgreeWithTheModel) {
+  const ws::StereoRig rig = WideRig();
+  const ws::Rectification rect = ws::BuildRectification(rig);
+  cv::Mat map_x, map_y;
+  cv::convertMaps(rect.map_right[0], rect.map_right[1], map_x, map_y, CV_32FC1);
+  double worst = 0;
+  for (int v = 40; v < 960; v += 97) {
+    for (int u = 40; u < 1280; u += 101) {
+      cv::Point2d rectified;
+      ASSERT_TRUE(ws::RectifyPoint(rect, rig, false, cv::Point2d(u, v), &rectified));
+      const int ru = int(std::lround(rectified.x)), rv = int(std::lround(rectified.y));
+      if (ru < 0 || rv < 0 || ru >= rect.size.width || rv >= rect.size.height) continue;
+      // The table maps the rectified pixel back to near (u, v): within the
+      // rounding of the rectified pixel (<= 0.5 px there) and the fixed-point
+      // step (1/32 px).
+      cv::Point2d back;
+      ASSERT_TRUE(ws::RectifyPoint(rect, rig, false,
+                                   cv::Point2d(map_x.at<float>(rv, ru), map_y.at<float>(rv, ru)), &back));
+      worst = std::max(worst, cv::norm(back - cv::Point2d(ru, rv)));
+    }
+  }
+  EXPECT_LT(worst, 0.05);
+}
+
+TEST(Rectification, IdentityCalibrationLeavesImagesUntouched) {
+  const cv::Mat left = cv::imread(std::string(kOpenCvDataDir) + "/aloeL.jpg");
+  const cv::Mat right = cv::imread(std::string(kOpenCvDataDir) + "/aloeR.jpg");
+  const auto rig = ws::StereoRigFromMessage(IdentityCalibration(left.cols, left.rows, 1000, 0.1));
+  const ws::Rectification rect = ws::BuildRectification(rig);
+  cv::Mat lr, rr;
+  ws::RectifyPair(rect, left, right, &lr, &rr);
+  EXPECT_EQ(cv::norm(lr, left, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(rr, right, cv::NORM_INF), 0);
+}
+
+struct Score {
+  double bad_rate;  // of pixels with ground truth and an estimate: |d - gt| > 1 px
+  double density;   // of pixels with ground truth: those with an estimate
+};
+
+Score ScoreAgainstGroundTruth(const cv::Mat& disparity, const cv::Mat& gt, float invalid_below) {
+  int known = 0, estimated = 0, bad = 0;
+  for (int v = 0; v < gt.rows; ++v)
+    for (int u = 0; u < gt.cols; ++u) {
+      const int g = gt.at<uint8_t>(v, u);
+      if (g == 0) continue;
+      ++known;
+      const float d = disparity.at<float>(v, u);
+      if (d < invalid_below) continue;
+      ++estimated;
+      bad += std::abs(d - g) > 1.0f;
+    }
+  return {double(bad) / estimated, double(estimated) / known};
+}
+
+TEST(MatchPipeline, AloeGivesWhatBareOpenCvSgbmGives) {
+  const std::string dir = TempDir("aloe");
+  const cv::Mat left = cv::imread(std::string(kOpenCvDataDir) + "/aloeL.jpg");
+  const cv::Mat right = cv::imread(std::string(kOpenCvDataDir) + "/aloeR.jpg");
+  const cv::Mat gt = cv::imread(std::string(kOpenCvDataDir) + "/aloeGT.png", cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(left.empty() || right.empty() || gt.empty());
+
+  widestereo::stereo_frame_t frame{};
+  frame.utime = 2000000;
+  frame.left = ws::MatToImage(left, frame.utime, ws::Compression::png);
+  frame.right = ws::MatToImage(right, frame.utime, ws::Compression::png);
+  auto calib = IdentityCalibration(left.cols, left.rows, 1000, 0.1);
+  calib.utime = 1000000;
+  WriteLog(dir + "/in.lcmlog", {Event(ws::channel::kStereoCalibration, calib),
+                                Event(ws::channel::kStereoImages, frame)});
+
+  ws::MatcherConfig config;  // the pipeline's settings, but for the range
+  config.num_disparities = 224;
+  const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--num-disparities", "224",
+                             "--max-depth", "1000", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                             "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
+                            300);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto events = ReadLog(dir + "/out.lcmlog");
+  const auto disparities = Messages<widestereo::disparity_t>(events, ws::channel::kStereoDisparity);
+  ASSERT_EQ(disparities.size(), 1u);
+  const cv::Mat pipeline = ws::ImageToMat(disparities[0].disparity);
+
+  cv::Mat gray_left, gray_right, fixed_point, bare;
+  cv::cvtColor(left, gray_left, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(right, gray_right, cv::COLOR_BGR2GRAY);
+  ws::MakeMatcher(config)->compute(gray_left, gray_right, fixed_point);
+  fixed_point.convertTo(bare, CV_32F, 1.0 / 16);
+
+  const Score ours = ScoreAgainstGroundTruth(pipeline, gt, 0);
+  const Score opencv = ScoreAgainstGroundTruth(bare, gt, 0);
+  std::printf("aloe: pipeline bad %.4f density %.4f | bare SGBM bad %.4f density %.4f\n",
+              ours.bad_rate, ours.density, opencv.bad_rate, opencv.density);
+  EXPECT_NEAR(ours.bad_rate, opencv.bad_rate, 1e-3);
+  EXPECT_NEAR(ours.density, opencv.density, 1e-3);
+  EXPECT_LT(ours.bad_rate, 0.2);
+  EXPECT_GT(ours.density, 0.7);
+
+  // The cloud holds the valid disparities, in the left rectified frame.
+  const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloud);
+  ASSERT_EQ(clouds.size(), 1u);
+  EXPECT_EQ(clouds[0].frame, "left_rectified");
+  EXPECT_EQ(clouds[0].npoints, cv::countNonZero(pipeline > 0));
+  EXPECT_EQ(clouds[0].nintensity, clouds[0].npoints);
+}
+
+TEST(MatchPipeline, FramesOfAnotherSizeAndFramesBeforeCalibrationAreCountedNotFatal) {
+  const std::string dir = TempDir("badsize");
+  widestereo::stereo_frame_t frame{};
+  frame.left = frame.right = ws::MatToImage(cv::Mat(48, 64, CV_8UC1, cv::Scalar(7)), 1);
+  std::vector<LogEvent> events;
+  frame.frame_id = 0;
+  frame.utime = 1000000;
+  events.push_back(Event(ws::channel::kStereoImages, frame));  // before any calibration
+  auto calib = IdentityCalibration(640, 480, 500, 0.1);        // for 640x480 frames
+  calib.utime = 2000000;
+  events.push_back(Event(ws::channel::kStereoCalibration, calib));
+  frame.frame_id = 1;
+  frame.utime = 3000000;
+  events.push_back(Event(ws::channel::kStereoImages, frame));  // 64x48
+  WriteLog(dir + "/in.lcmlog", events);
+  const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                             "file://" + dir + "/out.lcmlog?mode=w"},
+                            60);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("calibration is for 640x480"), std::string::npos) << r.output;
+  const auto statuses =
+      Messages<widestereo::process_status_t>(ReadLog(dir + "/out.lcmlog"), ws::channel::kProcessStatus);
+  ASSERT_FALSE(statuses.empty());
+  for (const auto& c : statuses.back().channels)
+    if (c.channel == ws::channel::kStereoImages) {
+      EXPECT_EQ(c.received, 2);
+      EXPECT_EQ(c.dropped, 1);
+      EXPECT_EQ(c.rejected, 1);
+    }
+}
+
+}  // namespace
