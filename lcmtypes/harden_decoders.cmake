@@ -1,0 +1,22 @@
+# Run after lcm-gen: cmake -DDIR=<generated C++ header folder> -P harden_decoders.cmake
+#
+# LCM 1.3.1's generated decoders size every array from its length field before
+# they check the buffer, so a message of a few bytes can claim billions of
+# elements and make the receiver allocate gigabytes (or abort). Every encoded
+# array element takes at least one byte, so a length beyond the bytes left is
+# a lie: this inserts that check before each such resize, making decode
+# return -1 instead.
+file(GLOB headers ${DIR}/*.hpp)
+set(checks 0)
+foreach(header ${headers})
+  file(READ ${header} text)
+  string(REGEX MATCHALL "\\.resize\\(this->" found "${text}")
+  list(LENGTH found n)
+  math(EXPR checks "${checks} + ${n}")
+  string(REGEX REPLACE
+    "\n([ ]*)(this->[A-Za-z0-9_]+(\\[a[0-9]+\\])?)\\.resize\\(this->([A-Za-z0-9_]+)\\);"
+    "\n\\1if (this->\\4 < 0 || this->\\4 > maxlen - pos) return -1;  // widestereo: length exceeds payload\n\\1\\2.resize(this->\\4);"
+    text "${text}")
+  file(WRITE ${header} "${text}")
+endforeach()
+message(STATUS "lcmtypes: length checks added before ${checks} array resizes")
