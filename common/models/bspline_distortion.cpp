@@ -1,0 +1,50 @@
+#include "models/bspline_distortion.h"
+
+#include <stdexcept>
+#include <utility>
+
+namespace ws {
+
+BsplineDistortion::BsplineDistortion(std::vector<double> knots, int degree, Coefficients which)
+    : knots_(std::move(knots)),
+      degree_(degree),
+      first_estimated_(which == Coefficients::kIdentifiable ? 2 : 0) {
+  ValidateKnots(knots_, degree_);
+  if (which == Coefficients::kIdentifiable) {
+    if (knots_.front() != 0.0 || knots_[degree_] != 0.0)
+      throw std::invalid_argument(
+          "an identifiable B-spline needs knots clamped at 0 (t_0 = ... = t_K = 0)");
+    if (NumBasis() < 3)
+      throw std::invalid_argument("an identifiable B-spline needs at least 3 basis functions");
+  }
+}
+
+BsplineDistortion BsplineDistortion::FromData(const Distortion& data, Coefficients which) {
+  return BsplineDistortion(data.knots, data.degree, which);
+}
+
+BsplineDistortion BsplineDistortion::ForCalibration(const CalibrationSetup& setup) {
+  return BsplineDistortion(UniformClampedKnots(setup.r_max, setup.knot_intervals, setup.degree),
+                           setup.degree, Coefficients::kIdentifiable);
+}
+
+Distortion BsplineDistortion::ToData(const double* coeffs) const {
+  Distortion data{Kind(), degree_, knots_, std::vector<double>(first_estimated_, 0.0)};
+  data.coeffs.insert(data.coeffs.end(), coeffs, coeffs + NumCoeffs());
+  return data;
+}
+
+std::vector<double> BsplineDistortion::EstimatedCoeffs(const std::vector<double>& stored) const {
+  if (static_cast<int>(stored.size()) != NumBasis())
+    throw std::invalid_argument("bspline with " + std::to_string(knots_.size()) +
+                                " knots of degree " + std::to_string(degree_) + " needs " +
+                                std::to_string(NumBasis()) + " coefficients, got " +
+                                std::to_string(stored.size()));
+  for (int i = 0; i < first_estimated_; ++i)
+    if (stored[i] != 0.0)
+      throw std::invalid_argument("alpha" + std::to_string(i) + " = " + std::to_string(stored[i]) +
+                                  ", but the identifiable B-spline fixes it at 0");
+  return std::vector<double>(stored.begin() + first_estimated_, stored.end());
+}
+
+}  // namespace ws

@@ -1,0 +1,93 @@
+// The B-spline radial distortion model, kind "bspline" (paper Eqs. 3-6).
+//
+//   D(r) = B(r) = sum_{i=0}^{n-1} alpha_i N_{i,K}(r)
+//
+// N_{i,K}: B-spline basis of degree K (default 3) on a FIXED knot vector
+// t_0..t_{n+K} (bspline_basis.h), r the ideal normalized radius.
+// Stored data (Distortion): degree K, the whole knot vector, and all n
+// coefficients alpha_0..alpha_{n-1}.
+//
+// Extrapolation: beyond the last knot (r >= t_n) B continues the polynomial of
+// the last non-empty span [t_{n-1}, t_n) (likewise before the first), so
+// projection and unprojection are defined over the whole image even when
+// r_max was chosen too small.
+//
+// Two ways of using it (Coefficients):
+//  - kAll: every alpha_i is a coefficient. Curve fitting by free collocation
+//    (paper Eq. 9) and evaluating any stored model.
+//  - kIdentifiable, for calibration: the knots must be clamped at 0
+//    (t_0 = ... = t_K = 0), and alpha_0 = alpha_1 = 0 are fixed, not
+//    estimated. Then B(0) = alpha_0 = 0 and
+//    B'(0) = K (alpha_1 - alpha_0) / t_{K+1} = 0 by construction: the spline
+//    cannot trade a constant or a linear term against the focal length.
+//    NumCoeffs() = n - 2 and coeffs[j] is alpha_{j+2}; ToData() puts the two
+//    zeros back so that stored models are always complete.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "models/bspline_basis.h"
+#include "models/distortion.h"
+#include "models/radial_tangential.h"
+#include "models/scalar_part.h"
+
+namespace ws {
+
+class BsplineDistortion {
+ public:
+  // Validates the knots (and, for kIdentifiable, that they start clamped at
+  // 0 with at least three basis functions); throws std::invalid_argument.
+  BsplineDistortion(std::vector<double> knots, int degree, Coefficients which);
+
+  static std::string Kind() { return "bspline"; }
+  static BsplineDistortion FromData(const Distortion& data, Coefficients which);
+  // Uniform clamped knots on [0, r_max] with setup.knot_intervals spans,
+  // kIdentifiable.
+  static BsplineDistortion ForCalibration(const CalibrationSetup& setup);
+
+  const std::vector<double>& knots() const { return knots_; }
+  int degree() const { return degree_; }
+  int NumBasis() const { return NumBasisFunctions(knots_, degree_); }
+  int NumCoeffs() const { return NumBasis() - first_estimated_; }
+  std::string CoeffName(int i) const { return "alpha" + std::to_string(i + first_estimated_); }
+
+  Distortion ToData(const double* coeffs) const;
+  // The estimated coefficients of a stored alpha vector; throws if its size
+  // is wrong or a gauge-fixed alpha is not zero.
+  std::vector<double> EstimatedCoeffs(const std::vector<double>& stored) const;
+
+  // B(r), Eq. 3; the span is chosen on the value of r, the derivatives are
+  // those of that span's polynomial.
+  template <typename T>
+  T RadialDistortion(const T* coeffs, const T& r) const {
+    const int span = FindSpan(knots_, degree_, ScalarPart(r));
+    T basis[kMaxSplineDegree + 1];
+    NonZeroBasis(knots_, degree_, span, r, basis);
+    T sum(0.0);
+    for (int j = 0; j <= degree_; ++j) {
+      const int coeff = span - degree_ + j - first_estimated_;
+      if (coeff >= 0) sum += coeffs[coeff] * basis[j];
+    }
+    return sum;
+  }
+
+  template <typename T>
+  void Distort(const T* coeffs, const T& p1, const T& p2, const T& x, const T& y, T* xd,
+               T* yd) const {
+    using std::sqrt;
+    const T r2 = x * x + y * y;
+    // sqrt has no derivative at 0; there B is flat (kIdentifiable) or has a
+    // cone point (kAll) and a zero derivative is the one that is always defined.
+    const T r = ScalarPart(r2) > 0.0 ? T(sqrt(r2)) : T(0.0);
+    RadialTangential(RadialDistortion(coeffs, r), p1, p2, x, y, xd, yd);
+  }
+
+ private:
+  std::vector<double> knots_;
+  int degree_;
+  int first_estimated_;  // alpha index of coeffs[0]: 2 for kIdentifiable, else 0
+};
+
+}  // namespace ws

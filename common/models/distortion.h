@@ -1,0 +1,62 @@
+// A radial distortion model as data, and the concept every model class follows.
+//
+// A camera model (see pinhole_camera.h) is a pinhole with a distortion model
+//
+//   x_d = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)
+//   y_d = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y        (paper Eqs. 6, 18, 19)
+//
+// on ideal normalized coordinates x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2).
+// The models differ only in D(r), the radial distortion curve
+// (r' = (1 + D(r)) r is the distorted radius):
+//   "bspline"  D = B(r) = sum_i alpha_i N_{i,K}(r)      bspline_distortion.h
+//   "poly6"    D = k1 r^2 + k2 r^4 + k3 r^6             poly_distortion.h
+//   "poly12"   D = k1 r^2 + ... + k6 r^12               poly_distortion.h
+//
+// The model concept. A model class holds only FIXED data (knots, degree) and
+// takes the ESTIMATED coefficients as `const T* coeffs`, Ceres-style:
+//
+//   static std::string Kind();                       // "bspline", ...
+//   static Model FromData(const Distortion&, Coefficients);
+//   static Model ForCalibration(const CalibrationSetup&);
+//   int NumCoeffs() const;                           // estimated coefficients
+//   std::string CoeffName(int i) const;              // "alpha2", "k1", ...
+//   Distortion ToData(const double* coeffs) const;   // fixed data + stored coefficients
+//   std::vector<double> EstimatedCoeffs(const std::vector<double>& stored) const;
+//   template <typename T> T RadialDistortion(const T* coeffs, const T& r) const;   // D(r)
+//   template <typename T> void Distort(const T* coeffs, const T& p1, const T& p2,
+//                                      const T& x, const T& y, T* xd, T* yd) const;
+//
+// A new model (say a spline over the incidence angle for fisheye lenses) is a
+// new header with such a class plus one entry in model_registry.h; solvers and
+// processes only use the concept.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ws {
+
+// The distortion part of a camera model as stored in files and messages:
+// everything needed to evaluate D(r).
+struct Distortion {
+  std::string kind;             // a registered model: "bspline", "poly6", "poly12"
+  int degree = 0;               // B-spline degree K; 0 for the polynomials
+  std::vector<double> knots;    // clamped knot vector in the unit of r (bspline); else empty
+  std::vector<double> coeffs;   // all of alpha_0..alpha_{n-1} (bspline) or k_1..k_N
+};
+
+// Which coefficients a model instance takes as `coeffs`.
+enum class Coefficients {
+  kAll,           // every stored coefficient: curve fitting, evaluating stored models
+  kIdentifiable,  // calibration: those the gauge pins (bspline: alpha_0 = alpha_1 = 0) are left out
+};
+
+// What a fresh calibration model needs to know: the largest ideal normalized
+// radius the image reaches and, for splines, the knot layout.
+struct CalibrationSetup {
+  double r_max = 0;
+  int knot_intervals = 8;
+  int degree = 3;
+};
+
+}  // namespace ws

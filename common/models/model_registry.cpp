@@ -1,0 +1,51 @@
+#include "models/model_registry.h"
+
+#include <stdexcept>
+
+namespace ws {
+namespace {
+
+template <typename Model>
+struct ModelType {
+  using type = Model;
+};
+
+// make(ModelType<Model>{}) for the alternative of AnyDistortionModel whose
+// Kind() is kind.
+template <size_t I = 0, typename Make>
+AnyDistortionModel MakeByKind(const std::string& kind, const Make& make) {
+  if constexpr (I == std::variant_size_v<AnyDistortionModel>) {
+    std::string known;
+    for (const auto& name : ModelKinds()) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown distortion model '" + kind + "' (known: " + known + ")");
+  } else {
+    using Model = std::variant_alternative_t<I, AnyDistortionModel>;
+    if (kind == Model::Kind()) return make(ModelType<Model>{});
+    return MakeByKind<I + 1>(kind, make);
+  }
+}
+
+template <size_t... I>
+std::vector<std::string> KindsOf(std::index_sequence<I...>) {
+  return {std::variant_alternative_t<I, AnyDistortionModel>::Kind()...};
+}
+
+}  // namespace
+
+std::vector<std::string> ModelKinds() {
+  return KindsOf(std::make_index_sequence<std::variant_size_v<AnyDistortionModel>>());
+}
+
+AnyDistortionModel MakeModel(const Distortion& data, Coefficients which) {
+  return MakeByKind(data.kind, [&](auto type) -> AnyDistortionModel {
+    return decltype(type)::type::FromData(data, which);
+  });
+}
+
+AnyDistortionModel MakeCalibrationModel(const std::string& kind, const CalibrationSetup& setup) {
+  return MakeByKind(kind, [&](auto type) -> AnyDistortionModel {
+    return decltype(type)::type::ForCalibration(setup);
+  });
+}
+
+}  // namespace ws

@@ -1,0 +1,112 @@
+// Pinhole projection through any distortion model (paper Eqs. 12-15), and its
+// inverse.
+//
+//   x = X / Z, y = Y / Z                          (Z > 0, else no projection)
+//   (x_d, y_d) = model.Distort(coeffs, p1, p2, x, y)   (distortion.h)
+//   u = fx x_d + cx,  v = fy y_d + cy
+//
+// Intrinsics are the array {fx, fy, cx, cy, p1, p2} (indices kFx..kP2), the
+// distortion coefficients a separate array of model.NumCoeffs(): one
+// parameter block each in a Ceres problem. Everything is templated on the
+// scalar so that Ceres can differentiate it automatically.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include <ceres/jet.h>
+
+#include "models/scalar_part.h"
+
+namespace ws {
+
+// Indices into the intrinsics array, and its size.
+constexpr int kFx = 0, kFy = 1, kCx = 2, kCy = 3, kP1 = 4, kP2 = 5, kNumIntrinsics = 6;
+
+// Projects the camera-frame point X to the pixel uv; false (uv untouched) if
+// the point is not in front of the camera (Z <= 0).
+template <typename Model, typename T>
+bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel) {
+  if (!(ScalarPart(point[2]) > 0.0)) return false;
+  const T x = point[0] / point[2];
+  const T y = point[1] / point[2];
+  T xd, yd;
+  model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], x, y, &xd, &yd);
+  pixel[0] = intrinsics[kFx] * xd + intrinsics[kCx];
+  pixel[1] = intrinsics[kFy] * yd + intrinsics[kCy];
+  return true;
+}
+
+// Solves model.Distort(x, y) = distorted for the ideal normalized point.
+//
+// Newton's method from (x, y) = distorted (the distortion is small relative to
+// r), with the 2x2 Jacobian from the model's own templated code (Jets), each
+// step halved until the residual decreases. It succeeds when the residual is
+// below 1e-12 (1 + |distorted|), which puts the point within about that of
+// the root. It fails, rather than return a wrong point, when the Jacobian
+// determinant is not positive at an iterate (the map folds there and has no
+// unique inverse), when no step decreases the residual, after 50 iterations,
+// and when the radial map r -> r (1 + D(r)) is not increasing at 16 evenly
+// spaced radii up to the solution's (a solution past a fold).
+template <typename Model>
+bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
+               const double distorted[2], double ideal[2]) {
+  using Jet = ceres::Jet<double, 2>;
+  const std::vector<Jet> jet_coeffs(coeffs, coeffs + model.NumCoeffs());
+  const Jet jet_p1(p1), jet_p2(p2);
+  struct Iterate {
+    double x, y, residual[2], jacobian[4], norm;
+  };
+  auto evaluate = [&](double x, double y) {
+    Jet xd, yd;
+    model.Distort(jet_coeffs.data(), jet_p1, jet_p2, Jet(x, 0), Jet(y, 1), &xd, &yd);
+    const double ex = xd.a - distorted[0], ey = yd.a - distorted[1];
+    return Iterate{x, y, {ex, ey}, {xd.v[0], xd.v[1], yd.v[0], yd.v[1]}, std::hypot(ex, ey)};
+  };
+  const double tolerance = 1e-12 * (1.0 + std::hypot(distorted[0], distorted[1]));
+  Iterate it = evaluate(distorted[0], distorted[1]);
+  for (int iteration = 0;; ++iteration) {
+    const double* J = it.jacobian;
+    const double det = J[0] * J[3] - J[1] * J[2];
+    if (!(det > 0.0) || !std::isfinite(it.norm)) return false;
+    if (it.norm <= tolerance) break;
+    if (iteration == 50) return false;
+    const double step[2] = {-(J[3] * it.residual[0] - J[1] * it.residual[1]) / det,
+                            -(J[0] * it.residual[1] - J[2] * it.residual[0]) / det};
+    for (double t = 1.0;; t *= 0.5) {
+      if (t < 1e-9) return false;
+      const Iterate trial = evaluate(it.x + t * step[0], it.y + t * step[1]);
+      if (trial.norm < it.norm) {
+        it = trial;
+        break;
+      }
+    }
+  }
+  const double r = std::hypot(it.x, it.y);
+  for (int k = 1; k <= 16; ++k) {
+    const Jet rk(r * k / 16.0, 0);
+    const Jet height = rk * (1.0 + model.RadialDistortion(jet_coeffs.data(), rk));
+    if (!(height.v[0] > 0.0)) return false;
+  }
+  ideal[0] = it.x;
+  ideal[1] = it.y;
+  return true;
+}
+
+// The unit ray (X, Y, Z), Z > 0, that projects to the pixel; false when
+// Undistort fails.
+template <typename Model>
+bool Unproject(const Model& model, const double* intrinsics, const double* coeffs,
+               const double pixel[2], double ray[3]) {
+  const double distorted[2] = {(pixel[0] - intrinsics[kCx]) / intrinsics[kFx],
+                               (pixel[1] - intrinsics[kCy]) / intrinsics[kFy]};
+  double ideal[2];
+  if (!Undistort(model, coeffs, intrinsics[kP1], intrinsics[kP2], distorted, ideal)) return false;
+  const double norm = std::sqrt(ideal[0] * ideal[0] + ideal[1] * ideal[1] + 1.0);
+  ray[0] = ideal[0] / norm;
+  ray[1] = ideal[1] / norm;
+  ray[2] = 1.0 / norm;
+  return true;
+}
+
+}  // namespace ws

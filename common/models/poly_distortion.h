@@ -1,0 +1,68 @@
+// The polynomial (Brown) radial distortion models (paper Eqs. 16-19):
+//
+//   D(r) = k_1 r^2 + k_2 r^4 + ... + k_N r^{2N}
+//
+// kind "poly6" (N = 3) and "poly12" (N = 6), r the ideal normalized radius.
+// Stored data (Distortion): degree 0, no knots, coefficients k_1..k_N. All of
+// them are estimated: D(0) = D'(0) = 0 holds for any k, so Coefficients makes
+// no difference. The polynomial is defined for every r, so it needs no
+// extrapolation rule; it does fold back (r' decreasing) beyond its fitted
+// range when the leading coefficient is negative, which Unproject reports.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "models/distortion.h"
+#include "models/radial_tangential.h"
+
+namespace ws {
+
+template <int N>
+class PolyDistortion {
+ public:
+  static_assert(N >= 1, "a polynomial model needs at least k1");
+
+  static std::string Kind() { return "poly" + std::to_string(2 * N); }
+  static PolyDistortion FromData(const Distortion& data, Coefficients) {
+    if (data.degree != 0 || !data.knots.empty())
+      throw std::invalid_argument(Kind() + " takes neither a degree nor knots");
+    return PolyDistortion();
+  }
+  static PolyDistortion ForCalibration(const CalibrationSetup&) { return PolyDistortion(); }
+
+  int NumCoeffs() const { return N; }
+  std::string CoeffName(int i) const { return "k" + std::to_string(i + 1); }
+
+  Distortion ToData(const double* coeffs) const {
+    return Distortion{Kind(), 0, {}, std::vector<double>(coeffs, coeffs + N)};
+  }
+  std::vector<double> EstimatedCoeffs(const std::vector<double>& stored) const {
+    if (static_cast<int>(stored.size()) != N)
+      throw std::invalid_argument(Kind() + " needs " + std::to_string(N) + " coefficients, got " +
+                                  std::to_string(stored.size()));
+    return stored;
+  }
+
+  template <typename T>
+  T RadialDistortion(const T* k, const T& r) const {
+    return OfSquaredRadius(k, r * r);
+  }
+
+  template <typename T>
+  void Distort(const T* k, const T& p1, const T& p2, const T& x, const T& y, T* xd, T* yd) const {
+    RadialTangential(OfSquaredRadius(k, x * x + y * y), p1, p2, x, y, xd, yd);
+  }
+
+ private:
+  // D as a polynomial in r^2 (Horner's rule): smooth in x and y, no sqrt.
+  template <typename T>
+  static T OfSquaredRadius(const T* k, const T& r2) {
+    T sum = k[N - 1];
+    for (int i = N - 2; i >= 0; --i) sum = k[i] + r2 * sum;
+    return r2 * sum;
+  }
+};
+
+}  // namespace ws

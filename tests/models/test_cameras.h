@@ -1,0 +1,63 @@
+// The camera models and parameter sets the model tests run on: every model
+// kind, free and identifiable splines, several degrees, with and without
+// tangential distortion, all shaped after the shipped Theia-like lens.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "models/camera_model.h"
+#include "models/curve_fit.h"
+#include "models/model_registry.h"
+#include "models/theia_lens.h"
+
+namespace ws::testing {
+
+struct TestCamera {
+  std::string name;
+  CameraModel model;
+  Coefficients which;  // how a calibration would see its coefficients
+};
+
+// Test names in GoogleTest's messages, not bytes.
+inline void PrintTo(const TestCamera& camera, std::ostream* out) { *out << camera.name; }
+
+// The Theia-like table in normalized radius (r = h / 1.3 mm).
+inline LensTable NormalizedTheiaTable() { return ScaleLensTable(TheiaLikeLensTable(), 1 / 1.3); }
+
+inline CameraModel WithTangential(CameraModel camera) {
+  camera.fx = 350.2;
+  camera.fy = 344.9;
+  camera.cx = 652.3;
+  camera.cy = 471.8;
+  camera.p1 = 4e-4;
+  camera.p2 = -3e-4;
+  return camera;
+}
+
+// The Theia-like camera with D(r) replaced by a least-squares fit of `model`.
+inline CameraModel TheiaFittedBy(const AnyDistortionModel& model) {
+  CameraModel camera = TheiaLikeCamera();
+  camera.distortion = FitByLeastSquares(model, NormalizedTheiaTable());
+  return camera;
+}
+
+inline std::vector<TestCamera> TestCameras() {
+  const CalibrationSetup setup{2.7, 8, 3};
+  return {
+      {"theia_bspline", TheiaLikeCamera(), Coefficients::kAll},
+      {"theia_bspline_tangential", WithTangential(TheiaLikeCamera()), Coefficients::kAll},
+      {"theia_quintic_bspline", CameraFromLensTable(TheiaLikeLensTable(), LensSensor{}, 5),
+       Coefficients::kAll},
+      {"identifiable_bspline",
+       WithTangential(TheiaFittedBy(MakeCalibrationModel("bspline", setup))),
+       Coefficients::kIdentifiable},
+      {"poly6", WithTangential(TheiaFittedBy(MakeCalibrationModel("poly6", setup))),
+       Coefficients::kAll},
+      {"poly12", WithTangential(TheiaFittedBy(MakeCalibrationModel("poly12", setup))),
+       Coefficients::kAll},
+  };
+}
+
+}  // namespace ws::testing
