@@ -171,7 +171,7 @@ TEST(MatchPipeline, AloeGivesWhatBareOpenCvSgbmGives) {
   EXPECT_EQ(clouds[0].nintensity, clouds[0].npoints);
 }
 
-TEST(MatchPipeline, FramesOfAnotherSizeAndFramesBeforeCalibrationAreCountedNotFatal) {
+TEST(MatchPipeline, BadFramesAndFramesBeforeCalibrationAreCountedNotFatal) {
   const std::string dir = TempDir("badsize");
   widestereo::stereo_frame_t frame{};
   frame.left = frame.right = ws::MatToImage(cv::Mat(48, 64, CV_8UC1, cv::Scalar(7)), 1);
@@ -185,6 +185,9 @@ TEST(MatchPipeline, FramesOfAnotherSizeAndFramesBeforeCalibrationAreCountedNotFa
   frame.frame_id = 1;
   frame.utime = 3000000;
   events.push_back(Event(ws::channel::kStereoImages, frame));  // 64x48
+  frame.frame_id = 2;
+  frame.left.height = 480;  // height x row_stride disagrees with the payload
+  events.push_back(Event(ws::channel::kStereoImages, frame));
   WriteLog(dir + "/in.lcmlog", events);
   const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--in-url",
                              "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
@@ -197,9 +200,9 @@ TEST(MatchPipeline, FramesOfAnotherSizeAndFramesBeforeCalibrationAreCountedNotFa
   ASSERT_FALSE(statuses.empty());
   for (const auto& c : statuses.back().channels)
     if (c.channel == ws::channel::kStereoImages) {
-      EXPECT_EQ(c.received, 2);
+      EXPECT_EQ(c.received, 3);
       EXPECT_EQ(c.dropped, 1);
-      EXPECT_EQ(c.rejected, 1);
+      EXPECT_EQ(c.rejected, 2);
     }
 }
 
