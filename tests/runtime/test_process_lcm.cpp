@@ -26,18 +26,6 @@ process_status_t Status(const std::string& name, int64_t utime) {
   return s;
 }
 
-// The counters of `channel` in the last PROCESS_STATUS that `process` wrote to `log`.
-widestereo::channel_counters_t LastCounters(const std::string& log, const std::string& process,
-                                            const std::string& channel) {
-  const auto statuses = Messages<process_status_t>(ReadLog(log), ws::channel::kProcessStatus);
-  for (auto s = statuses.rbegin(); s != statuses.rend(); ++s)
-    if (s->name == process)
-      for (const auto& c : s->channels)
-        if (c.channel == channel) return c;
-  ADD_FAILURE() << "no counters of " << channel << " from " << process << " in " << log;
-  return {};
-}
-
 TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
   const std::string dir = TempDir("replay");
   std::vector<LogEvent> events;

@@ -10,7 +10,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
+
+#include "widestereo/process_status_t.hpp"
 
 namespace ws::test {
 
@@ -108,6 +111,17 @@ std::vector<LogEvent> ReadLog(const std::string& path) {
     events.push_back({le->channel, std::vector<uint8_t>(bytes, bytes + le->datalen), le->timestamp});
   }
   return events;
+}
+
+widestereo::channel_counters_t LastCounters(const std::string& path, const std::string& process,
+                                            const std::string& channel) {
+  const auto statuses = Messages<widestereo::process_status_t>(ReadLog(path), "PROCESS_STATUS");
+  for (auto s = statuses.rbegin(); s != statuses.rend(); ++s)
+    if (s->name == process)
+      for (const auto& c : s->channels)
+        if (c.channel == channel) return c;
+  ADD_FAILURE() << "no counters of " << channel << " from " << process << " in " << path;
+  return {};
 }
 
 }  // namespace ws::test

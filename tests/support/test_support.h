@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "widestereo/channel_counters_t.hpp"
+
 namespace ws::test {
 
 // The repository and build folders (from the build's compile definitions).
@@ -60,5 +62,10 @@ std::vector<Msg> Messages(const std::vector<LogEvent>& events, const std::string
   }
   return out;
 }
+
+// The counters of `channel` in the last PROCESS_STATUS that `process` wrote
+// to the log at `path` (a test failure, and zeros, when there is none).
+widestereo::channel_counters_t LastCounters(const std::string& path, const std::string& process,
+                                            const std::string& channel);
 
 }  // namespace ws::test
