@@ -1,0 +1,44 @@
+// The stereo-cloud filter chain: depth pass-through, voxel grid, statistical
+// outlier removal and RANSAC plane fit, with per-stage point counts and times.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cloud/cloud_filter_config.h"
+#include "widestereo/cloud_stats_t.hpp"
+#include "widestereo/point_cloud_t.hpp"
+
+namespace ws {
+
+struct CloudFilterResult {
+  // The cloud after outlier removal, with the input's utime, frame_id and
+  // frame, and intensity when the input had it.
+  widestereo::point_cloud_t cloud;
+  // Stages "input", "passthrough", "voxel", "outliers", "plane" (always all
+  // five; a disabled stage passes its input on): points after each (for
+  // "plane", its inliers) and wall time in each. The plane's normal faces the
+  // camera, so plane_offset is the camera's distance to it.
+  widestereo::cloud_stats_t stats;
+  // One line per stage that did not run as configured, e.g. "voxel: leaf
+  // coarsened from ...", "plane: RANSAC found no plane ...".
+  std::vector<std::string> notes;
+};
+
+class CloudFilter {
+ public:
+  // Throws ConfigError for an invalid config.
+  explicit CloudFilter(const CloudFilterConfig& config);
+
+  // Throws DecodeError when the message's counts disagree with its arrays
+  // (ValidatePointCloud); any cloud that passes, however degenerate (empty,
+  // all NaN, all one point, collinear), gives a result.
+  CloudFilterResult Run(const widestereo::point_cloud_t& msg) const;
+
+  const CloudFilterConfig& config() const { return config_; }
+
+ private:
+  CloudFilterConfig config_;
+};
+
+}  // namespace ws

@@ -1,0 +1,30 @@
+// The filtering stages of the stereo-cloud chain, over PCL. Internal to
+// widestereo_cloud. Every stage copes with any cloud it can be given (empty,
+// tiny, all points identical): it then passes the cloud on unchanged and says
+// why in its note.
+#pragma once
+
+#include <string>
+
+#include "cloud/pcl_cloud.h"
+
+namespace ws {
+
+struct StageOutput {
+  PclCloud::Ptr cloud;
+  std::string note;  // why the stage did not run as configured; empty when it did
+};
+
+// PassThrough on z: points with finite x, y, z and z_min <= z <= z_max.
+PclCloud::Ptr KeepDepthRange(const PclCloud::Ptr& cloud, double z_min, double z_max);
+
+// VoxelGrid (intensity averaged per voxel) at the leaf PlanVoxelGrid chooses.
+StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf);
+
+// StatisticalOutlierRemoval. Skipped when the cloud has no more than mean_k
+// points (PCL would read past its neighbour arrays), and when it holds so
+// many copies of the same points that PCL's k-d tree search turns quadratic
+// (200 000 identical points take PCL about 24 minutes: PCL issue #1146).
+StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul);
+
+}  // namespace ws

@@ -1,0 +1,69 @@
+// Point clouds through binary PCD files.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cloud/pcd_io.h"
+#include "cloud_test_support.h"
+
+namespace {
+
+using ws::testing::MakeCloud;
+using ws::testing::ScratchFile;
+
+// The PCD header, up to and including its DATA line.
+std::string Header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, header;
+  while (std::getline(in, line) && header.find("DATA") == std::string::npos) header += line + "\n";
+  return header;
+}
+
+TEST(Pcd, BinaryRoundTripKeepsPointsAndIntensity) {
+  const auto msg = MakeCloud({{0.1f, -0.2f, 2.5f}, {1e-7f, 3e4f, -1}, {0, 0, 10000}}, {1, 2.5f, 0});
+  const ScratchFile file("with_intensity.pcd");
+  const std::string& path = file.path();
+  ws::WritePcd(path, msg);
+  const std::string header = Header(path);
+  EXPECT_NE(header.find("FIELDS x y z intensity\n"), std::string::npos) << header;
+  EXPECT_NE(header.find("DATA binary\n"), std::string::npos) << header;
+  const auto back = ws::ReadPcd(path);
+  EXPECT_EQ(back.npoints, 3);
+  EXPECT_EQ(back.xyz, msg.xyz);  // binary: bit for bit
+  EXPECT_EQ(back.nintensity, 3);
+  EXPECT_EQ(back.intensity, msg.intensity);
+}
+
+TEST(Pcd, CloudWithoutIntensityHasXyzOnly) {
+  const auto msg = MakeCloud({{1, 2, 3}});
+  const ScratchFile file("xyz.pcd");
+  const std::string& path = file.path();
+  ws::WritePcd(path, msg);
+  EXPECT_NE(Header(path).find("FIELDS x y z\n"), std::string::npos) << Header(path);
+  const auto back = ws::ReadPcd(path);
+  EXPECT_EQ(back.xyz, msg.xyz);
+  EXPECT_EQ(back.nintensity, 0);
+  EXPECT_TRUE(back.intensity.empty());
+}
+
+TEST(Pcd, EmptyCloudRoundTrips) {
+  const ScratchFile file("empty.pcd");
+  ws::WritePcd(file.path(), MakeCloud({}));
+  EXPECT_EQ(ws::ReadPcd(file.path()).npoints, 0);
+}
+
+TEST(Pcd, ErrorsNameThePath) {
+  const auto msg = MakeCloud({{1, 2, 3}});
+  try {
+    ws::WritePcd("/nonexistent/dir/cloud.pcd", msg);
+    FAIL() << "wrote";
+  } catch (const ws::PcdError& e) {
+    EXPECT_NE(std::string(e.what()).find("'/nonexistent/dir/cloud.pcd'"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(ws::ReadPcd("/nonexistent/cloud.pcd"), ws::PcdError);
+  const ScratchFile not_pcd("not.pcd", "hello\n");
+  EXPECT_THROW(ws::ReadPcd(not_pcd.path()), ws::PcdError);
+}
+
+}  // namespace
