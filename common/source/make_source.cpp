@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sim/sim_source.h"
 #include "source/dir_source.h"
 
 namespace ws {
@@ -14,6 +15,7 @@ std::unique_ptr<StereoSource> MakeStereoSource(const std::string& spec, const So
     throw std::invalid_argument("--source must be aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml, not '" +
                                 spec + "'");
   if (kind == "dir") return std::make_unique<DirSource>(arg, options.loop);
+  if (kind == "sim") return MakeSimSource(arg, options.loop);
   throw std::invalid_argument("unknown source kind '" + kind +
                               "' (use aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml)");
 }

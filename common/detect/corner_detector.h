@@ -1,0 +1,48 @@
+// Finding a calibration board's corners in one image. Every detector returns
+// corners with the ids of board_spec.h, so object points follow from the ids
+// and left and right images of a pair agree on which corner is which.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "detect/board_spec.h"
+
+namespace ws {
+
+struct BoardCorners {
+  std::vector<int> ids;              // board corner ids (board_spec.h)
+  std::vector<cv::Point2f> points;   // sub-pixel image positions, pixel centres at integers
+  bool empty() const { return ids.empty(); }
+};
+
+class CornerDetector {
+ public:
+  virtual ~CornerDetector() = default;
+  // Finds the board in an 8-bit single-channel image; no corners when the
+  // board is not seen. Safe to call from several threads at once.
+  virtual BoardCorners Detect(const cv::Mat& gray) const = 0;
+};
+
+// The two OpenCV chessboard detectors.
+enum class ChessboardMethod {
+  sb,       // cv::findChessboardCornersSB (localized Radon transform, sub-pixel by itself)
+  classic,  // cv::findChessboardCorners + cv::cornerSubPix
+};
+// The more accurate of the two on rendered boards with exact ground truth
+// (tests/detect/test_detector_accuracy.cpp measures both and checks this choice).
+inline constexpr ChessboardMethod kDefaultChessboardMethod = ChessboardMethod::classic;
+
+// "sb" or "classic"; throws std::invalid_argument otherwise.
+ChessboardMethod ParseChessboardMethod(const std::string& name);
+const char* ChessboardMethodName(ChessboardMethod method);
+
+// A detector for `board`; `method` chooses the chessboard detector (ChArUco
+// boards have one).
+std::unique_ptr<CornerDetector> MakeCornerDetector(const BoardSpec& board,
+                                                   ChessboardMethod method = kDefaultChessboardMethod);
+
+}  // namespace ws

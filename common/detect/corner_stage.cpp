@@ -1,0 +1,59 @@
+#include "detect/corner_stage.h"
+
+#include <memory>
+
+#include "lcm_io/channels.h"
+
+namespace ws {
+
+CornerStage::CornerStage(Process& process, const StereoCornerFinder& finder, int workers,
+                         int max_in_flight)
+    : process_(process),
+      finder_(finder),
+      images_(process.Counters(channel::kStereoImages)),
+      pipeline_({workers, max_in_flight,
+                 process.file_input() ? OrderedPipeline::WhenFull::wait
+                                      : OrderedPipeline::WhenFull::refuse}) {
+  // Live, LCM's own queue in front of the handler holds no more frames than
+  // the pipeline: the handler only hands frames over, so it rarely holds any.
+  process.Subscribe<widestereo::stereo_frame_t>(
+      channel::kStereoImages, [this](const auto& frame) { OnFrame(frame); }, max_in_flight);
+  process.AtEndOfInput([this] { pipeline_.Drain(); });
+}
+
+CornerStage::~CornerStage() { pipeline_.Drain(); }
+
+std::string CornerStage::Progress() const {
+  return "boards left " + std::to_string(left_boards_) + " right " + std::to_string(right_boards_) +
+         " of " + std::to_string(frames_) + " frames | in flight " +
+         std::to_string(pipeline_.in_flight()) + " (peak " + std::to_string(pipeline_.peak_in_flight()) + ")";
+}
+
+void CornerStage::OnFrame(const widestereo::stereo_frame_t& frame) {
+  auto copy = std::make_shared<const widestereo::stereo_frame_t>(frame);
+  if (!pipeline_.Submit([this, copy] { return Detect(*copy); })) images_.dropped++;
+}
+
+OrderedPipeline::Delivery CornerStage::Detect(const widestereo::stereo_frame_t& frame) {
+  try {
+    auto corners = std::make_shared<const widestereo::stereo_corners_t>(finder_.Find(frame));
+    return [this, corners] { Deliver(*corners); };
+  } catch (const std::exception& e) {
+    return [this, id = frame.frame_id, why = std::string(e.what())] { Reject(id, why); };
+  }
+}
+
+void CornerStage::Deliver(const widestereo::stereo_corners_t& corners) {
+  frames_++;
+  if (corners.left.n > 0) left_boards_++;
+  if (corners.right.n > 0) right_boards_++;
+  process_.Publish(channel::kStereoCorners, corners);
+}
+
+void CornerStage::Reject(int64_t frame_id, const std::string& why) {
+  images_.rejected++;
+  process_.ReportError(std::string(channel::kStereoImages) + ": frame " + std::to_string(frame_id) +
+                       " rejected: " + why);
+}
+
+}  // namespace ws

@@ -1,0 +1,32 @@
+// One stereo frame in, its corners message out: what stereo-detect does to
+// every STEREO_IMAGES message.
+#pragma once
+
+#include <memory>
+
+#include "detect/board_spec.h"
+#include "detect/corner_detector.h"
+#include "widestereo/stereo_corners_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace ws {
+
+class StereoCornerFinder {
+ public:
+  StereoCornerFinder(BoardSpec board, ChessboardMethod method);
+
+  // The corners of both images, with the frame's utime and frame_id. A camera
+  // that does not see the board gets n = 0. Throws DecodeError for an image
+  // that does not decode (a JPEG cut short included), or that is too small to
+  // show the board at two pixels per square. Safe to call from several threads at once.
+  widestereo::stereo_corners_t Find(const widestereo::stereo_frame_t& frame) const;
+  widestereo::camera_corners_t FindInImage(const widestereo::image_t& image) const;
+
+  const BoardSpec& board() const { return board_; }
+
+ private:
+  BoardSpec board_;
+  std::unique_ptr<CornerDetector> detector_;
+};
+
+}  // namespace ws
