@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/camera_error.h"
+#include "capture/sim_frames.h"
 
 namespace ws {
 namespace {
@@ -93,13 +94,14 @@ StereoFrameProvider ImageDirectoryFrames(const std::string& directory) {
 StereoFrameProvider MakeFrameProvider(const std::string& spec, cv::Size pattern_size) {
   if (spec == "pattern") return MovingTestPattern(pattern_size);
   if (spec.rfind("dir:", 0) == 0) return ImageDirectoryFrames(spec.substr(4));
+  if (spec.rfind("sim:", 0) == 0) return SimulatorFrames(spec.substr(4));
   if (spec.rfind("pair:", 0) == 0) {
     const std::string paths = spec.substr(5);
     const auto comma = paths.find(',');
     if (comma != std::string::npos)
       return ImagePairFrames(paths.substr(0, comma), paths.substr(comma + 1));
   }
-  throw CameraError("frames '" + spec + "': expected pattern, pair:LEFT,RIGHT or dir:PATH");
+  throw CameraError("frames '" + spec + "': expected pattern, pair:LEFT,RIGHT, dir:PATH or sim:CONFIG.yaml");
 }
 
 }  // namespace ws

@@ -27,8 +27,9 @@ StereoFrameProvider ImagePairFrames(const std::string& left_path, const std::str
 // when served. Throws CameraError when there is no pair or a name has no match.
 StereoFrameProvider ImageDirectoryFrames(const std::string& directory);
 
-// "pattern" (MovingTestPattern of pattern_size), "pair:LEFT,RIGHT" or
-// "dir:PATH". Throws CameraError.
+// "pattern" (MovingTestPattern of pattern_size), "pair:LEFT,RIGHT",
+// "dir:PATH" or "sim:CONFIG.yaml" (sim_frames.h). Throws CameraError (and
+// the simulator's errors for sim:).
 StereoFrameProvider MakeFrameProvider(const std::string& spec, cv::Size pattern_size);
 
 }  // namespace ws

@@ -36,27 +36,35 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
   ChannelCounters& images = process.Counters(channel::kStereoImages);
   process.SetProgress([&] { return "frame " + std::to_string(images.published.load()); });
 
-  for (int64_t frame_id = 0; !process.Stopping(); ++frame_id) {
-    if (options.count > 0 && frame_id >= options.count) break;
+  int64_t frame_id = 0;  // pairs due so far: published or lost
+  while (!process.Stopping() && (options.count == 0 || frame_id < options.count)) {
     if (paced) std::this_thread::sleep_until(start + std::chrono::microseconds(frame_id * period_us));
     std::optional<StereoPair> pair = source.Next();
     MirrorSourceCounters(process, source);
+    for (const std::string& event : source.TakeEvents()) process.log().Info(event);
     if (!pair) break;
+    if (pair->nothing_due) {
+      process.SetState(pair->label);
+      process.Tick();
+      continue;
+    }
+    process.SetState("capturing");
+    const int64_t id = frame_id++;
     if (pair->left.empty() || pair->right.empty()) {
-      process.ReportError("frame " + std::to_string(frame_id) + " lost: " + pair->label);
+      process.ReportError("frame " + std::to_string(id) + " lost: " + pair->label);
       process.Tick();
       continue;
     }
     widestereo::stereo_frame_t frame;
-    frame.frame_id = frame_id;
+    frame.frame_id = id;
     frame.utime = pair->utime ? pair->utime
-                  : options.frame_clock ? (frame_id + 1) * period_us
+                  : options.frame_clock ? (id + 1) * period_us
                                         : WallMicros();
     process.ObserveTime(frame.utime);
     frame.left = MatToImage(pair->left, frame.utime, options.compression, options.jpeg_quality);
     frame.right = MatToImage(pair->right, frame.utime, options.compression, options.jpeg_quality);
     process.Publish(channel::kStereoImages, frame);
-    process.log().Detail("frame " + std::to_string(frame_id) + ": " + pair->label);
+    process.log().Detail("frame " + std::to_string(id) + ": " + pair->label);
     process.Tick();
   }
 }

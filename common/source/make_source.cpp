@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "capture/aravis_source.h"
 #include "sim/sim_source.h"
 #include "source/dir_source.h"
 
@@ -14,6 +15,11 @@ std::unique_ptr<StereoSource> MakeStereoSource(const std::string& spec, const So
   if (arg.empty())
     throw std::invalid_argument("--source must be aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml, not '" +
                                 spec + "'");
+  if (kind == "aravis") {
+    if (options.rig_config.empty())
+      throw std::invalid_argument("aravis: needs the cameras' settings: --rig config/rig/NAME.yaml");
+    return std::make_unique<AravisSource>(arg, options.rig_config);
+  }
   if (kind == "dir") return std::make_unique<DirSource>(arg, options.loop);
   if (kind == "sim") return MakeSimSource(arg, options.loop);
   throw std::invalid_argument("unknown source kind '" + kind +

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -16,6 +17,9 @@ struct StereoPair {
   cv::Mat right;
   int64_t utime = 0;     // capture time when the source knows it (cameras), else 0
   std::string label;     // where it came from, for logs (file names, camera ids)
+  // No pair was due yet (cameras still connecting or silent): not a lost
+  // frame, just a chance for the caller to look up; the label says why.
+  bool nothing_due = false;
 };
 
 struct SourceCounts {
@@ -35,6 +39,8 @@ class StereoSource {
   // PROCESS_STATUS like channels: frames received, lost (dropped) and
   // incomplete or unreadable (rejected).
   virtual std::map<std::string, SourceCounts> Counters() const = 0;
+  // What happened since the last call (connections, losses), for the log.
+  virtual std::vector<std::string> TakeEvents() { return {}; }
   // True when pairs come at the source's own pace (cameras): no rate limit.
   virtual bool Paced() const { return false; }
 };

@@ -51,8 +51,8 @@ void ResolveAddresses(ws::FakeStereoCamerasConfig* config) {
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-fake-cameras",
                      "Serves two fake GigE Vision cameras on this host, whose frames come from "
-                     "a moving test pattern, an image pair, or a directory of left*/right* "
-                     "images; stereo-capture reads them with the --source it prints.");
+                     "a moving test pattern, an image pair, a directory of left*/right* "
+                     "images or the built-in simulator; stereo-capture reads them with the --source it prints.");
   ws::FakeStereoCamerasConfig config;
   config.left_address = config.right_address = "auto";
   std::string frames = "pattern";
@@ -60,7 +60,8 @@ int main(int argc, char** argv) {
   double duration_s = 0;
   CLI::App& app = cli.app();
   app.add_option("--frames", frames,
-                 "pattern | pair:LEFT_IMAGE,RIGHT_IMAGE | dir:PATH (left*/right* pairs)")
+                 "pattern | pair:LEFT_IMAGE,RIGHT_IMAGE | dir:PATH (left*/right* pairs) | "
+                 "sim:CONFIG.yaml (the simulator's frames, over and over; writes its ground truth)")
       ->capture_default_str();
   app.add_option("--size", size,
                  "WIDTHxHEIGHT the cameras start with (default: the images' size, 1280x960 "

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <future>
 #include <string>
 #include <thread>
@@ -18,7 +19,10 @@
 #include "capture/fake_gige_camera.h"
 #include "capture/fake_stereo_cameras.h"
 #include "capture/gige_address.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
 #include "test_support.h"
+#include "widestereo/stereo_frame_t.hpp"
 
 namespace {
 
@@ -289,6 +293,69 @@ TEST_F(FakeCameras, StereoFakeCamerasProcessServesARig) {
   EXPECT_NE(result.output.find("--source aravis:Aravis-Fake-" + left + ",Aravis-Fake-" + right),
             std::string::npos)
       << result.output;
+}
+
+// stereo-capture --source aravis:... over the fake rig, to a log; returns the
+// process's result. `during` runs while the capture does.
+ws::test::CommandResult CaptureFromRig(ws::FakeStereoCameras& rig, const std::string& log, int count,
+                                       const std::function<void()>& during = [] {}) {
+  auto capture = std::async(std::launch::async, [&] {
+    return ws::test::RunCommand(
+        {"stereo-capture", "--source",
+         "aravis:" + rig.camera(ws::Side::left).device_id() + "," + rig.camera(ws::Side::right).device_id(),
+         "--rig", ws::test::SourceDir() + "/config/rig/fake-gige.yaml", "--count", std::to_string(count),
+         "--out-url", "file://" + log + "?mode=w", "--log-dir", ws::test::TempDir("aravis_capture_logs")},
+        60);
+  });
+  during();
+  return capture.get();
+}
+
+// The pairs on STEREO_IMAGES: every frame id once, in order, each pair in step.
+std::vector<widestereo::stereo_frame_t> ExpectPairsInStep(const std::string& log, int count) {
+  const auto frames = ws::test::Messages<widestereo::stereo_frame_t>(ws::test::ReadLog(log), ws::channel::kStereoImages);
+  EXPECT_EQ(frames.size(), size_t(count));
+  for (size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(frames[i].frame_id, int64_t(i));
+    const cv::Mat left = ws::ImageToMat(frames[i].left);
+    const cv::Mat right = ws::ImageToMat(frames[i].right);
+    EXPECT_EQ(left.size(), kSize);
+    EXPECT_EQ(IndexOf(left), IndexOf(right)) << "frame " << i << " mixes two moments";
+    EXPECT_EQ(left.at<uint8_t>(kSize.height - 1, 0), kLeftShade);
+    EXPECT_EQ(right.at<uint8_t>(kSize.height - 1, 0), kRightShade);
+  }
+  return frames;
+}
+
+TEST_F(FakeCameras, StereoCapturePublishesTheCamerasPairsInStep) {
+  auto rig = ServeRig();
+  const std::string log = ws::test::TempDir("aravis_capture") + "/out.lcmlog";
+  const ws::test::CommandResult result = CaptureFromRig(*rig, log, 10);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  ExpectPairsInStep(log, 10);
+  const auto left = ws::test::LastCounters(log, "stereo-capture", "aravis:" + rig->camera(ws::Side::left).device_id());
+  EXPECT_GE(left.received, 10);
+  EXPECT_EQ(left.rejected, 0);
+}
+
+TEST_F(FakeCameras, StereoCaptureRecoversWhenACameraRestartsAndCountsTheGap) {
+  auto rig = ServeRig();
+  ws::FakeGigeCamera& right = rig->camera(ws::Side::right);
+  const std::string log = ws::test::TempDir("aravis_capture_restart") + "/out.lcmlog";
+  const ws::test::CommandResult result = CaptureFromRig(*rig, log, 25, [&] {
+    const auto start = Clock::now();
+    while (right.frames_served() < 5 && SecondsSince(start) < 30) std::this_thread::sleep_for(20ms);
+    right.Stop();
+    std::this_thread::sleep_for(1500ms);
+    right.Start();
+  });
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto frames = ExpectPairsInStep(log, 25);
+  ASSERT_EQ(frames.size(), 25u);
+  EXPECT_GT(frames.back().utime - frames.front().utime, int64_t(1.5e6 + 23 * 1e5 * 0.9))
+      << "the outage must lie between the first and the last pair";
+  const auto left = ws::test::LastCounters(log, "stereo-capture", "aravis:" + rig->camera(ws::Side::left).device_id());
+  EXPECT_GT(left.dropped, 0) << "left frames of the outage had no partner and must be counted";
 }
 
 TEST(StereoFakeCamerasProcess, AnswersHelp) {
