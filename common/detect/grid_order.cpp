@@ -20,15 +20,23 @@ struct GridOrder {
 
 double Cross(cv::Point2f a, cv::Point2f b) { return double(a.x) * b.y - double(a.y) * b.x; }
 
-// Mean grey level of the inner half of the square whose corners are p[0..3].
+// Mean grey level of the inner half of the square whose corners are p[0..3]
+// (the mask covers only the square's bounding box: the image may be large).
 double SquareBrightness(const cv::Mat& gray, const cv::Point2f (&p)[4]) {
   const cv::Point2f centre = (p[0] + p[1] + p[2] + p[3]) * 0.25f;
   std::vector<cv::Point> inner;
   for (const cv::Point2f& q : p) inner.emplace_back(cv::Point2f(centre + (q - centre) * 0.5f));
-  cv::Mat mask = cv::Mat::zeros(gray.size(), CV_8UC1);
+  const cv::Rect box = (cv::boundingRect(inner) | cv::Rect(cv::Point(centre), cv::Size(1, 1))) &
+                       cv::Rect(0, 0, gray.cols, gray.rows);
+  if (box.empty()) return 0;
+  for (cv::Point& q : inner) q -= box.tl();
+  cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
   cv::fillConvexPoly(mask, inner, cv::Scalar(255));
-  if (cv::countNonZero(mask) == 0) mask.at<uint8_t>(cv::Point(centre)) = 255;
-  return cv::mean(gray, mask)[0];
+  if (cv::countNonZero(mask) == 0) {  // a square of a pixel or so: its centre pixel
+    const cv::Point c(centre);
+    return box.contains(c) ? gray.at<uint8_t>(c) : 0;
+  }
+  return cv::mean(gray(box), mask)[0];
 }
 
 // Whether the first square of the grid in `order` is darker than the one next to it.
