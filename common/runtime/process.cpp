@@ -1,5 +1,7 @@
 #include "runtime/process.h"
 
+#include <cerrno>
+
 #include <signal.h>
 #include <unistd.h>
 
@@ -108,7 +110,7 @@ int Process::Run() {
         input_ended = true;
         break;
       }
-    } else if (in->handleTimeout(100) < 0) {
+    } else if (in->handleTimeout(100) < 0 && errno != EINTR) {  // EINTR: a signal, e.g. SIGINT
       Fatal("LCM input failed");
       break;
     }
