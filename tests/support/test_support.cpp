@@ -42,14 +42,13 @@ std::string OpenCvStereoSetDir() {
   return dir;
 }
 
-CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
+Command::Command(const std::vector<std::string>& argv) : out_path_(TempDir("cmd-out-" + std::to_string(++count_)) + "/output.txt") {
   std::string program = argv.at(0);
   if (program.find('/') == std::string::npos && std::filesystem::exists(BinDir() + "/" + program))
     program = BinDir() + "/" + program;
-  const std::string out_path = TempDir("cmd-out") + "/output.txt";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_ = fork();
+  if (pid_ == 0) {
+    const int fd = open(out_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
     std::vector<char*> args;
@@ -59,27 +58,45 @@ CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s)
     execvp(args[0], args.data());
     _exit(127);
   }
-  CommandResult result;
+}
+
+Command::~Command() {
+  if (exit_code_ == kRunning) Wait(0);
+}
+
+void Command::Signal(int signal) const {
+  if (exit_code_ == kRunning) kill(pid_, signal);
+}
+
+CommandResult Command::Wait(double timeout_s) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
-  while (true) {
-    if (waitpid(pid, &status, WNOHANG) == pid) {
-      result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      break;
+  while (exit_code_ == kRunning) {
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      exit_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    } else if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, &status, 0);
+      exit_code_ = -1;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  FILE* f = std::fopen(out_path.c_str(), "r");
+  return {exit_code_, Output()};
+}
+
+std::string Command::Output() const {
+  std::string output;
+  FILE* f = std::fopen(out_path_.c_str(), "r");
   char buf[4096];
   size_t n;
-  while (f && (n = std::fread(buf, 1, sizeof buf, f)) > 0) result.output.append(buf, n);
+  while (f && (n = std::fread(buf, 1, sizeof buf, f)) > 0) output.append(buf, n);
   if (f) std::fclose(f);
-  return result;
+  return output;
+}
+
+CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
+  return Command(argv).Wait(timeout_s);
 }
 
 std::string UniqueUdpmUrl(int offset) {

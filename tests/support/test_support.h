@@ -1,6 +1,7 @@
 // Helpers for tests that run real processes over real LCM.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,7 +29,30 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-// Runs argv[0] (a path, or a name in build/bin) with a time limit.
+// argv[0] (a path, or a name in build/bin) running in the background, its
+// stdout and stderr going to a file.
+class Command {
+ public:
+  explicit Command(const std::vector<std::string>& argv);
+  ~Command();  // kills it if it still runs
+  Command(const Command&) = delete;
+  Command& operator=(const Command&) = delete;
+
+  int pid() const { return pid_; }
+  void Signal(int signal) const;
+  // Waits for the exit; after `timeout_s` kills it (exit_code -1).
+  CommandResult Wait(double timeout_s);
+  std::string Output() const;  // what it printed so far
+
+ private:
+  static constexpr int kRunning = -2;
+  static inline std::atomic<int> count_{0};
+  std::string out_path_;
+  int pid_ = -1;
+  int exit_code_ = kRunning;
+};
+
+// Runs a Command to its end, with a time limit.
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s = 60);
 
 // A udpm URL on this host (ttl=0) with a port unique to this test process, so
