@@ -1,0 +1,31 @@
+// stereo-command: sends one command on STEREO_COMMAND, e.g.
+//   stereo-command solve                      (stereo-calibrate: solve now)
+//   stereo-command save --target stereo-cloud (write the next cloud as PCD)
+#include <cstdio>
+
+#include "lcm_io/channels.h"
+#include "runtime/process.h"
+#include "widestereo/command_t.hpp"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-command",
+                     "Sends one command (solve, reset, save, ...) on STEREO_COMMAND to one process or to all.");
+  widestereo::command_t command;
+  auto& app = cli.app();
+  app.add_option("command", command.command, "solve | reset | save | ... (what the target understands)")->required();
+  app.add_option("--target", command.target, "Process name (stereo-calibrate, stereo-cloud); default: every process");
+  app.add_option("--arg", command.args, "KEY=VALUE for the command (repeatable)");
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    ws::Process process(cli.options());
+    command.nargs = int32_t(command.args.size());
+    command.utime = process.Now();
+    process.Publish(ws::channel::kStereoCommand, command);
+    process.log().Info("sent '" + command.command + "' to " + (command.target.empty() ? "every process" : command.target));
+    return process.Finish();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereo-command: %s\n", e.what());
+    return 1;
+  }
+}
