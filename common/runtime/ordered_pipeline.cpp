@@ -75,20 +75,16 @@ void OrderedPipeline::Work() {
 void OrderedPipeline::DeliverFinished(std::unique_lock<std::mutex>& lock) {
   if (delivering_) return;  // that thread will find this job done too
   delivering_ = true;
-  while (!slots_.empty() && slots_.front()->done) {
-    Delivery delivery = std::move(slots_.front()->delivery);
-    lock.unlock();
-    delivery();
-    delivery = nullptr;
-    lock.lock();
-    slots_.pop_front();
-    --started_;
-  }
+  while (!slots_.empty() && slots_.front()->done) DeliverFront(lock);
   delivering_ = false;
 }
 
 void OrderedPipeline::DeliverOldest(std::unique_lock<std::mutex>& lock) {
   job_done_.wait(lock, [this] { return slots_.front()->done; });
+  DeliverFront(lock);
+}
+
+void OrderedPipeline::DeliverFront(std::unique_lock<std::mutex>& lock) {
   Delivery delivery = std::move(slots_.front()->delivery);
   lock.unlock();
   delivery();

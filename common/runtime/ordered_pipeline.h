@@ -79,6 +79,8 @@ class OrderedPipeline {
   void DeliverFinished(std::unique_lock<std::mutex>& lock);
   // Waits for the oldest job and runs its delivery (WhenFull::wait).
   void DeliverOldest(std::unique_lock<std::mutex>& lock);
+  // Runs the oldest job's delivery (it is done) without the lock, then drops it.
+  void DeliverFront(std::unique_lock<std::mutex>& lock);
 
   const Options options_;
   mutable std::mutex mutex_;

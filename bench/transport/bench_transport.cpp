@@ -1,0 +1,93 @@
+// Transport benchmark (bench/transport/run.sh): listens on the bus while
+// stereo-capture publishes 2 x 1280x960 GRAY8 pairs at 15 Hz through
+// stereo-match and stereo-cloud, and reports
+//  - STEREO_IMAGES frames lost in transit (frame-id gaps seen here),
+//  - latency from capture (the pair's utime, this host's clock) to the
+//    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
+//  - every process's drop counters from PROCESS_STATUS.
+// With --prepare DIR it instead writes the simulator's wall and board frames
+// as left*/right* PNG pairs for stereo-capture --source dir:DIR.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "lcm_io/channels.h"
+#include "runtime/process.h"
+#include "sim/sim_source.h"
+#include "widestereo/point_cloud_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace {
+
+int64_t WallMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+int Prepare(const std::string& sim_config, const std::string& dir) {
+  auto source = ws::MakeSimSource(sim_config + "?truth=" + dir + "/truth.yaml", false);
+  int n = 0;
+  while (auto pair = source->Next()) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%02d.png", n++);
+    cv::imwrite(dir + "/left" + name, pair->left);
+    cv::imwrite(dir + "/right" + name, pair->right);
+  }
+  std::printf("wrote %d pairs to %s\n", n, dir.c_str());
+  return 0;
+}
+
+double Percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[std::min(values.size() - 1, size_t(p * double(values.size())))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("bench_transport", "Frames lost and capture-to-filtered-cloud latency on the bus.");
+  double duration_s = 60;
+  std::string prepare, sim_config = "config/sim/wall.yaml";
+  cli.app().add_option("--duration", duration_s, "Seconds to listen, from the first pair");
+  cli.app().add_option("--prepare", prepare, "Write the simulator's frames as PNG pairs into this folder and exit");
+  cli.app().add_option("--sim", sim_config, "Simulator config for --prepare")->capture_default_str();
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+  if (!prepare.empty()) return Prepare(sim_config, prepare);
+
+  ws::Process process(cli.options());
+  int64_t first_utime = 0, pairs = 0, first_id = -1, last_id = -1;
+  std::vector<double> latency_ms;
+  std::map<std::string, widestereo::process_status_t> status;
+  process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
+    if (first_id < 0) first_id = f.frame_id, first_utime = WallMicros();
+    last_id = f.frame_id;
+    ++pairs;
+  });
+  process.Subscribe<widestereo::point_cloud_t>(ws::channel::kStereoCloudFiltered,
+                                               [&](const widestereo::point_cloud_t& c) {
+                                                 latency_ms.push_back((WallMicros() - c.utime) * 1e-3);
+                                               });
+  process.Subscribe<widestereo::process_status_t>(
+      ws::channel::kProcessStatus, [&](const widestereo::process_status_t& s) { status[s.name] = s; });
+  process.Every(200000, [&] {
+    if (first_id >= 0 && WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
+  });
+  const int rc = process.Run();
+
+  const int64_t due = last_id - first_id + 1;
+  std::printf("\n%.0f s: %lld pairs of STEREO_IMAGES received here, %lld lost in transit (frame-id gaps)\n", duration_s,
+              (long long)pairs, (long long)(due - pairs));
+  std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
+              Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));
+  for (const auto& [name, s] : status)
+    for (const auto& c : s.channels)
+      if (c.received || c.dropped || c.rejected)
+        std::printf("  %-16s %-22s received %6lld dropped %6lld rejected %lld\n", name.c_str(), c.channel.c_str(),
+                    (long long)c.received, (long long)c.dropped, (long long)c.rejected);
+  return rc;
+}
