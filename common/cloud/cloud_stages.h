@@ -18,6 +18,11 @@ struct StageOutput {
 // PassThrough on z: points with finite x, y, z and z_min <= z <= z_max.
 PclCloud::Ptr KeepDepthRange(const PclCloud::Ptr& cloud, double z_min, double z_max);
 
+// An empty cloud when every point is the same point (such a cloud has no
+// shape to filter or fit, and would send outlier removal into quadratic time);
+// the cloud unchanged otherwise.
+StageOutput EmptyIfOnePoint(const PclCloud::Ptr& cloud);
+
 // VoxelGrid (intensity averaged per voxel) at the leaf PlanVoxelGrid chooses.
 StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf);
 
