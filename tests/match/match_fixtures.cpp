@@ -1,5 +1,8 @@
 #include "match_fixtures.h"
 
+#include "models/curve_fit.h"
+#include "models/theia_lens.h"
+
 namespace ws::test {
 namespace {
 
@@ -17,6 +20,26 @@ widestereo::camera_calibration_t Pinhole(const std::string& name, int width, int
   return c;
 }
 
+widestereo::camera_calibration_t CameraMessage(const std::string& name, const CameraModel& model) {
+  widestereo::camera_calibration_t c{};
+  c.name = name;
+  c.image_width = model.image_width;
+  c.image_height = model.image_height;
+  c.model = model.distortion.kind;
+  c.degree = model.distortion.degree;
+  c.knots = model.distortion.knots;
+  c.nknots = int32_t(c.knots.size());
+  c.coeffs = model.distortion.coeffs;
+  c.ncoeffs = int32_t(c.coeffs.size());
+  c.fx = model.fx;
+  c.fy = model.fy;
+  c.cx = model.cx;
+  c.cy = model.cy;
+  c.p1 = model.p1;
+  c.p2 = model.p2;
+  return c;
+}
+
 }  // namespace
 
 widestereo::stereo_calibration_t IdentityCalibration(int width, int height, double f,
@@ -26,6 +49,40 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
   calib.right = Pinhole("right", width, height, f);
   calib.R[0] = calib.R[4] = calib.R[8] = 1;
   calib.T[0] = -baseline;
+  return calib;
+}
+
+StereoRig RigFromTruth(const SimTruth& truth) {
+  StereoRig rig;
+  rig.left = truth.left;
+  rig.right = truth.right;
+  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = truth.R.val[i];
+  for (int i = 0; i < 3; ++i) rig.T(i) = truth.T[i];
+  return rig;
+}
+
+CameraModel WithTheiaLensFittedAs(const CameraModel& camera, const std::string& kind) {
+  CameraModel fitted = camera;
+  const LensTable normalized = ScaleLensTable(TheiaLikeLensTable(), 1.0 / LensSensor{}.focal_length_mm);
+  fitted.distortion =
+      FitByLeastSquares(MakeModel(Distortion{kind, 0, {}, {}}, Coefficients::kAll), normalized);
+  return fitted;
+}
+
+StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
+  StereoRig fitted = rig;
+  fitted.left = WithTheiaLensFittedAs(rig.left, kind);
+  fitted.right = WithTheiaLensFittedAs(rig.right, kind);
+  return fitted;
+}
+
+widestereo::stereo_calibration_t CalibrationMessage(const StereoRig& rig, int64_t utime) {
+  widestereo::stereo_calibration_t calib{};
+  calib.utime = utime;
+  calib.left = CameraMessage("left", rig.left);
+  calib.right = CameraMessage("right", rig.right);
+  for (int i = 0; i < 9; ++i) calib.R[i] = rig.R(i / 3, i % 3);
+  for (int i = 0; i < 3; ++i) calib.T[i] = rig.T(i);
   return calib;
 }
 
