@@ -7,9 +7,9 @@
 
 #include <pcl/common/common.h>
 #include <pcl/filters/passthrough.h>
-#include <pcl/filters/statistical_outlier_removal.h>
 #include <pcl/filters/voxel_grid.h>
 
+#include "cloud/outlier_removal.h"
 #include "cloud/voxel_plan.h"
 
 namespace ws {
@@ -85,13 +85,7 @@ StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev
     return {cloud,
             "skipped: the cloud repeats the same points so often that the neighbour "
             "search would take quadratic time"};
-  pcl::StatisticalOutlierRemoval<pcl::PointXYZI> removal;
-  removal.setInputCloud(cloud);
-  removal.setMeanK(mean_k);
-  removal.setStddevMulThresh(stddev_mul);
-  pcl::Indices kept;
-  removal.filter(kept);
-  return {Select(cloud, kept), ""};
+  return {Select(cloud, StatisticalInliers(cloud, mean_k, stddev_mul)), ""};
 }
 
 }  // namespace ws
