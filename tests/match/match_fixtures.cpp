@@ -1,7 +1,6 @@
 #include "match_fixtures.h"
 
-#include "models/curve_fit.h"
-#include "models/theia_lens.h"
+#include "sim/sim_config.h"
 
 namespace ws::test {
 namespace {
@@ -61,18 +60,12 @@ StereoRig RigFromTruth(const SimTruth& truth) {
   return rig;
 }
 
-CameraModel WithTheiaLensFittedAs(const CameraModel& camera, const std::string& kind) {
-  CameraModel fitted = camera;
-  const LensTable normalized = ScaleLensTable(TheiaLikeLensTable(), 1.0 / LensSensor{}.focal_length_mm);
-  fitted.distortion =
-      FitByLeastSquares(MakeModel(Distortion{kind, 0, {}, {}}, Coefficients::kAll), normalized);
-  return fitted;
-}
-
 StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
+  const SimConfig theia = ParseSimConfig(
+      "rig: {baseline: 0.3, left: {lens: theia, fit: " + kind + "}}\nscene: {wall: {frames: 1}}\n",
+      "the Theia-like lens fitted as " + kind, ".");
   StereoRig fitted = rig;
-  fitted.left = WithTheiaLensFittedAs(rig.left, kind);
-  fitted.right = WithTheiaLensFittedAs(rig.right, kind);
+  fitted.left.distortion = fitted.right.distortion = theia.left.distortion;
   return fitted;
 }
 

@@ -3,7 +3,6 @@
 
 #include <string>
 
-#include "models/camera_model.h"
 #include "rectify/stereo_rig.h"
 #include "sim/ground_truth.h"
 #include "widestereo/stereo_calibration_t.hpp"
@@ -18,15 +17,13 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
 // The simulator's true rig (both camera models, R, T).
 StereoRig RigFromTruth(const SimTruth& truth);
 
-// `camera` with its lens refitted as `kind` ("poly6", "poly12"): the
-// Theia-like design table (the simulator's default lens, models/theia_lens.h)
-// fitted by least squares on its heights (models/curve_fit.h), the paper's
-// way of comparing models, with fx, fy, cx, cy, p1, p2 kept. For a camera of
-// that lens it is the best `kind` can describe it, short of a calibration that
-// also moves the intrinsics.
-CameraModel WithTheiaLensFittedAs(const CameraModel& camera, const std::string& kind);
-
-// Both cameras of the rig refitted as `kind` (WithTheiaLensFittedAs), R and T kept.
+// The rig with both lenses described as `kind` ("poly6", "poly12") instead:
+// the simulator's camera for `lens: theia, fit: KIND` (sim_config.h), i.e.
+// the Theia-like design table fitted by least squares on its heights
+// (models/curve_fit.h), the paper's way of comparing models. fx, fy, cx, cy,
+// p1, p2, R and T are kept: the best `kind` can describe the lens, short of a
+// calibration that also moves the intrinsics. The rig must have the
+// simulator's default lens.
 StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind);
 
 // The STEREO_CALIBRATION message of a rig (stamped `utime`).
