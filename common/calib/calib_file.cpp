@@ -1,16 +1,19 @@
 #include "calib/calib_file.h"
 
-#include <cstdio>
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
-#include <stdexcept>
 
 #include <opencv2/core.hpp>
+
+#include "models/model_registry.h"
 
 namespace ws::calib {
 namespace {
 
 const char* kHeader[] = {
-    "widestereo stereo calibration (docs/calibration.md). Pixel of a camera-frame point (X,Y,Z):",
+    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point (X,Y,Z):",
     "  x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
@@ -20,58 +23,144 @@ const char* kHeader[] = {
     "      poly6: k1 r^2 + k2 r^4 + k3 r^6; poly12: k1 r^2 + ... + k6 r^12.",
     "Stereo: X_right = R X_left + T (metres)."};
 
+bool IsSpline(const std::string& kind) { return kind == BsplineDistortion::Kind(); }
+
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
                  int views) {
   fs << name << "{";
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
-  const cv::Matx33d K(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1);
-  fs << "camera_matrix" << cv::Mat(K);
+  fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
   fs << "model" << m.distortion.kind << "degree" << m.distortion.degree;
-  if (m.distortion.kind == "bspline") {
-    fs << "knots" << m.distortion.knots;
-    fs << "alpha" << m.distortion.coeffs;
-  } else {
+  if (IsSpline(m.distortion.kind))
+    fs << "knots" << m.distortion.knots << "alpha" << m.distortion.coeffs;
+  else
     fs << "k" << m.distortion.coeffs;
-  }
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
   fs << "}";
 }
 
-[[noreturn]] void Fail(const std::string& path, const std::string& what) {
-  throw std::runtime_error(path + ": " + what);
-}
+// Typed, checked access to the fields of one file; every error names the
+// file and the field.
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)) {}
 
-CameraModel ReadCamera(const cv::FileNode& node, const std::string& path, const std::string& name,
+  [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
+    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
+  }
+  cv::FileNode Required(const cv::FileNode& parent, const std::string& key,
+                        const std::string& field) const {
+    const cv::FileNode node = parent[key];
+    if (node.empty()) Fail(field, "missing");
+    return node;
+  }
+  int Int(const cv::FileNode& parent, const std::string& key, const std::string& field,
+          int min) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isInt()) Fail(field, "not an integer");
+    const int value = static_cast<int>(node);
+    if (value < min) Fail(field, std::to_string(value) + " is below " + std::to_string(min));
+    return value;
+  }
+  double Real(const cv::FileNode& parent, const std::string& key, const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    return Number(node, field);
+  }
+  std::string String(const cv::FileNode& parent, const std::string& key,
+                     const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isString()) Fail(field, "not a string");
+    return static_cast<std::string>(node);
+  }
+  std::vector<double> Reals(const cv::FileNode& parent, const std::string& key,
+                            const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isSeq()) Fail(field, "not a list of numbers");
+    std::vector<double> values;
+    for (size_t i = 0; i < node.size(); ++i)
+      values.push_back(Number(node[int(i)], field + "[" + std::to_string(i) + "]"));
+    return values;
+  }
+  Eigen::MatrixXd Matrix(const cv::FileNode& parent, const std::string& key,
+                         const std::string& field, int rows, int cols) const {
+    const cv::FileNode node = Required(parent, key, field);
+    const std::string shape = "not a " + std::to_string(rows) + "x" + std::to_string(cols) +
+                              " !!opencv-matrix";
+    cv::Mat mat;
+    try {
+      node >> mat;
+    } catch (const cv::Exception&) {
+      Fail(field, shape);
+    }
+    if (mat.rows != rows || mat.cols != cols || mat.channels() != 1) Fail(field, shape);
+    mat.convertTo(mat, CV_64F);
+    Eigen::MatrixXd out(rows, cols);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) out(r, c) = mat.at<double>(r, c);
+    if (!out.allFinite()) Fail(field, "not finite");
+    return out;
+  }
+
+ private:
+  double Number(const cv::FileNode& node, const std::string& field) const {
+    if (!node.isReal() && !node.isInt()) Fail(field, "not a number");
+    const double value = static_cast<double>(node);
+    if (!std::isfinite(value)) Fail(field, "not finite");
+    return value;
+  }
+
+  std::string path_;
+};
+
+CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::string& name,
                        double* rms, int* views) {
-  if (node.empty() || !node.isMap()) Fail(path, "no '" + name + "' camera");
+  const cv::FileNode node = in.Required(root, name, name);
+  if (!node.isMap()) in.Fail(name, "not a map of camera fields");
+  const std::string at = name + ".";
   CameraModel m;
-  node["image_width"] >> m.image_width;
-  node["image_height"] >> m.image_height;
-  cv::Mat K;
-  node["camera_matrix"] >> K;
-  if (K.rows != 3 || K.cols != 3) Fail(path, name + ".camera_matrix is not 3x3");
-  K.convertTo(K, CV_64F);
-  m.fx = K.at<double>(0, 0);
-  m.fy = K.at<double>(1, 1);
-  m.cx = K.at<double>(0, 2);
-  m.cy = K.at<double>(1, 2);
-  node["model"] >> m.distortion.kind;
-  node["degree"] >> m.distortion.degree;
-  if (m.distortion.kind == "bspline") {
-    node["knots"] >> m.distortion.knots;
-    node["alpha"] >> m.distortion.coeffs;
+  m.image_width = in.Int(node, "image_width", at + "image_width", 1);
+  m.image_height = in.Int(node, "image_height", at + "image_height", 1);
+  const Eigen::MatrixXd K = in.Matrix(node, "camera_matrix", at + "camera_matrix", 3, 3);
+  if (K(0, 1) != 0 || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
+    in.Fail(at + "camera_matrix", "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
+  if (!(K(0, 0) > 0) || !(K(1, 1) > 0)) in.Fail(at + "camera_matrix", "fx and fy must be positive");
+  m.fx = K(0, 0);
+  m.fy = K(1, 1);
+  m.cx = K(0, 2);
+  m.cy = K(1, 2);
+  Distortion& d = m.distortion;
+  d.kind = in.String(node, "model", at + "model");
+  const auto kinds = ModelKinds();
+  if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end())
+    in.Fail(at + "model", "unknown model '" + d.kind + "' (bspline, poly6 or poly12)");
+  const std::string coeffs_key = IsSpline(d.kind) ? "alpha" : "k";
+  if (!node[IsSpline(d.kind) ? "k" : "alpha"].empty())
+    in.Fail(at + (IsSpline(d.kind) ? "k" : "alpha"), "not a coefficient of a " + d.kind + " model");
+  if (IsSpline(d.kind)) {
+    d.degree = in.Int(node, "degree", at + "degree", 1);
+    d.knots = in.Reals(node, "knots", at + "knots");
   } else {
-    node["k"] >> m.distortion.coeffs;
+    if (!node["degree"].empty() && in.Int(node, "degree", at + "degree", 0) != 0)
+      in.Fail(at + "degree", "must be 0 for " + d.kind);
+    if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots").empty())
+      in.Fail(at + "knots", "must be empty for " + d.kind);
   }
-  node["p1"] >> m.p1;
-  node["p2"] >> m.p2;
-  node["rms"] >> *rms;
-  node["views"] >> *views;
+  d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key);
   try {
-    const Camera check(m);  // validates sizes, intrinsics, knots and coefficients
+    MakeModel(d, Coefficients::kAll);
   } catch (const std::exception& e) {
-    Fail(path, name + ": " + e.what());
+    in.Fail(at + (IsSpline(d.kind) ? "knots" : "model"), e.what());
   }
+  m.p1 = in.Real(node, "p1", at + "p1");
+  m.p2 = in.Real(node, "p2", at + "p2");
+  try {
+    const Camera check(m);
+  } catch (const std::exception& e) {
+    in.Fail(at + coeffs_key, e.what());
+  }
+  *rms = in.Real(node, "rms", at + "rms");
+  if (*rms < 0) in.Fail(at + "rms", "negative");
+  *views = in.Int(node, "views", at + "views", 0);
   return m;
 }
 
@@ -102,15 +191,13 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
     fs << "model" << file.model;
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
     WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
-    fs << "stereo" << "{";
     cv::Mat R(3, 3, CV_64F), T(3, 1, CV_64F);
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
       T.at<double>(r) = file.T(r);
     }
-    fs << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
-       << file.views;
-    fs << "}";
+    fs << "stereo" << "{" << "R" << R << "T" << T << "rms" << file.rms << "baseline_m"
+       << file.T.norm() << "views" << file.views << "}";
     fs.release();
   }
   std::error_code error;
@@ -119,31 +206,35 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
 }
 
 CalibrationFile ReadCalibrationFile(const std::string& path) {
+  const Reader in(path);
   cv::FileStorage fs;
   try {
-    if (!fs.open(path, cv::FileStorage::READ)) Fail(path, "cannot open");
+    if (!fs.open(path, cv::FileStorage::READ)) in.Fail("(file)", "cannot open");
   } catch (const cv::Exception& e) {
-    Fail(path, std::string("not a calibration file: ") + e.what());
+    in.Fail("(file)", std::string("not YAML that cv::FileStorage reads: ") + e.err);
   }
+  const cv::FileNode root = fs.root();
+  if (!root.isMap()) in.Fail("(file)", "not a map of fields");
   CalibrationFile f;
-  fs["model"] >> f.model;
-  f.left = ReadCamera(fs["left"], path, "left", &f.left_rms, &f.left_views);
-  f.right = ReadCamera(fs["right"], path, "right", &f.right_rms, &f.right_views);
-  const cv::FileNode stereo = fs["stereo"];
-  if (stereo.empty()) Fail(path, "no 'stereo' section");
-  cv::Mat R, T;
-  stereo["R"] >> R;
-  stereo["T"] >> T;
-  if (R.rows != 3 || R.cols != 3 || T.total() != 3) Fail(path, "stereo R must be 3x3 and T 3x1");
-  R.convertTo(R, CV_64F);
-  T.convertTo(T, CV_64F);
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) f.R(r, c) = R.at<double>(r, c);
-    f.T(r) = T.at<double>(r);
-  }
-  if (!f.R.allFinite() || !f.T.allFinite()) Fail(path, "non-finite R or T");
-  stereo["rms"] >> f.rms;
-  stereo["views"] >> f.views;
+  f.model = in.String(root, "model", "model");
+  f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
+  f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
+  for (const auto* camera : {&f.left, &f.right})
+    if (camera->distortion.kind != f.model)
+      in.Fail("model", "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
+  const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
+  if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
+  f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);
+  if (!(f.R.transpose() * f.R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) ||
+      !(f.R.determinant() > 0))
+    in.Fail("stereo.R", "not a rotation (R^T R = I, det R = +1)");
+  f.T = in.Matrix(stereo, "T", "stereo.T", 3, 1);
+  f.rms = in.Real(stereo, "rms", "stereo.rms");
+  if (f.rms < 0) in.Fail("stereo.rms", "negative");
+  const double baseline = in.Real(stereo, "baseline_m", "stereo.baseline_m");
+  if (!(std::abs(baseline - f.T.norm()) <= 1e-9 * std::max(1.0, f.T.norm())))
+    in.Fail("stereo.baseline_m", "differs from |T| = " + std::to_string(f.T.norm()));
+  f.views = in.Int(stereo, "views", "stereo.views", 0);
   return f;
 }
 
