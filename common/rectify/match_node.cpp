@@ -9,12 +9,13 @@
 namespace ws {
 
 MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
-                       const widestereo::stereo_frame_t& frame) {
+                       const widestereo::stereo_frame_t& frame,
+                       const std::string& calibration_source) {
   const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
   if (left.size() != rect.input_size || right.size() != rect.input_size)
     throw std::invalid_argument(
         "frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) + "x" +
-        std::to_string(left.rows) + " but the calibration is for " +
+        std::to_string(left.rows) + " but " + calibration_source + " is for " +
         std::to_string(rect.input_size.width) + "x" + std::to_string(rect.input_size.height));
   cv::Mat left_rect, right_rect;
   RectifyPair(rect, left, right, &left_rect, &right_rect);
@@ -40,18 +41,19 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
   process_.SetState("waiting for calibration");
 }
 
-void MatchNode::SetRig(const StereoRig& rig) {
+void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
   rect_ = BuildRectification(rig, config_.rectify);
+  calibration_source_ = source;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  process_.log().Info("rectification maps built in " + std::to_string(int(ms)) + " ms: f = " +
+  process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                       std::to_string(rect_->f) + " px, baseline = " +
                       std::to_string(rect_->baseline) + " m, " + rig.left.distortion.kind + " model");
   process_.SetState("matching");
 }
 
 void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
-  SetRig(StereoRigFromMessage(msg));
+  SetRig(StereoRigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
 void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
@@ -61,7 +63,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  const MatchResult result = MatchFrame(*rect_, config_, frame);
+  const MatchResult result = MatchFrame(*rect_, config_, frame, calibration_source_);
   process_.Publish(channel::kStereoDisparity, result.disparity);
   process_.Publish(channel::kStereoCloud, result.cloud);
 }

@@ -1,5 +1,6 @@
 #include "match_fixtures.h"
 
+#include "calib/calib_file.h"
 #include "sim/sim_config.h"
 
 namespace ws::test {
@@ -16,26 +17,6 @@ widestereo::camera_calibration_t Pinhole(const std::string& name, int width, int
   c.fx = c.fy = f;
   c.cx = (width - 1) / 2.0;
   c.cy = (height - 1) / 2.0;
-  return c;
-}
-
-widestereo::camera_calibration_t CameraMessage(const std::string& name, const CameraModel& model) {
-  widestereo::camera_calibration_t c{};
-  c.name = name;
-  c.image_width = model.image_width;
-  c.image_height = model.image_height;
-  c.model = model.distortion.kind;
-  c.degree = model.distortion.degree;
-  c.knots = model.distortion.knots;
-  c.nknots = int32_t(c.knots.size());
-  c.coeffs = model.distortion.coeffs;
-  c.ncoeffs = int32_t(c.coeffs.size());
-  c.fx = model.fx;
-  c.fy = model.fy;
-  c.cx = model.cx;
-  c.cy = model.cy;
-  c.p1 = model.p1;
-  c.p2 = model.p2;
   return c;
 }
 
@@ -69,14 +50,14 @@ StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
   return fitted;
 }
 
-widestereo::stereo_calibration_t CalibrationMessage(const StereoRig& rig, int64_t utime) {
-  widestereo::stereo_calibration_t calib{};
-  calib.utime = utime;
-  calib.left = CameraMessage("left", rig.left);
-  calib.right = CameraMessage("right", rig.right);
-  for (int i = 0; i < 9; ++i) calib.R[i] = rig.R(i / 3, i % 3);
-  for (int i = 0; i < 3; ++i) calib.T[i] = rig.T(i);
-  return calib;
+void WriteCalibrationFile(const std::string& path, const StereoRig& rig) {
+  calib::CalibrationFile file;
+  file.model = rig.left.distortion.kind;
+  file.left = rig.left;
+  file.right = rig.right;
+  file.R = rig.R;
+  file.T = rig.T;
+  calib::WriteCalibrationFile(path, file);
 }
 
 }  // namespace ws::test

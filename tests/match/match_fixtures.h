@@ -26,7 +26,8 @@ StereoRig RigFromTruth(const SimTruth& truth);
 // simulator's default lens.
 StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind);
 
-// The STEREO_CALIBRATION message of a rig (stamped `utime`).
-widestereo::stereo_calibration_t CalibrationMessage(const StereoRig& rig, int64_t utime);
+// Writes the rig as a calibration file (calib/calib_file.h), as
+// stereo-calibrate would with a perfect solution.
+void WriteCalibrationFile(const std::string& path, const StereoRig& rig);
 
 }  // namespace ws::test

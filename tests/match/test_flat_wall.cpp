@@ -47,18 +47,16 @@ class FlatWall : public ::testing::Test {
     delete dir_;
   }
 
-  // stereo-match with the calibration `rig`, then stereo-cloud, on the
-  // captured images; measured against the truth.
+  // stereo-match with a calibration file of `rig`, then stereo-cloud, on
+  // the captured images; measured against the truth.
   static WallRun Run(const ws::StereoRig& rig, const std::string& name) {
-    const std::string in = *dir_ + "/" + name + "-in.lcmlog";
+    const std::string calib = *dir_ + "/" + name + ".yaml";
     const std::string match = *dir_ + "/" + name + "-match.lcmlog";
     const std::string cloud = *dir_ + "/" + name + "-cloud.lcmlog";
-    std::vector<LogEvent> events = {Event(ws::channel::kStereoCalibration, CalibrationMessage(rig, 1))};
-    for (const LogEvent& e : ReadLog(*dir_ + "/images.lcmlog")) events.push_back(e);
-    WriteLog(in, events);
+    WriteCalibrationFile(calib, rig);
     auto r = RunCommand({"stereo-match", "--log-dir", *dir_, "--config", "config/stereo-match.yaml",
-                         "--num-disparities", kNumDisparities,
-                         "--in-url", "file://" + in + "?speed=0", "--out-url", "file://" + match + "?mode=w"},
+                         "--calib", calib, "--num-disparities", kNumDisparities, "--in-url",
+                         "file://" + *dir_ + "/images.lcmlog?speed=0", "--out-url", "file://" + match + "?mode=w"},
                         120);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     r = RunCommand({"stereo-cloud", "--log-dir", *dir_, "--config", "config/stereo-cloud.yaml", "--in-url",
