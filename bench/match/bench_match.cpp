@@ -36,14 +36,15 @@ void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectific
              const widestereo::stereo_frame_t& frame, int runs) {
   const cv::Mat left = ws::ImageToMat(frame.left), right = ws::ImageToMat(frame.right);
   const cv::Ptr<cv::StereoMatcher> matcher = ws::MakeMatcher(config.matcher);
+  ws::DisparityMatcher ours(config.matcher);
   std::vector<double> pipeline, rectify_match, bare;
   size_t points = 0;
   for (int run = 0; run < runs; ++run) {
-    pipeline.push_back(Milliseconds([&] { points = ws::MatchFrame(rect, config, frame).cloud.xyz.size(); }));
+    pipeline.push_back(Milliseconds([&] { points = ws::MatchFrame(rect, ours, config.max_depth, frame).cloud.xyz.size(); }));
     rectify_match.push_back(Milliseconds([&] {
       cv::Mat lr, rr;
       ws::RectifyPair(rect, left, right, &lr, &rr);
-      ws::ComputeDisparity(config.matcher, lr, rr);
+      ours.Compute(lr, rr);
     }));
     bare.push_back(Milliseconds([&] {
       cv::Mat lr, rr, disparity;

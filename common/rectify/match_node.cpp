@@ -8,7 +8,7 @@
 
 namespace ws {
 
-MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
                        const widestereo::stereo_frame_t& frame,
                        const std::string& calibration_source) {
   const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
@@ -19,25 +19,24 @@ MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
         std::to_string(rect.input_size.width) + "x" + std::to_string(rect.input_size.height));
   cv::Mat left_rect, right_rect;
   RectifyPair(rect, left, right, &left_rect, &right_rect);
-  const cv::Mat disparity = ComputeDisparity(config.matcher, left_rect, right_rect);
+  const cv::Mat disparity = matcher.Compute(left_rect, right_rect);
 
   MatchResult result;
   auto& d = result.disparity;
   d.utime = frame.utime;
   d.frame_id = frame.frame_id;
   d.disparity = MatToImage(disparity, frame.utime);
-  d.min_disparity = float(config.matcher.min_disparity);
-  d.num_disparities = config.matcher.num_disparities;
+  d.min_disparity = float(matcher.config().min_disparity);
+  d.num_disparities = matcher.config().num_disparities;
   for (int i = 0; i < 16; ++i) d.Q[i] = rect.Q.val[i];
-  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, config.max_depth);
+  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, max_depth);
   result.cloud.utime = frame.utime;
   result.cloud.frame_id = frame.frame_id;
   return result;
 }
 
 MatchNode::MatchNode(Process& process, MatchConfig config)
-    : process_(process), config_(std::move(config)) {
-  CheckMatcherConfig(config_.matcher);
+    : process_(process), config_(std::move(config)), matcher_(config_.matcher) {
   process_.SetState("waiting for calibration");
 }
 
@@ -63,7 +62,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  const MatchResult result = MatchFrame(*rect_, config_, frame, calibration_source_);
+  const MatchResult result = MatchFrame(*rect_, matcher_, config_.max_depth, frame, calibration_source_);
   process_.Publish(channel::kStereoDisparity, result.disparity);
   process_.Publish(channel::kStereoCloud, result.cloud);
 }

@@ -26,10 +26,11 @@ struct MatchResult {
   widestereo::point_cloud_t cloud;
 };
 
-// Rectifies and matches one frame. Throws std::invalid_argument when the
-// frame's size is not the calibration's; the message names the calibration
-// by `calibration_source` (e.g. its file).
-MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
+// Rectifies and matches one frame; the cloud keeps points up to max_depth.
+// Throws std::invalid_argument when the frame's size is not the
+// calibration's; the message names the calibration by `calibration_source`
+// (e.g. its file).
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
                        const widestereo::stereo_frame_t& frame,
                        const std::string& calibration_source = "the calibration");
 
@@ -48,6 +49,7 @@ class MatchNode {
  private:
   Process& process_;
   MatchConfig config_;
+  DisparityMatcher matcher_;
   std::optional<Rectification> rect_;
   std::string calibration_source_;
   int64_t frames_without_calibration_ = 0;
