@@ -25,6 +25,25 @@ std::string Argument(const widestereo::command_t& command, const std::string& na
   return "";
 }
 
+// "1167047 points in, 412163 out; plane 1.9996 m, normal (0.0000, 0.0000, -1.0000),
+// inlier RMS 1.10 mm (411950 inliers); 2140 ms"
+std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult& result) {
+  const auto& s = result.stats;
+  double ms = 0;
+  for (double stage_ms : s.stage_ms) ms += stage_ms;
+  char text[256];
+  if (s.plane_found)
+    std::snprintf(text, sizeof text,
+                  "%d points in, %d out; plane %.4f m, normal (%.4f, %.4f, %.4f), inlier RMS %.2f mm "
+                  "(%d inliers); %.0f ms",
+                  in.npoints, result.cloud.npoints, s.plane_offset, s.plane_normal[0], s.plane_normal[1],
+                  s.plane_normal[2], 1000 * s.inlier_rms, s.stage_points.back(), ms);
+  else
+    std::snprintf(text, sizeof text, "%d points in, %d out; no plane; %.0f ms", in.npoints,
+                  result.cloud.npoints, ms);
+  return text;
+}
+
 }  // namespace
 
 CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
@@ -43,6 +62,7 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
 void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) {
   CloudFilterResult result = filter_.Run(msg);
   const std::string frame = "frame " + std::to_string(msg.frame_id);
+  process_.log().Detail(frame + ": " + Summary(msg, result));
   if (!result.notes.empty()) process_.log().Detail(frame + ": " + Join(result.notes));
   if (result.cloud.npoints == 0) {
     process_.Counters(channel::kStereoCloud).dropped++;

@@ -10,6 +10,9 @@
 // aimed at other processes, or at all processes but not ours ("solve"), are
 // ignored; an unknown command aimed at stereo-cloud is rejected.
 //
+// Each cloud gets a line in the log file: points in and out, the plane
+// (distance, normal, inlier RMS) or "no plane", the time taken.
+//
 // Counting: a cloud that fails validation is rejected (by Process); a valid
 // cloud from which nothing usable remains (empty, all NaN or out of range,
 // all one point) is published empty and counted as dropped on STEREO_CLOUD,

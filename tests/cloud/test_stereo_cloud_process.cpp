@@ -96,6 +96,13 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
   EXPECT_EQ(files, (std::vector<std::string>{"cloud_000002.pcd", "cloud_000004.pcd"}));
   EXPECT_EQ(ws::ReadPcd(dir + "/pcd/cloud_000004.pcd").npoints, clouds[3].npoints);
 
+  // A line per cloud in the log file, with its plane.
+  std::ifstream log(dir + "/stereo-cloud.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  char line[64];
+  std::snprintf(line, sizeof line, "frame 4: %d points in, %d out; plane 2.0", wall.npoints, clouds[3].npoints);
+  EXPECT_NE(text.find(line), std::string::npos) << text;
+
   const auto in = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCloud);
   EXPECT_EQ(in.received, 4);
   EXPECT_EQ(in.dropped, 0);
