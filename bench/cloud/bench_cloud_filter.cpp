@@ -3,7 +3,10 @@
 // camera looking at a wall and a floor, with depth noise that grows with
 // depth squared, speckle outliers, and OpenCV's Z = 10000 where the
 // disparity is missing. Prints the median wall time of several runs per
-// stage, and the median CPU time of a whole run.
+// stage, and the median CPU time of a whole run; then the outlier stage
+// (PCL's statistic on every core, cloud/outlier_removal.h) against PCL's own
+// single-threaded StatisticalOutlierRemoval on the same voxelized cloud, in
+// alternating runs.
 //
 //   bench_cloud_filter [RUNS]    (default 3)
 #include <algorithm>
@@ -14,7 +17,17 @@
 #include <random>
 #include <vector>
 
+#include <chrono>
+#include <tuple>
+#include <utility>
+
+#include <opencv2/core.hpp>
+#include <pcl/filters/statistical_outlier_removal.h>
+
 #include "cloud/cloud_filter.h"
+#include "cloud/cloud_stages.h"
+#include "cloud/outlier_removal.h"
+#include "cloud/pcl_cloud.h"
 
 namespace {
 
@@ -71,6 +84,50 @@ double Median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+double MillisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Wall and CPU (all threads) milliseconds of fn.
+template <class Fn>
+std::pair<double, double> Time(Fn&& fn) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  fn();
+  return {MillisecondsSince(start), 1000.0 * double(std::clock() - cpu_start) / CLOCKS_PER_SEC};
+}
+
+void BenchOutliers(const widestereo::point_cloud_t& msg, int runs) {
+  const ws::CloudFilterConfig config;
+  const ws::PclCloud::Ptr cloud = ws::DownsampleVoxels(
+      ws::KeepDepthRange(ws::ToPcl(msg), config.z_min, config.z_max), config.voxel_leaf).cloud;
+  std::vector<double> ours_ms, ours_cpu, pcl_ms, pcl_cpu;
+  size_t ours_kept = 0, pcl_kept = 0;
+  for (int run = 0; run < runs; ++run) {
+    auto [wall, cpu] = Time([&] {
+      ours_kept = ws::StatisticalInliers(cloud, config.outliers_mean_k, config.outliers_stddev_mul).size();
+    });
+    ours_ms.push_back(wall);
+    ours_cpu.push_back(cpu);
+    std::tie(wall, cpu) = Time([&] {
+      pcl::StatisticalOutlierRemoval<pcl::PointXYZI> removal;
+      removal.setInputCloud(cloud);
+      removal.setMeanK(config.outliers_mean_k);
+      removal.setStddevMulThresh(config.outliers_stddev_mul);
+      pcl::Indices kept;
+      removal.filter(kept);
+      pcl_kept = kept.size();
+    });
+    pcl_ms.push_back(wall);
+    pcl_cpu.push_back(cpu);
+  }
+  std::printf("  outliers on %zu points, ours (%d threads) against PCL's filter: wall %.1f / %.1f ms = %.2f, "
+              "CPU %.1f / %.1f ms = %.2f; kept %zu and %zu\n",
+              cloud->size(), cv::getNumThreads(), Median(ours_ms), Median(pcl_ms),
+              Median(ours_ms) / Median(pcl_ms), Median(ours_cpu), Median(pcl_cpu),
+              Median(ours_cpu) / Median(pcl_cpu), ours_kept, pcl_kept);
+}
+
 void Bench(const char* name, const Camera& camera, int runs) {
   const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
   const ws::CloudFilter filter{ws::CloudFilterConfig{}};
@@ -98,6 +155,7 @@ void Bench(const char* name, const Camera& camera, int runs) {
   std::printf("  plane: %s, normal (%.3f, %.3f, %.3f), offset %.3f m, inlier RMS %.1f mm\n",
               last.plane_found ? "found" : "not found", last.plane_normal[0], last.plane_normal[1],
               last.plane_normal[2], last.plane_offset, 1000 * last.inlier_rms);
+  BenchOutliers(cloud, runs);
 }
 
 }  // namespace

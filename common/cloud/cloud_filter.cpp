@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <pcl/console/print.h>
+
 #include "cloud/cloud_stages.h"
 #include "cloud/plane_fit.h"
 
@@ -48,6 +50,7 @@ CloudFilterResult CloudFilter::Run(const widestereo::point_cloud_t& msg) const {
   clock.Lap("input", cloud->size());
 
   cloud = KeepDepthRange(cloud, config_.z_min, config_.z_max);
+  cloud = Take("passthrough", EmptyIfOnePoint(cloud), &result.notes);
   clock.Lap("passthrough", cloud->size());
 
   if (config_.voxel_enabled)
@@ -77,5 +80,7 @@ CloudFilterResult CloudFilter::Run(const widestereo::point_cloud_t& msg) const {
   result.stats.inlier_rms = plane.inlier_rms;
   return result;
 }
+
+void SilencePclConsole() { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); }
 
 }  // namespace ws

@@ -31,8 +31,10 @@ class CloudFilter {
   explicit CloudFilter(const CloudFilterConfig& config);
 
   // Throws DecodeError when the message's counts disagree with its arrays
-  // (ValidatePointCloud); any cloud that passes, however degenerate (empty,
-  // all NaN, all one point, collinear), gives a result.
+  // (ValidatePointCloud); any cloud that passes, however degenerate, gives a
+  // result: empty when no point survives the pass-through (empty, all NaN,
+  // all out of range) or all points are one point, with a note saying so;
+  // without a plane for collinear points.
   CloudFilterResult Run(const widestereo::point_cloud_t& msg) const;
 
   const CloudFilterConfig& config() const { return config_; }
@@ -40,5 +42,11 @@ class CloudFilter {
  private:
   CloudFilterConfig config_;
 };
+
+// PCL prints its own warnings and errors on stderr for the degenerate clouds
+// the chain handles and explains in its notes (RANSAC on collinear points:
+// one line per try, thousands per cloud). Processes call this once to keep
+// the terminal for their own log.
+void SilencePclConsole();
 
 }  // namespace ws

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <sstream>
 #include <vector>
 
 #include <pcl/common/common.h>
 #include <pcl/filters/passthrough.h>
-#include <pcl/filters/statistical_outlier_removal.h>
 #include <pcl/filters/voxel_grid.h>
 
+#include "cloud/outlier_removal.h"
 #include "cloud/voxel_plan.h"
 
 namespace ws {
@@ -51,6 +52,17 @@ PclCloud::Ptr KeepDepthRange(const PclCloud::Ptr& cloud, double z_min, double z_
   return kept;
 }
 
+StageOutput EmptyIfOnePoint(const PclCloud::Ptr& cloud) {
+  if (cloud->empty()) return {cloud, ""};
+  const Eigen::Vector3f first = cloud->front().getVector3fMap();
+  for (const pcl::PointXYZI& point : *cloud)
+    if (point.getVector3fMap() != first) return {cloud, ""};
+  std::ostringstream note;
+  note << "all " << cloud->size() << " points are the one point (" << first.x() << ", "
+       << first.y() << ", " << first.z() << "): nothing to filter, dropped";
+  return {PclCloud::Ptr(new PclCloud), note.str()};
+}
+
 StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf) {
   if (cloud->empty()) return {cloud, "skipped: no points"};
   pcl::PointXYZI min, max;
@@ -68,18 +80,12 @@ StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf) {
 StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul) {
   if (cloud->size() <= size_t(mean_k))
     return {cloud, "skipped: " + std::to_string(cloud->size()) +
-                       " points, not more than outliers_mean_k (" + std::to_string(mean_k) + ")"};
+                       " points, not more than --outliers-mean-k (" + std::to_string(mean_k) + ")"};
   if (RepeatVisits(*cloud) > kMaxRepeatVisitsPerPoint * double(cloud->size()))
     return {cloud,
             "skipped: the cloud repeats the same points so often that the neighbour "
             "search would take quadratic time"};
-  pcl::StatisticalOutlierRemoval<pcl::PointXYZI> removal;
-  removal.setInputCloud(cloud);
-  removal.setMeanK(mean_k);
-  removal.setStddevMulThresh(stddev_mul);
-  pcl::Indices kept;
-  removal.filter(kept);
-  return {Select(cloud, kept), ""};
+  return {Select(cloud, StatisticalInliers(cloud, mean_k, stddev_mul)), ""};
 }
 
 }  // namespace ws

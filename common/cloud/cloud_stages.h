@@ -18,13 +18,19 @@ struct StageOutput {
 // PassThrough on z: points with finite x, y, z and z_min <= z <= z_max.
 PclCloud::Ptr KeepDepthRange(const PclCloud::Ptr& cloud, double z_min, double z_max);
 
+// An empty cloud when every point is the same point (such a cloud has no
+// shape to filter or fit, and would send outlier removal into quadratic time);
+// the cloud unchanged otherwise.
+StageOutput EmptyIfOnePoint(const PclCloud::Ptr& cloud);
+
 // VoxelGrid (intensity averaged per voxel) at the leaf PlanVoxelGrid chooses.
 StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf);
 
-// StatisticalOutlierRemoval. Skipped when the cloud has no more than mean_k
-// points (PCL would read past its neighbour arrays), and when it holds so
-// many copies of the same points that PCL's k-d tree search turns quadratic
-// (200 000 identical points take PCL about 24 minutes: PCL issue #1146).
+// PCL's StatisticalOutlierRemoval, on every core (outlier_removal.h).
+// Skipped when the cloud has no more than mean_k points (PCL would read past
+// its neighbour arrays), and when it holds so many copies of the same points
+// that the k-d tree search turns quadratic (200 000 identical points take
+// PCL about 24 minutes: PCL issue #1146).
 StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul);
 
 }  // namespace ws

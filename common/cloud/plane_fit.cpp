@@ -77,7 +77,7 @@ constexpr int kMaxRefits = 20;
 PlaneFit FitPlane(const PclCloud::Ptr& cloud, double distance, int max_iterations,
                   int min_inliers) {
   PlaneFit fit;
-  const std::string min_text = "plane_min_inliers (" + std::to_string(min_inliers) + ")";
+  const std::string min_text = "--plane-min-inliers (" + std::to_string(min_inliers) + ")";
   if (cloud->size() < size_t(min_inliers)) {
     fit.note = std::to_string(cloud->size()) + " points, fewer than " + min_text;
     return fit;

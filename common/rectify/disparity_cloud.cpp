@@ -1,8 +1,34 @@
 #include "rectify/disparity_cloud.h"
 
+#include <algorithm>
+#include <iterator>
+#include <vector>
+
 #include <opencv2/imgproc.hpp>
 
 namespace ws {
+namespace {
+
+// The points of rows [begin, end), appended to `cloud` (xyz and, when `gray`
+// is not empty, intensity).
+void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min_disparity,
+                  const cv::Mat& gray, double max_depth, int begin, int end,
+                  widestereo::point_cloud_t* cloud) {
+  const double fb = rect.f * rect.baseline;
+  for (int v = begin; v < end; ++v) {
+    const float* d = disparity.ptr<float>(v);
+    for (int u = 0; u < disparity.cols; ++u) {
+      if (!(d[u] >= min_disparity && d[u] > 0)) continue;
+      const double z = fb / d[u];
+      if (z > max_depth) continue;
+      cloud->xyz.push_back({float((u - rect.cx) * z / rect.f), float((v - rect.cy) * z / rect.f),
+                            float(z)});
+      if (!gray.empty()) cloud->intensity.push_back(gray.at<uint8_t>(v, u));
+    }
+  }
+}
+
+}  // namespace
 
 widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
                                            float min_disparity, const cv::Mat& intensity,
@@ -16,19 +42,26 @@ widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::
     else
       gray = intensity;
   }
+  // A megapixel frame gives a million points, each its own small array in
+  // point_cloud_t: bands of rows are converted on every core, then moved
+  // into the message in row order.
+  constexpr int kBandRows = 32;
+  const int bands = (disparity.rows + kBandRows - 1) / kBandRows;
+  std::vector<widestereo::point_cloud_t> parts(static_cast<size_t>(bands));
+  cv::parallel_for_(cv::Range(0, bands), [&](const cv::Range& range) {
+    for (int band = range.start; band < range.end; ++band)
+      RowsToPoints(rect, disparity, min_disparity, gray, max_depth, band * kBandRows,
+                   std::min(disparity.rows, (band + 1) * kBandRows), &parts[size_t(band)]);
+  });
   widestereo::point_cloud_t cloud;
   cloud.frame = kLeftRectifiedFrame;
-  const double fb = rect.f * rect.baseline;
-  for (int v = 0; v < disparity.rows; ++v) {
-    const float* d = disparity.ptr<float>(v);
-    for (int u = 0; u < disparity.cols; ++u) {
-      if (!(d[u] >= min_disparity && d[u] > 0)) continue;
-      const double z = fb / d[u];
-      if (z > max_depth) continue;
-      cloud.xyz.push_back({float((u - rect.cx) * z / rect.f), float((v - rect.cy) * z / rect.f),
-                           float(z)});
-      if (!gray.empty()) cloud.intensity.push_back(gray.at<uint8_t>(v, u));
-    }
+  size_t total = 0;
+  for (const auto& part : parts) total += part.xyz.size();
+  cloud.xyz.reserve(total);
+  cloud.intensity.reserve(gray.empty() ? 0 : total);
+  for (auto& part : parts) {
+    std::move(part.xyz.begin(), part.xyz.end(), std::back_inserter(cloud.xyz));
+    cloud.intensity.insert(cloud.intensity.end(), part.intensity.begin(), part.intensity.end());
   }
   cloud.npoints = int32_t(cloud.xyz.size());
   cloud.nintensity = int32_t(cloud.intensity.size());

@@ -8,50 +8,51 @@
 
 namespace ws {
 
-MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
-                       const widestereo::stereo_frame_t& frame) {
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
+                       const widestereo::stereo_frame_t& frame,
+                       const std::string& calibration_source) {
   const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
   if (left.size() != rect.input_size || right.size() != rect.input_size)
     throw std::invalid_argument(
         "frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) + "x" +
-        std::to_string(left.rows) + " but the calibration is for " +
+        std::to_string(left.rows) + " but " + calibration_source + " is for " +
         std::to_string(rect.input_size.width) + "x" + std::to_string(rect.input_size.height));
   cv::Mat left_rect, right_rect;
   RectifyPair(rect, left, right, &left_rect, &right_rect);
-  const cv::Mat disparity = ComputeDisparity(config.matcher, left_rect, right_rect);
+  const cv::Mat disparity = matcher.Compute(left_rect, right_rect);
 
   MatchResult result;
   auto& d = result.disparity;
   d.utime = frame.utime;
   d.frame_id = frame.frame_id;
   d.disparity = MatToImage(disparity, frame.utime);
-  d.min_disparity = float(config.matcher.min_disparity);
-  d.num_disparities = config.matcher.num_disparities;
+  d.min_disparity = float(matcher.config().min_disparity);
+  d.num_disparities = matcher.config().num_disparities;
   for (int i = 0; i < 16; ++i) d.Q[i] = rect.Q.val[i];
-  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, config.max_depth);
+  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, max_depth);
   result.cloud.utime = frame.utime;
   result.cloud.frame_id = frame.frame_id;
   return result;
 }
 
 MatchNode::MatchNode(Process& process, MatchConfig config)
-    : process_(process), config_(std::move(config)) {
-  CheckMatcherConfig(config_.matcher);
+    : process_(process), config_(std::move(config)), matcher_(config_.matcher) {
   process_.SetState("waiting for calibration");
 }
 
-void MatchNode::SetRig(const StereoRig& rig) {
+void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
   rect_ = BuildRectification(rig, config_.rectify);
+  calibration_source_ = source;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  process_.log().Info("rectification maps built in " + std::to_string(int(ms)) + " ms: f = " +
+  process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                       std::to_string(rect_->f) + " px, baseline = " +
                       std::to_string(rect_->baseline) + " m, " + rig.left.distortion.kind + " model");
   process_.SetState("matching");
 }
 
 void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
-  SetRig(StereoRigFromMessage(msg));
+  SetRig(StereoRigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
 void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
@@ -61,7 +62,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  const MatchResult result = MatchFrame(*rect_, config_, frame);
+  const MatchResult result = MatchFrame(*rect_, matcher_, config_.max_depth, frame, calibration_source_);
   process_.Publish(channel::kStereoDisparity, result.disparity);
   process_.Publish(channel::kStereoCloud, result.cloud);
 }

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "rectify/disparity_cloud.h"
 #include "rectify/matcher.h"
@@ -25,24 +26,32 @@ struct MatchResult {
   widestereo::point_cloud_t cloud;
 };
 
-// Rectifies and matches one frame. Throws std::invalid_argument when the
-// frame's size is not the calibration's.
-MatchResult MatchFrame(const Rectification& rect, const MatchConfig& config,
-                       const widestereo::stereo_frame_t& frame);
+// Rectifies and matches one frame; the cloud keeps points up to max_depth.
+// Throws std::invalid_argument when the frame's size is not the
+// calibration's; the message names the calibration by `calibration_source`
+// (e.g. its file).
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
+                       const widestereo::stereo_frame_t& frame,
+                       const std::string& calibration_source = "the calibration");
 
-// Wires MatchFrame to the bus: STEREO_CALIBRATION (re)builds the maps,
-// STEREO_IMAGES become STEREO_DISPARITY and STEREO_CLOUD.
+// Wires MatchFrame to the bus: a calibration file given at the start, and
+// every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
+// become STEREO_DISPARITY and STEREO_CLOUD.
 class MatchNode {
  public:
   MatchNode(Process& process, MatchConfig config);
-  void SetRig(const StereoRig& rig);  // builds the maps now
+  // Builds the maps now; `source` names the calibration in log lines and
+  // errors ("calibration file calib.yaml", "STEREO_CALIBRATION").
+  void SetRig(const StereoRig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   void OnFrame(const widestereo::stereo_frame_t& frame);
 
  private:
   Process& process_;
   MatchConfig config_;
+  DisparityMatcher matcher_;
   std::optional<Rectification> rect_;
+  std::string calibration_source_;
   int64_t frames_without_calibration_ = 0;
 };
 

@@ -53,12 +53,15 @@ cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
                                 cv::StereoSGBM::MODE_SGBM);
 }
 
-cv::Mat ComputeDisparity(const MatcherConfig& config, const cv::Mat& left, const cv::Mat& right) {
+DisparityMatcher::DisparityMatcher(const MatcherConfig& config)
+    : config_(config), matcher_(MakeMatcher(config)) {}
+
+cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right) {
   Require(left.size() == right.size(), "left and right images differ in size");
-  cv::Mat fixed_point, disparity;
-  MakeMatcher(config)->compute(Gray8(left), Gray8(right), fixed_point);
+  cv::Mat disparity;
+  matcher_->compute(Gray8(left), Gray8(right), fixed_point_);
   // OpenCV marks pixels without a match (min_disparity - 1) * 16.
-  fixed_point.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
+  fixed_point_.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
   return disparity;
 }
 

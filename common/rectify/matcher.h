@@ -25,9 +25,25 @@ struct MatcherConfig {
 // Throws std::invalid_argument naming the field when a value is out of range.
 void CheckMatcherConfig(const MatcherConfig& config);
 
-// Disparity in pixels (CV_32FC1) of two rectified 8-bit images (grey or BGR,
-// converted to grey); pixels without a match hold min_disparity - 1.
-cv::Mat ComputeDisparity(const MatcherConfig& config, const cv::Mat& left, const cv::Mat& right);
+// The matcher of a config, made once and used frame after frame: OpenCV's
+// matchers keep their work buffers between calls (a fresh SGBM per 1280 x 960
+// frame costs its allocation every time). Not for several threads at once.
+class DisparityMatcher {
+ public:
+  // Throws std::invalid_argument like CheckMatcherConfig.
+  explicit DisparityMatcher(const MatcherConfig& config);
+
+  // Disparity in pixels (CV_32FC1) of two rectified 8-bit images (grey or
+  // BGR, converted to grey); pixels without a match hold min_disparity - 1.
+  cv::Mat Compute(const cv::Mat& left, const cv::Mat& right);
+
+  const MatcherConfig& config() const { return config_; }
+
+ private:
+  MatcherConfig config_;
+  cv::Ptr<cv::StereoMatcher> matcher_;
+  cv::Mat fixed_point_;
+};
 
 // The raw OpenCV matcher for `config`, for comparisons with bare OpenCV.
 cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& config);

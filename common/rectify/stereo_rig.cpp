@@ -1,5 +1,6 @@
 #include "rectify/stereo_rig.h"
 
+#include "calib/calib_file.h"
 #include "models/camera_model.h"
 
 namespace ws {
@@ -28,6 +29,16 @@ StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg) {
   rig.right = CameraModelFromMessage(msg.right);
   for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = msg.R[i];
   for (int i = 0; i < 3; ++i) rig.T(i) = msg.T[i];
+  return rig;
+}
+
+StereoRig StereoRigFromFile(const std::string& path) {
+  const calib::CalibrationFile file = calib::ReadCalibrationFile(path);
+  StereoRig rig;
+  rig.left = file.left;
+  rig.right = file.right;
+  rig.R = file.R;
+  rig.T = file.T;
   return rig;
 }
 

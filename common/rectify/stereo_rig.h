@@ -2,6 +2,8 @@
 // relative to the left, X_right = R X_left + T (OpenCV's convention).
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 
 #include "models/camera_model.h"
@@ -20,5 +22,8 @@ struct StereoRig {
 // when the message does not describe a usable camera.
 CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg);
 StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg);
+// The rig of a calibration file (calib/calib_file.h, stereo-calibrate --out).
+// Throws calib::CalibrationFileError naming the file, the field and the reason.
+StereoRig StereoRigFromFile(const std::string& path);
 
 }  // namespace ws

@@ -1,18 +1,24 @@
 // stereo-match: rectifies every stereo pair through the calibrated lens model,
 // matches it, and publishes the disparity and the point cloud.
 #include <cstdio>
+#include <string>
 
 #include "lcm_io/channels.h"
 #include "rectify/match_node.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-match",
-                     "Rectifies STEREO_IMAGES through the calibrated lens model (from "
-                     "STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
+                     "Rectifies STEREO_IMAGES through the calibrated lens model (from --calib "
+                     "FILE.yaml, then from every STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame).");
   ws::MatchConfig config;
+  std::string calib_file;
   auto& m = config.matcher;
   auto& app = cli.app();
+  app.add_option("--calib", calib_file,
+                 "Calibration file (stereo-calibrate --out) to start with; a STEREO_CALIBRATION "
+                 "message replaces it")
+      ->check(CLI::ExistingFile);
   app.add_option("--matcher", m.kind, "bm or sgbm")->check(CLI::IsMember({"bm", "sgbm"}))->capture_default_str();
   app.add_option("--num-disparities", m.num_disparities, "Disparity search range (multiple of 16)")->capture_default_str();
   app.add_option("--min-disparity", m.min_disparity, "Smallest disparity searched")->capture_default_str();
@@ -28,6 +34,7 @@ int main(int argc, char** argv) {
   try {
     ws::Process process(cli.options());
     ws::MatchNode node(process, config);
+    if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
     process.Subscribe<widestereo::stereo_calibration_t>(
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(

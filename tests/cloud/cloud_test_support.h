@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,44 @@ inline widestereo::point_cloud_t MakeCloud(const std::vector<Point>& points,
   msg.nintensity = int32_t(intensity.size());
   msg.intensity = intensity;
   return msg;
+}
+
+// A noisy wall with outliers and invalid points (NoisyWallScene).
+constexpr float kWallZ = 2.0f;         // metres
+constexpr float kNoiseSigma = 0.005f;  // metres, along z
+constexpr float kGridStep = 0.02f;     // metres; twice the default 1 cm leaf, so that no two
+                                       // wall points share a voxel and none is averaged away
+constexpr int kGridSide = 101;         // 2 m x 2 m
+constexpr int kWallPoints = kGridSide * kGridSide;
+constexpr int kStrayPoints = 500;  // uniform in the 2 x 2 x 3.5 m box in front of the wall
+constexpr float kWallIntensity = 100, kOutlierIntensity = 7;
+
+// The wall, outliers in range, and points every filter must drop: OpenCV's
+// missing-disparity Z (10000), NaN, infinite, and behind the camera.
+inline widestereo::point_cloud_t NoisyWallScene() {
+  std::mt19937 rng(42);
+  std::normal_distribution<float> noise(0, kNoiseSigma);
+  std::uniform_real_distribution<float> lateral(-1, 1), depth(0.5f, 4.0f);
+  std::vector<Point> points;
+  std::vector<float> intensity;
+  auto add = [&](Point p, float i) {
+    points.push_back(p);
+    intensity.push_back(i);
+  };
+  // Offset by a quarter step so that no point sits on a voxel boundary.
+  for (int row = 0; row < kGridSide; ++row)
+    for (int col = 0; col < kGridSide; ++col)
+      add({-1 + (col + 0.25f) * kGridStep, -1 + (row + 0.25f) * kGridStep, kWallZ + noise(rng)},
+          kWallIntensity);
+  for (int i = 0; i < kStrayPoints; ++i)
+    add({lateral(rng), lateral(rng), depth(rng)}, kOutlierIntensity);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (int i = 0; i < 200; ++i) add({lateral(rng), lateral(rng), 10000}, 0);
+  for (int i = 0; i < 100; ++i) add({nan, nan, nan}, 0);
+  for (int i = 0; i < 50; ++i) add({lateral(rng), inf, 2}, 0);
+  for (int i = 0; i < 50; ++i) add({lateral(rng), lateral(rng), -depth(rng)}, 0);
+  return MakeCloud(points, intensity);
 }
 
 // A file path unique to this process (tests may run in parallel: ctest -j,

@@ -1,5 +1,8 @@
 #include "match_fixtures.h"
 
+#include "calib/calib_file.h"
+#include "sim/sim_config.h"
+
 namespace ws::test {
 namespace {
 
@@ -27,6 +30,34 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
   calib.R[0] = calib.R[4] = calib.R[8] = 1;
   calib.T[0] = -baseline;
   return calib;
+}
+
+StereoRig RigFromTruth(const SimTruth& truth) {
+  StereoRig rig;
+  rig.left = truth.left;
+  rig.right = truth.right;
+  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = truth.R.val[i];
+  for (int i = 0; i < 3; ++i) rig.T(i) = truth.T[i];
+  return rig;
+}
+
+StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
+  const SimConfig theia = ParseSimConfig(
+      "rig: {baseline: 0.3, left: {lens: theia, fit: " + kind + "}}\nscene: {wall: {frames: 1}}\n",
+      "the Theia-like lens fitted as " + kind, ".");
+  StereoRig fitted = rig;
+  fitted.left.distortion = fitted.right.distortion = theia.left.distortion;
+  return fitted;
+}
+
+void WriteCalibrationFile(const std::string& path, const StereoRig& rig) {
+  calib::CalibrationFile file;
+  file.model = rig.left.distortion.kind;
+  file.left = rig.left;
+  file.right = rig.right;
+  file.R = rig.R;
+  file.T = rig.T;
+  calib::WriteCalibrationFile(path, file);
 }
 
 }  // namespace ws::test

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rectify/stereo_rig.h"
+#include "sim/ground_truth.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
 namespace ws::test {
@@ -12,5 +13,21 @@ namespace ws::test {
 // point at the image centre: rectification is the identity for it.
 widestereo::stereo_calibration_t IdentityCalibration(int width, int height, double f,
                                                      double baseline);
+
+// The simulator's true rig (both camera models, R, T).
+StereoRig RigFromTruth(const SimTruth& truth);
+
+// The rig with both lenses described as `kind` ("poly6", "poly12") instead:
+// the simulator's camera for `lens: theia, fit: KIND` (sim_config.h), i.e.
+// the Theia-like design table fitted by least squares on its heights
+// (models/curve_fit.h), the paper's way of comparing models. fx, fy, cx, cy,
+// p1, p2, R and T are kept: the best `kind` can describe the lens, short of a
+// calibration that also moves the intrinsics. The rig must have the
+// simulator's default lens.
+StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind);
+
+// Writes the rig as a calibration file (calib/calib_file.h), as
+// stereo-calibrate would with a perfect solution.
+void WriteCalibrationFile(const std::string& path, const StereoRig& rig);
 
 }  // namespace ws::test

@@ -1,0 +1,125 @@
+#include "calib/calib_data.h"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace ws::calib {
+
+void StereoData::Add(const BoardView& left_view, const BoardView& right_view, int64_t utime) {
+  left.views.push_back(left_view);
+  right.views.push_back(right_view);
+  utimes.push_back(utime);
+}
+
+BoardView ToBoardView(const widestereo::camera_corners_t& msg) {
+  BoardView view;
+  const int n = std::max(0, msg.n);
+  view.ids.reserve(n);
+  view.object.reserve(n);
+  view.image.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    view.ids.push_back(msg.ids[i]);
+    view.object.emplace_back(msg.object_points[i][0], msg.object_points[i][1],
+                             msg.object_points[i][2]);
+    view.image.emplace_back(msg.image_points[i][0], msg.image_points[i][1]);
+  }
+  return view;
+}
+
+widestereo::camera_corners_t ToCornersMessage(const BoardView& view, const std::string& board_id,
+                                              int image_width, int image_height) {
+  widestereo::camera_corners_t msg;
+  msg.board_id = board_id;
+  msg.image_width = image_width;
+  msg.image_height = image_height;
+  msg.n = view.size();
+  for (int i = 0; i < view.size(); ++i) {
+    msg.ids.push_back(view.ids[i]);
+    msg.image_points.push_back({view.image[i].x(), view.image[i].y()});
+    msg.object_points.push_back({view.object[i].x(), view.object[i].y(), view.object[i].z()});
+  }
+  return msg;
+}
+
+namespace {
+
+void TakeImageSize(CameraData& camera, const widestereo::camera_corners_t& msg) {
+  if (msg.n <= 0) return;
+  if (camera.image_width == 0 && camera.image_height == 0) {
+    camera.image_width = msg.image_width;
+    camera.image_height = msg.image_height;
+  } else if (camera.image_width != msg.image_width || camera.image_height != msg.image_height) {
+    throw CalibrationError(camera.name + " corners of a " + std::to_string(msg.image_width) + "x" +
+                           std::to_string(msg.image_height) + " image, but earlier views were " +
+                           std::to_string(camera.image_width) + "x" +
+                           std::to_string(camera.image_height));
+  }
+}
+
+}  // namespace
+
+void AddStereoCorners(StereoData& data, const widestereo::stereo_corners_t& msg) {
+  TakeImageSize(data.left, msg.left);
+  TakeImageSize(data.right, msg.right);
+  data.Add(ToBoardView(msg.left), ToBoardView(msg.right), msg.utime);
+}
+
+std::string ViewProblem(const BoardView& view, int min_points) {
+  if (view.size() < min_points)
+    return std::to_string(view.size()) + " corners (at least " + std::to_string(min_points) +
+           " needed)";
+  if (view.ids.size() != view.image.size() || view.object.size() != view.image.size())
+    return "ids, image and object points differ in number";
+  std::set<int> ids(view.ids.begin(), view.ids.end());
+  if (static_cast<int>(ids.size()) != view.size()) return "repeated corner ids";
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : view.object) mean += p;
+  mean /= view.size();
+  double extent = 0;
+  for (const auto& p : view.object) {
+    if (std::abs(p.z()) > 1e-9 * (1.0 + p.head<2>().norm()))
+      return "object points are not on the board plane z = 0";
+    extent = std::max(extent, (p - mean).norm());
+  }
+  if (!(extent > 0)) return "all object points coincide";
+  // The spread of the corners across the board, perpendicular to their main
+  // direction: collinear corners give no homography.
+  Eigen::MatrixXd centred(view.size(), 2);
+  for (int i = 0; i < view.size(); ++i) centred.row(i) = (view.object[i] - mean).head<2>() / extent;
+  const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::MatrixXd>(centred).singularValues();
+  if (sv(1) < 0.05 * sv(0)) return "the corners are (nearly) collinear on the board";
+  Eigen::Vector2d image_mean = Eigen::Vector2d::Zero();
+  for (const auto& p : view.image) image_mean += p;
+  image_mean /= view.size();
+  Eigen::MatrixXd image_centred(view.size(), 2);
+  double image_extent = 0;
+  for (const auto& p : view.image) image_extent = std::max(image_extent, (p - image_mean).norm());
+  if (!(image_extent > 0)) return "all image points coincide";
+  for (int i = 0; i < view.size(); ++i)
+    image_centred.row(i) = (view.image[i] - image_mean) / image_extent;
+  const Eigen::Vector2d isv = Eigen::JacobiSVD<Eigen::MatrixXd>(image_centred).singularValues();
+  if (isv(1) < 0.02 * isv(0)) return "the corners are (nearly) collinear in the image";
+  return "";
+}
+
+BoardView CleanView(const BoardView& view, int* dropped) {
+  BoardView clean;
+  int bad = 0;
+  const size_t n = std::min({view.ids.size(), view.image.size(), view.object.size()});
+  bad += static_cast<int>(std::max({view.ids.size(), view.image.size(), view.object.size()}) - n);
+  for (size_t i = 0; i < n; ++i) {
+    if (!view.image[i].allFinite() || !view.object[i].allFinite()) {
+      ++bad;
+      continue;
+    }
+    clean.ids.push_back(view.ids[i]);
+    clean.object.push_back(view.object[i]);
+    clean.image.push_back(view.image[i]);
+  }
+  if (dropped) *dropped = bad;
+  return clean;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,80 @@
+// What calibration works on: the board corners one camera saw in one view,
+// and the views of a stereo rig, aligned by index.
+//
+// A stereo data set holds the same number of views for both cameras; view j
+// of the left and view j of the right come from the same stereo frame. A
+// camera that did not see the board in a frame has an empty view there.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "widestereo/stereo_corners_t.hpp"
+
+namespace ws::calib {
+
+// Thrown for input no calibration can come from: too few views, degenerate
+// (near-parallel) views, non-finite numbers where they cannot be skipped, a
+// solver that did not converge to a valid camera. The message says which and
+// what to do about it.
+struct CalibrationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The corners one camera saw in one view (one image).
+struct BoardView {
+  std::vector<int> ids;                 // corner ids on the board
+  std::vector<Eigen::Vector3d> object;  // board frame, metres (z = 0 for a plane)
+  std::vector<Eigen::Vector2d> image;   // pixels, (0, 0) the centre of the top-left pixel
+
+  int size() const { return static_cast<int>(image.size()); }
+  bool empty() const { return image.empty(); }
+};
+
+// All the views of one camera.
+struct CameraData {
+  std::string name;  // "left", "right"
+  int image_width = 0;
+  int image_height = 0;
+  std::vector<BoardView> views;  // an empty view: the board was not seen
+};
+
+// Both cameras; left.views[j] and right.views[j] are stereo frame j.
+struct StereoData {
+  StereoData() {
+    left.name = "left";
+    right.name = "right";
+  }
+  CameraData left;
+  CameraData right;
+  std::vector<int64_t> utimes;  // of each frame, for reports (may be empty)
+
+  int size() const { return static_cast<int>(left.views.size()); }
+  void Add(const BoardView& left_view, const BoardView& right_view, int64_t utime = 0);
+};
+
+// The corners of one camera in a message (board not seen: an empty view).
+BoardView ToBoardView(const widestereo::camera_corners_t& msg);
+widestereo::camera_corners_t ToCornersMessage(const BoardView& view, const std::string& board_id,
+                                              int image_width, int image_height);
+
+// Adds a STEREO_CORNERS message as the next stereo view; the image sizes are
+// taken from it (the first message with corners sets them; a later one with
+// another size throws CalibrationError).
+void AddStereoCorners(StereoData& data, const widestereo::stereo_corners_t& msg);
+
+// Why a view cannot be used, or "" when it can: fewer than `min_points`
+// corners, corners whose object points are (nearly) collinear, object points
+// off the board plane z = 0, repeated ids. Non-finite corners are not a
+// reason: CleanView drops them first.
+std::string ViewProblem(const BoardView& view, int min_points = 6);
+
+// The view without its non-finite corners (image or object point); the
+// number dropped goes to *dropped.
+BoardView CleanView(const BoardView& view, int* dropped);
+
+}  // namespace ws::calib

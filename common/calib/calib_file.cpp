@@ -1,0 +1,241 @@
+#include "calib/calib_file.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <opencv2/core.hpp>
+
+#include "models/model_registry.h"
+
+namespace ws::calib {
+namespace {
+
+const char* kHeader[] = {
+    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point (X,Y,Z):",
+    "  x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2)",
+    "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
+    "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
+    "  u = fx xd + cx,  v = fy yd + cy   (pixel centres at integer coordinates, as in OpenCV)",
+    "D(r): bspline: sum_i alpha_i N_{i,degree}(r), the de Boor-Cox B-spline basis on 'knots'",
+    "      (clamped; beyond the last knot the last polynomial piece continues);",
+    "      poly6: k1 r^2 + k2 r^4 + k3 r^6; poly12: k1 r^2 + ... + k6 r^12.",
+    "Stereo: X_right = R X_left + T (metres)."};
+
+bool IsSpline(const std::string& kind) { return kind == BsplineDistortion::Kind(); }
+
+void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
+                 int views) {
+  fs << name << "{";
+  fs << "image_width" << m.image_width << "image_height" << m.image_height;
+  fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
+  fs << "model" << m.distortion.kind << "degree" << m.distortion.degree;
+  if (IsSpline(m.distortion.kind))
+    fs << "knots" << m.distortion.knots << "alpha" << m.distortion.coeffs;
+  else
+    fs << "k" << m.distortion.coeffs;
+  fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
+  fs << "}";
+}
+
+// Typed, checked access to the fields of one file; every error names the
+// file and the field.
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)) {}
+
+  [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
+    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
+  }
+  cv::FileNode Required(const cv::FileNode& parent, const std::string& key,
+                        const std::string& field) const {
+    const cv::FileNode node = parent[key];
+    if (node.empty()) Fail(field, "missing");
+    return node;
+  }
+  int Int(const cv::FileNode& parent, const std::string& key, const std::string& field,
+          int min) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isInt()) Fail(field, "not an integer");
+    const int value = static_cast<int>(node);
+    if (value < min) Fail(field, std::to_string(value) + " is below " + std::to_string(min));
+    return value;
+  }
+  double Real(const cv::FileNode& parent, const std::string& key, const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    return Number(node, field);
+  }
+  std::string String(const cv::FileNode& parent, const std::string& key,
+                     const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isString()) Fail(field, "not a string");
+    return static_cast<std::string>(node);
+  }
+  std::vector<double> Reals(const cv::FileNode& parent, const std::string& key,
+                            const std::string& field) const {
+    const cv::FileNode node = Required(parent, key, field);
+    if (!node.isSeq()) Fail(field, "not a list of numbers");
+    std::vector<double> values;
+    for (size_t i = 0; i < node.size(); ++i)
+      values.push_back(Number(node[int(i)], field + "[" + std::to_string(i) + "]"));
+    return values;
+  }
+  Eigen::MatrixXd Matrix(const cv::FileNode& parent, const std::string& key,
+                         const std::string& field, int rows, int cols) const {
+    const cv::FileNode node = Required(parent, key, field);
+    const std::string shape = "not a " + std::to_string(rows) + "x" + std::to_string(cols) +
+                              " !!opencv-matrix";
+    cv::Mat mat;
+    try {
+      node >> mat;
+    } catch (const cv::Exception&) {
+      Fail(field, shape);
+    }
+    if (mat.rows != rows || mat.cols != cols || mat.channels() != 1) Fail(field, shape);
+    mat.convertTo(mat, CV_64F);
+    Eigen::MatrixXd out(rows, cols);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) out(r, c) = mat.at<double>(r, c);
+    if (!out.allFinite()) Fail(field, "not finite");
+    return out;
+  }
+
+ private:
+  double Number(const cv::FileNode& node, const std::string& field) const {
+    if (!node.isReal() && !node.isInt()) Fail(field, "not a number");
+    const double value = static_cast<double>(node);
+    if (!std::isfinite(value)) Fail(field, "not finite");
+    return value;
+  }
+
+  std::string path_;
+};
+
+CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::string& name,
+                       double* rms, int* views) {
+  const cv::FileNode node = in.Required(root, name, name);
+  if (!node.isMap()) in.Fail(name, "not a map of camera fields");
+  const std::string at = name + ".";
+  CameraModel m;
+  m.image_width = in.Int(node, "image_width", at + "image_width", 1);
+  m.image_height = in.Int(node, "image_height", at + "image_height", 1);
+  const Eigen::MatrixXd K = in.Matrix(node, "camera_matrix", at + "camera_matrix", 3, 3);
+  if (K(0, 1) != 0 || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
+    in.Fail(at + "camera_matrix", "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
+  if (!(K(0, 0) > 0) || !(K(1, 1) > 0)) in.Fail(at + "camera_matrix", "fx and fy must be positive");
+  m.fx = K(0, 0);
+  m.fy = K(1, 1);
+  m.cx = K(0, 2);
+  m.cy = K(1, 2);
+  Distortion& d = m.distortion;
+  d.kind = in.String(node, "model", at + "model");
+  const auto kinds = ModelKinds();
+  if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end())
+    in.Fail(at + "model", "unknown model '" + d.kind + "' (bspline, poly6 or poly12)");
+  const std::string coeffs_key = IsSpline(d.kind) ? "alpha" : "k";
+  if (!node[IsSpline(d.kind) ? "k" : "alpha"].empty())
+    in.Fail(at + (IsSpline(d.kind) ? "k" : "alpha"), "not a coefficient of a " + d.kind + " model");
+  if (IsSpline(d.kind)) {
+    d.degree = in.Int(node, "degree", at + "degree", 1);
+    d.knots = in.Reals(node, "knots", at + "knots");
+  } else {
+    if (!node["degree"].empty() && in.Int(node, "degree", at + "degree", 0) != 0)
+      in.Fail(at + "degree", "must be 0 for " + d.kind);
+    if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots").empty())
+      in.Fail(at + "knots", "must be empty for " + d.kind);
+  }
+  d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key);
+  try {
+    MakeModel(d, Coefficients::kAll);
+  } catch (const std::exception& e) {
+    in.Fail(at + (IsSpline(d.kind) ? "knots" : "model"), e.what());
+  }
+  m.p1 = in.Real(node, "p1", at + "p1");
+  m.p2 = in.Real(node, "p2", at + "p2");
+  try {
+    const Camera check(m);
+  } catch (const std::exception& e) {
+    in.Fail(at + coeffs_key, e.what());
+  }
+  *rms = in.Real(node, "rms", at + "rms");
+  if (*rms < 0) in.Fail(at + "rms", "negative");
+  *views = in.Int(node, "views", at + "views", 0);
+  return m;
+}
+
+}  // namespace
+
+CalibrationFile ToCalibrationFile(const StereoCalibration& c) {
+  CalibrationFile f;
+  f.model = c.model;
+  f.left = c.left.model;
+  f.right = c.right.model;
+  f.left_rms = c.left.rms_px;
+  f.right_rms = c.right.rms_px;
+  f.left_views = c.left.views;
+  f.right_views = c.right.views;
+  f.R = c.R;
+  f.T = c.T;
+  f.rms = c.rms_px;
+  f.views = c.views;
+  return f;
+}
+
+void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) {
+  const std::string tmp = path + ".tmp";
+  {
+    cv::FileStorage fs(tmp, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
+    if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
+    for (const char* line : kHeader) fs.writeComment(line);
+    fs << "model" << file.model;
+    WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
+    WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
+    cv::Mat R(3, 3, CV_64F), T(3, 1, CV_64F);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
+      T.at<double>(r) = file.T(r);
+    }
+    fs << "stereo" << "{" << "R" << R << "T" << T << "rms" << file.rms << "baseline_m"
+       << file.T.norm() << "views" << file.views << "}";
+    fs.release();
+  }
+  std::error_code error;
+  std::filesystem::rename(tmp, path, error);
+  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
+}
+
+CalibrationFile ReadCalibrationFile(const std::string& path) {
+  const Reader in(path);
+  cv::FileStorage fs;
+  try {
+    if (!fs.open(path, cv::FileStorage::READ)) in.Fail("(file)", "cannot open");
+  } catch (const cv::Exception& e) {
+    in.Fail("(file)", std::string("not YAML that cv::FileStorage reads: ") + e.err);
+  }
+  const cv::FileNode root = fs.root();
+  if (!root.isMap()) in.Fail("(file)", "not a map of fields");
+  CalibrationFile f;
+  f.model = in.String(root, "model", "model");
+  f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
+  f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
+  for (const auto* camera : {&f.left, &f.right})
+    if (camera->distortion.kind != f.model)
+      in.Fail("model", "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
+  const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
+  if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
+  f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);
+  if (!(f.R.transpose() * f.R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) ||
+      !(f.R.determinant() > 0))
+    in.Fail("stereo.R", "not a rotation (R^T R = I, det R = +1)");
+  f.T = in.Matrix(stereo, "T", "stereo.T", 3, 1);
+  f.rms = in.Real(stereo, "rms", "stereo.rms");
+  if (f.rms < 0) in.Fail("stereo.rms", "negative");
+  const double baseline = in.Real(stereo, "baseline_m", "stereo.baseline_m");
+  if (!(std::abs(baseline - f.T.norm()) <= 1e-9 * std::max(1.0, f.T.norm())))
+    in.Fail("stereo.baseline_m", "differs from |T| = " + std::to_string(f.T.norm()));
+  f.views = in.Int(stereo, "views", "stereo.views", 0);
+  return f;
+}
+
+}  // namespace ws::calib

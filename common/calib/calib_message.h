@@ -1,0 +1,23 @@
+// A calibration as the STEREO_CALIBRATION message (stereo_calibration_t) and
+// back. camera_calibration_t carries the full coefficient vector (for a
+// B-spline alpha_0 = alpha_1 = 0 included), the parameter names and their
+// standard deviations; per-view RMS is over the input views, -1 for views
+// that were not used.
+#pragma once
+
+#include <cstdint>
+
+#include "calib/calibrate.h"
+#include "models/camera_model.h"
+#include "widestereo/stereo_calibration_t.hpp"
+
+namespace ws::calib {
+
+widestereo::camera_calibration_t ToMessage(const CameraCalibration& camera);
+widestereo::stereo_calibration_t ToMessage(const StereoCalibration& calibration, int64_t utime);
+
+// The camera model a message describes; throws std::invalid_argument when
+// it is inconsistent (Camera's checks).
+CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg);
+
+}  // namespace ws::calib

@@ -1,0 +1,131 @@
+#include "calib/calib_plots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "plot/plot.h"
+
+namespace ws::calib {
+namespace {
+
+std::string Format(const char* format, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
+
+const CameraCalibration& Side(const StereoCalibration& s, int side) {
+  return side == 0 ? s.left : s.right;
+}
+
+}  // namespace
+
+double ImageCornerIdealRadius(const CameraModel& model) {
+  const Camera camera(model);
+  double r = 0;
+  for (double u : {-0.5, model.image_width - 0.5})
+    for (double v : {-0.5, model.image_height - 0.5}) {
+      const auto ray = camera.Unproject(Eigen::Vector2d(u, v));
+      if (!ray) continue;
+      r = std::max(r, ray->head<2>().norm() / ray->z());
+    }
+  return r;
+}
+
+void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
+                              const std::string& png_path,
+                              const std::vector<ReferenceCurve>& references) {
+  plot::Figure figure("Recovered radial distortion D(r) = r'/r - 1", 2, 1400, 600);
+  for (int side = 0; side < 2; ++side) {
+    const std::string name = side == 0 ? "left" : "right";
+    plot::Panel& panel =
+        figure.panels.emplace_back(name + " camera", "ideal radius r = |(X/Z, Y/Z)|", "D(r) [%]");
+    panel.zero_line = true;
+    panel.legend = "bottom left";
+    double r_end = 0, r_seen = 0;
+    for (const auto& c : calibrations) {
+      r_end = std::max(r_end, ImageCornerIdealRadius(Side(c, side).model));
+      r_seen = std::max(r_seen, Side(c, side).max_observed_radius);
+    }
+    if (!(r_end > 0)) r_end = std::max(1.0, r_seen * 1.1);
+    double lo = 0, hi = 0;
+    auto curve = [&](const CameraModel& model, const std::string& title) {
+      const Camera camera(model);
+      std::vector<double> r, d;
+      for (int k = 0; k <= 300; ++k) {
+        r.push_back(r_end * k / 300.0);
+        d.push_back(100.0 * camera.DistortionCurve(r.back()));
+        lo = std::min(lo, d.back());
+        hi = std::max(hi, d.back());
+      }
+      panel.series.emplace_back(title, r, d);
+    };
+    for (const auto& ref : references)
+      if (ref.camera == name) curve(ref.model, ref.title);
+    for (const auto& c : calibrations)
+      curve(Side(c, side).model,
+            c.model + " (RMS " + Format("%.3f", Side(c, side).rms_px) + " px)");
+    if (r_seen > 0) {
+      plot::Series& mark = panel.series.emplace_back(
+          "largest observed radius " + Format("%.2f", r_seen), std::vector<double>{r_seen, r_seen},
+          std::vector<double>{lo, hi}, plot::Style::kLines, "#808080");
+      mark.line_width = 1;
+    }
+  }
+  plot::WritePng(figure, png_path);
+}
+
+void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
+                         const std::string& png_path) {
+  const int rows = static_cast<int>(calibrations.size());
+  plot::Figure figure("Mean reprojection residual per image cell (arrows scaled)", 2, 1400,
+                      std::max(500, 450 * rows));
+  for (const auto& c : calibrations)
+    for (int side = 0; side < 2; ++side) {
+      const CameraCalibration& cam = Side(c, side);
+      const ResidualGrid& g = cam.grid;
+      double largest = 0;
+      for (int cell = 0; cell < g.rows * g.cols; ++cell)
+        if (g.count[cell]) largest = std::max(largest, g.mean[cell].norm());
+      const double cell_size = g.cols > 0 ? double(g.image_width) / g.cols : 1.0;
+      const double scale = largest > 0 ? 0.45 * cell_size / largest : 1.0;
+      plot::Panel& panel = figure.panels.emplace_back(
+          cam.name + ", " + c.model + ": RMS " + Format("%.3f", cam.rms_px) + " px, arrows x" +
+              Format("%.0f", scale) + " (longest " + Format("%.3f", largest) + " px)",
+          "u [px]", "v [px] (down)");
+      panel.legend = "off";
+      std::vector<double> ax, ay, px, py, ex, ey;
+      for (int cell = 0; cell < g.rows * g.cols; ++cell) {
+        const Eigen::Vector2d centre = g.CellCentre(cell);
+        if (!g.count[cell]) {
+          ex.push_back(centre.x());
+          ey.push_back(-centre.y());
+          continue;
+        }
+        const Eigen::Vector2d tip = centre + scale * g.mean[cell];
+        ax.insert(ax.end(), {centre.x(), tip.x(), NAN});
+        ay.insert(ay.end(), {-centre.y(), -tip.y(), NAN});
+        px.push_back(centre.x());
+        py.push_back(-centre.y());
+      }
+      // The image outline.
+      const double w = g.image_width - 0.5, h = g.image_height - 0.5;
+      panel.series.emplace_back("", std::vector<double>{-0.5, w, w, -0.5, -0.5},
+                                std::vector<double>{0.5, 0.5, -h, -h, 0.5}, plot::Style::kLines,
+                                "#c0c0c0");
+      if (!ax.empty()) panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
+      if (!px.empty()) {
+        plot::Series& dots = panel.series.emplace_back("cell", px, py, plot::Style::kPoints, "#0072b2");
+        dots.point_size = 0.5;
+      }
+      if (!ex.empty()) {
+        plot::Series& empty = panel.series.emplace_back("no corners", ex, ey, plot::Style::kPoints, "#808080");
+        empty.point_type = 2;
+        empty.point_size = 0.8;
+      }
+    }
+  plot::WritePng(figure, png_path);
+}
+
+}  // namespace ws::calib

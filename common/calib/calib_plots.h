@@ -1,0 +1,37 @@
+// PNG figures of a calibration (through common/plot, gnuplot):
+//
+//  - the recovered radial distortion curves D(r) of each model, one panel
+//    per camera (the paper's Figs. 8-9), over the ideal radius the image
+//    reaches, with the largest observed radius marked: past it a curve is
+//    extrapolation (and the smoothness prior's work);
+//  - the residual map: per image cell the mean residual vector (arrows
+//    scaled up, the scale in the title), one panel per camera and model.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "calib/calibrate.h"
+#include "models/camera_model.h"
+
+namespace ws::calib {
+
+// A known curve to draw with the recovered ones (e.g. the true lens).
+struct ReferenceCurve {
+  std::string title;
+  std::string camera;  // "left" or "right"
+  CameraModel model;
+};
+
+void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
+                              const std::string& png_path,
+                              const std::vector<ReferenceCurve>& references = {});
+
+void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
+                         const std::string& png_path);
+
+// The ideal radius of the image corner farthest from the principal point
+// (the end of the curve plots); 0 when the model cannot be inverted there.
+double ImageCornerIdealRadius(const CameraModel& model);
+
+}  // namespace ws::calib

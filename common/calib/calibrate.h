@@ -1,0 +1,88 @@
+// Camera and stereo calibration (paper Sec. VI-B): Zhang's initialisation,
+// then a joint Levenberg-Marquardt (Ceres) over intrinsics, distortion and
+// every board pose, minimising the reprojection error (paper Eq. 10), for
+// any distortion model of models/model_registry.h.
+//
+//   calib::CalibrationOptions options;                  // options.h: "bspline", 11 knots, ...
+//   calib::StereoCalibration result = calib::CalibrateStereo(data, options);
+//   result.left.model   -> a CameraModel (models/camera_model.h)
+//   result.R, result.T  -> X_right = R X_left + T
+//
+// How: mono_solve.h (one camera: Zhang, radial continuation, outliers),
+// stereo_solve.cpp (R, T from the stereo pairs, then optionally one joint
+// solve), problem.h (the Ceres problem), camera_result.h (the checks).
+// Errors: CalibrationError (calib_data.h) saying what is wrong with the
+// input, never a result built on garbage.
+//
+// RMS convention (OpenCV's): sqrt(sum |projected - observed|^2 / corners),
+// the root mean square of the corners' pixel distances.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "calib/calib_data.h"
+#include "calib/options.h"
+#include "calib/pose.h"
+#include "calib/quality.h"
+#include "models/camera_model.h"
+
+namespace ws::calib {
+
+// One camera's calibration and its quality.
+struct CameraCalibration {
+  std::string name;
+  CameraModel model;
+  double rms_px = 0;       // over all the camera's inlier corners
+  int views = 0;           // views used
+  int points = 0;          // inlier corners used
+  int outliers = 0;        // corners rejected as outliers
+  int invalid_points = 0;  // non-finite corners dropped
+  std::vector<double> view_rms;           // per input view; negative: not used
+  std::vector<Pose> board_poses;          // per input view, board -> this camera (used views)
+  std::vector<std::string> skipped;       // why views were not used ("view 3: ...")
+  std::vector<std::string> param_names;   // fx fy cx cy p1 p2, then the model's coefficients
+  std::vector<double> stddev;             // same order; empty without covariance
+  std::string init_method;                // ZhangIntrinsics' method
+  double max_observed_radius = 0;         // largest ideal radius of an inlier corner
+  std::vector<CornerResidual> residuals;  // every corner, outliers flagged
+  ResidualGrid grid;
+};
+
+struct StereoCalibration {
+  std::string model;  // the model kind
+  StereoFlow flow = StereoFlow::kJoint;
+  CameraCalibration left, right;
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
+  Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
+  double rms_px = 0;             // over both cameras' inlier corners of the stereo views
+  int views = 0;                 // stereo views used
+  std::vector<double> view_rms;  // per input view; negative: not a stereo view
+  std::vector<std::string> extrinsic_names;  // rx ry rz tx ty tz
+  std::vector<double> extrinsic_stddev;      // angle-axis radians, metres
+  double solve_seconds = 0;      // wall clock, not reproducible
+};
+
+// Calibrates one camera from its views (empty views are skipped).
+CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options);
+
+// Calibrates both cameras and R, T. Views seen by one camera only serve that
+// camera's intrinsics. Throws CalibrationError when either camera or the
+// stereo pairs are not enough.
+StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options);
+
+// The same data solved with each model kind in turn (Table II and the
+// curves); throws like CalibrateStereo when one fails.
+std::vector<StereoCalibration> CalibrateStereoAllModels(const StereoData& data,
+                                                        const CalibrationOptions& options,
+                                                        const std::vector<std::string>& kinds);
+
+// The residuals a known camera and known board poses give on the views
+// (e.g. the RMS of the true model on synthetic data): every corner of every
+// view with a pose.
+std::vector<CornerResidual> Reproject(const CameraModel& model, const CameraData& data,
+                                      const std::vector<Pose>& board_poses);
+
+}  // namespace ws::calib

@@ -1,0 +1,90 @@
+// The stereo-calibrate process's behaviour, on a ws::Process:
+//
+//  - STEREO_CORNERS: each message becomes a stereo view unless it is a near
+//    duplicate of one it has (CalibrationSession), saved to --state.
+//  - STEREO_COMMAND (target "" or the process's name):
+//      "solve"  [model=bspline|poly6|poly12|all] [knots=N]: solve the views so far
+//      "reset"  forget every view (and empty the state file)
+//      "save"   [path=FILE.yaml] [report=FILE.json]: write the last solution again
+//  - CALIBRATION_STATUS every second of the process clock (the message clock
+//    when replaying a log): state (collecting, solving, solved, failed),
+//    views per camera, coverage grids, RMS of the last solve (-1: none) and
+//    a hint for the person holding the board.
+//  - After a solve: STEREO_CALIBRATION (the first model asked for), the
+//    calibration file (--out), the report (--report), the figures
+//    (--plot-dir: distortion_curves.png, residual_map.png) and, with several
+//    models, Table II on the terminal and in the log.
+//  - --once: solve when a file:// input ends (or after the first solve
+//    command live), then exit; exit code 1 when that solve fails.
+//
+// Replaying a log, solves run in the message handler, so the same log gives
+// the same output; live they run on a worker thread so that the status keeps
+// coming while Ceres works.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "calib/calibrate.h"
+#include "calib/calibration_session.h"
+#include "runtime/process.h"
+#include "widestereo/command_t.hpp"
+
+namespace ws::calib {
+
+struct NodeOptions {
+  std::vector<std::string> models{"bspline"};  // solved in this order; the first is published
+  CalibrationOptions calibration;
+  SessionOptions session;
+  std::string out_yaml, report_json, plot_dir;
+  bool once = false;
+};
+
+// "all" -> every registered kind; else the one kind (checked).
+std::vector<std::string> ParseModelList(const std::string& spec);
+
+// Solves the data with every model of `models` (in order) and writes the
+// outputs asked for; returns the results. Throws CalibrationError (bad
+// data) or std::runtime_error (cannot write).
+std::vector<StereoCalibration> SolveAndWrite(const StereoData& data,
+                                             const std::vector<std::string>& models,
+                                             const CalibrationOptions& options,
+                                             const std::string& out_yaml,
+                                             const std::string& report_json,
+                                             const std::string& plot_dir);
+
+class CalibrateNode {
+ public:
+  CalibrateNode(Process& process, NodeOptions options);
+  ~CalibrateNode();
+
+  // Restores the state file, subscribes, starts the status timer.
+  void Start();
+
+ private:
+  void OnCorners(const widestereo::stereo_corners_t& msg);
+  void OnCommand(const widestereo::command_t& msg);
+  void PublishStatus();
+  void Solve(std::vector<std::string> models, CalibrationOptions options, bool exit_after);
+  // Runs one solve; false (after reporting) when it failed.
+  bool SolveNow(const StereoData& data, const std::vector<std::string>& models,
+                const CalibrationOptions& options);
+  void SetState(const std::string& state, double rms);
+
+  Process& process_;
+  NodeOptions options_;
+  CalibrationSession session_;
+  std::mutex mutex_;  // guards state_, rms_, last_
+  std::string state_ = "collecting";
+  double rms_ = -1;
+  std::vector<StereoCalibration> last_;
+  std::atomic<bool> solving_{false};
+  std::thread worker_;
+  int accepted_ = 0, duplicates_ = 0, rejected_ = 0;
+};
+
+}  // namespace ws::calib

@@ -1,0 +1,180 @@
+#include "calib/calibration_session.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
+
+namespace ws::calib {
+
+CalibrationSession::CalibrationSession(SessionOptions options)
+    : options_(std::move(options)),
+      left_grid_(options_.grid_rows, options_.grid_cols),
+      right_grid_(options_.grid_rows, options_.grid_cols) {}
+
+CalibrationSession::~CalibrationSession() = default;
+
+int CalibrationSession::Restore() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (options_.state_path.empty()) return 0;
+  const std::string& path = options_.state_path;
+  int restored = 0;
+  if (std::filesystem::exists(path)) {
+    const LcmLogScan scan = ScanLcmLog(path);
+    if (!scan.complete()) std::filesystem::resize_file(path, scan.valid_bytes);
+    lcm::LogFile log(path, "r");
+    if (!log.good()) throw std::runtime_error("cannot read the state file " + path);
+    while (const lcm::LogEvent* event = log.readNextEvent()) {
+      ++state_events_;
+      if (event->channel != channel::kStereoCorners) continue;
+      widestereo::stereo_corners_t msg;
+      if (msg.decode(event->data, 0, event->datalen) != event->datalen) continue;
+      if (AddLocked(msg, nullptr, false) == Outcome::kAccepted) ++restored;
+    }
+  }
+  OpenStateForAppend();
+  return restored;
+}
+
+void CalibrationSession::OpenStateForAppend() {
+  state_.reset();
+  if (options_.state_path.empty()) return;
+  const auto parent = std::filesystem::path(options_.state_path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  state_ = std::make_unique<lcm::LogFile>(options_.state_path, "a");
+  if (!state_->good()) {
+    state_.reset();
+    throw std::runtime_error("cannot write the state file " + options_.state_path);
+  }
+}
+
+CalibrationSession::Outcome CalibrationSession::Add(const widestereo::stereo_corners_t& msg,
+                                                    std::string* why) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return AddLocked(msg, why, true);
+}
+
+CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::stereo_corners_t& msg,
+                                                          std::string* why, bool save) {
+  if (msg.left.n <= 0 && msg.right.n <= 0) return Outcome::kNoBoard;
+  for (const auto* side : {&msg.left, &msg.right}) {
+    if (side->n <= 0) continue;
+    if (board_id_.empty()) board_id_ = side->board_id;
+    if (side->board_id != board_id_) {
+      if (why) *why = "board '" + side->board_id + "' differs from the board so far, '" + board_id_ + "'";
+      return Outcome::kRejected;
+    }
+  }
+  StereoData probe = data_;
+  try {
+    AddStereoCorners(probe, msg);
+  } catch (const CalibrationError& e) {
+    if (why) *why = e.what();
+    return Outcome::kRejected;
+  }
+  const BoardView left = ToBoardView(msg.left), right = ToBoardView(msg.right);
+  auto threshold = [&](const CameraData& camera) {
+    if (options_.duplicate_px > 0) return options_.duplicate_px;
+    return 0.015 * std::hypot(camera.image_width, camera.image_height);
+  };
+  // A view adds nothing when each camera's corners are absent or a near
+  // duplicate of that camera's corners in one view already accepted.
+  auto covered = [](const BoardView& view, const BoardView& old, double px) {
+    return view.empty() || (!old.empty() && NearDuplicate(view, old, px));
+  };
+  for (int v = 0; v < data_.size(); ++v) {
+    if (covered(left, data_.left.views[v], threshold(probe.left)) &&
+        covered(right, data_.right.views[v], threshold(probe.right))) {
+      ++duplicates_;
+      return Outcome::kDuplicate;
+    }
+  }
+  data_ = std::move(probe);
+  left_grid_.Add(left, data_.left.image_width, data_.left.image_height);
+  right_grid_.Add(right, data_.right.image_width, data_.right.image_height);
+  if (save && state_) {
+    std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
+    msg.encode(bytes.data(), 0, int(bytes.size()));
+    lcm::LogEvent event;
+    event.eventnum = state_events_++;
+    event.timestamp = msg.utime;
+    event.channel = channel::kStereoCorners;
+    event.datalen = int32_t(bytes.size());
+    event.data = bytes.data();
+    if (state_->writeEvent(&event) != 0 || std::fflush(state_->getFilePtr()) != 0) {
+      if (why) *why = "could not save the view to " + options_.state_path;
+    }
+  }
+  return Outcome::kAccepted;
+}
+
+void CalibrationSession::Reset() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  data_ = StereoData();
+  board_id_.clear();
+  left_grid_ = CoverageGrid(options_.grid_rows, options_.grid_cols);
+  right_grid_ = CoverageGrid(options_.grid_rows, options_.grid_cols);
+  duplicates_ = 0;
+  if (!options_.state_path.empty()) {
+    state_.reset();
+    state_ = std::make_unique<lcm::LogFile>(options_.state_path, "w");
+    state_events_ = 0;
+    if (!state_->good()) state_.reset();
+  }
+}
+
+StereoData CalibrationSession::Data() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return data_;
+}
+
+int CalibrationSession::views() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return data_.size();
+}
+
+int CalibrationSession::duplicates() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return duplicates_;
+}
+
+widestereo::calibration_status_t CalibrationSession::Status(int64_t utime,
+                                                            const std::string& state,
+                                                            double rms) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  CoverageStatus c;
+  for (int v = 0; v < data_.size(); ++v) {
+    const bool l = !data_.left.views[v].empty(), r = !data_.right.views[v].empty();
+    c.views_left += l;
+    c.views_right += r;
+    c.views_stereo += l && r;
+  }
+  c.left = left_grid_;
+  c.right = right_grid_;
+  widestereo::calibration_status_t msg;
+  msg.utime = utime;
+  msg.state = state;
+  msg.views_left = c.views_left;
+  msg.views_right = c.views_right;
+  msg.views_stereo = c.views_stereo;
+  msg.grid_rows = options_.grid_rows;
+  msg.grid_cols = options_.grid_cols;
+  for (const auto* grid : {&left_grid_, &right_grid_}) {
+    auto& out = grid == &left_grid_ ? msg.coverage_left : msg.coverage_right;
+    out.assign(options_.grid_rows, std::vector<int32_t>(options_.grid_cols, 0));
+    for (int r = 0; r < options_.grid_rows; ++r)
+      for (int col = 0; col < options_.grid_cols; ++col)
+        out[r][col] = grid->count.empty() ? 0 : grid->count[r * options_.grid_cols + col];
+  }
+  msg.rms = rms;
+  msg.hint = CoverageHint(c, options_.min_views);
+  return msg;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,78 @@
+// What stereo-calibrate keeps while it runs: the accepted stereo views (near
+// duplicates of views it already has are skipped), the coverage of each
+// image, the CALIBRATION_STATUS it publishes, and the state file that makes
+// the accepted views survive a crash.
+//
+// State file: an LCM log of every accepted STEREO_CORNERS message, appended
+// and flushed as each is accepted, and read back when the session starts, so
+// a process killed halfway loses nothing the person holding the board did.
+// A log cut in the middle of an event (a kill during a write) is truncated
+// to its last complete event before appending. "reset" empties it.
+//
+// Thread-safe: the process's solve thread reads Data() while messages come in.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "calib/calib_data.h"
+#include "calib/coverage.h"
+#include "widestereo/calibration_status_t.hpp"
+#include "widestereo/stereo_corners_t.hpp"
+
+namespace lcm {
+class LogFile;
+}
+
+namespace ws::calib {
+
+struct SessionOptions {
+  // Near-duplicate threshold: mean corner distance in pixels; 0 = 1.5 % of
+  // the image diagonal.
+  double duplicate_px = 0;
+  int grid_rows = 6, grid_cols = 8;
+  int min_views = 3;
+  std::string state_path;  // "" = no state file
+};
+
+class CalibrationSession {
+ public:
+  explicit CalibrationSession(SessionOptions options);
+  ~CalibrationSession();
+
+  // Reads the state file's views (if it exists) and opens it for appending;
+  // returns how many views it restored. Throws std::runtime_error when the
+  // file cannot be read or written.
+  int Restore();
+
+  enum class Outcome { kAccepted, kDuplicate, kNoBoard, kRejected };
+  // Adds a STEREO_CORNERS message: accepted (and saved), a near duplicate of
+  // an accepted view, no board in either camera, or rejected (*why says why:
+  // an image size that changed, a board id that changed).
+  Outcome Add(const widestereo::stereo_corners_t& msg, std::string* why = nullptr);
+  // Forgets every view (and empties the state file).
+  void Reset();
+
+  StereoData Data() const;
+  int views() const;
+  int duplicates() const;
+  widestereo::calibration_status_t Status(int64_t utime, const std::string& state,
+                                          double rms) const;
+
+ private:
+  Outcome AddLocked(const widestereo::stereo_corners_t& msg, std::string* why, bool save);
+  void OpenStateForAppend();
+
+  SessionOptions options_;
+  mutable std::mutex mutex_;
+  StereoData data_;
+  std::string board_id_;
+  CoverageGrid left_grid_, right_grid_;
+  int duplicates_ = 0;
+  std::unique_ptr<lcm::LogFile> state_;
+  int64_t state_events_ = 0;
+};
+
+}  // namespace ws::calib

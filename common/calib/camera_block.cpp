@@ -1,0 +1,153 @@
+#include "calib/camera_block.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "calib/smoothness_prior.h"
+#include "models/bspline_basis.h"
+
+namespace ws::calib {
+namespace {
+
+// Corners may not wander past this many times r_max during a solve.
+constexpr double kMaxRadiusFactor = 1.5;
+
+CalibrationSetup SetupFor(const CalibrationOptions& options, double r_max) {
+  return CalibrationSetup{r_max, options.knots - 1, options.degree};
+}
+
+// The estimated coefficients of the spline `to` whose D(r) is closest to
+// that of `from` (least squares at 200 radii over [0, r_max]).
+std::vector<double> RefitSpline(const CameraBlock& from, const BsplineDistortion& to,
+                                double r_max) {
+  const int samples = 200, n = to.NumCoeffs();
+  const int first = to.NumBasis() - n;  // alpha index of coeffs[0]
+  Eigen::MatrixXd A(samples, n);
+  Eigen::VectorXd b(samples);
+  for (int k = 0; k < samples; ++k) {
+    const double r = r_max * (k + 0.5) / samples;
+    const std::vector<double> basis = EvaluateBasis(to.knots(), to.degree(), r);
+    for (int j = 0; j < n; ++j) A(k, j) = basis[j + first];
+    b(k) = RadialDistortion(from, r);
+  }
+  const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
+  return std::vector<double>(x.data(), x.data() + n);
+}
+
+}  // namespace
+
+CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
+                         double fy, double cx, double cy) {
+  CameraBlock camera(MakeCalibrationModel(kind, SetupFor(options, 1.0)));
+  camera.intrinsics = {fx, fy, cx, cy, 0, 0};
+  camera.coeffs.assign(std::visit([](const auto& m) { return m.NumCoeffs(); }, camera.model), 0.0);
+  camera.pinhole_only = true;
+  return camera;
+}
+
+CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max) {
+  CameraBlock out = camera;
+  out.fixed = false;
+  out.pinhole_only = false;
+  out.free_coeffs = -1;
+  out.max_radius = kMaxRadiusFactor * r_max;
+  if (Kind(camera) == BsplineDistortion::Kind()) {
+    const BsplineDistortion spline = BsplineDistortion::ForCalibration(SetupFor(options, r_max));
+    out.coeffs = RefitSpline(camera, spline, r_max);
+    out.model = spline;
+    out.prior_weight = SmoothnessWeight(options.smoothness, camera.intrinsics[kFx], r_max);
+  }
+  return out;
+}
+
+std::string Kind(const CameraBlock& camera) {
+  return std::visit([](const auto& m) { return m.Kind(); }, camera.model);
+}
+
+std::vector<std::string> ParamNames(const CameraBlock& camera) {
+  std::vector<std::string> names{"fx", "fy", "cx", "cy", "p1", "p2"};
+  std::visit(
+      [&](const auto& m) {
+        for (int i = 0; i < m.NumCoeffs(); ++i) names.push_back(m.CoeffName(i));
+      },
+      camera.model);
+  return names;
+}
+
+CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_height) {
+  CameraModel m;
+  m.image_width = image_width;
+  m.image_height = image_height;
+  m.fx = camera.intrinsics[kFx];
+  m.fy = camera.intrinsics[kFy];
+  m.cx = camera.intrinsics[kCx];
+  m.cy = camera.intrinsics[kCy];
+  m.p1 = camera.intrinsics[kP1];
+  m.p2 = camera.intrinsics[kP2];
+  m.distortion = std::visit([&](const auto& model) { return model.ToData(camera.coeffs.data()); },
+                            camera.model);
+  return m;
+}
+
+bool AllFinite(const CameraBlock& camera) {
+  for (double v : camera.intrinsics)
+    if (!std::isfinite(v)) return false;
+  for (double v : camera.coeffs)
+    if (!std::isfinite(v)) return false;
+  return camera.intrinsics[kFx] > 0 && camera.intrinsics[kFy] > 0;
+}
+
+std::optional<Eigen::Vector2d> ProjectPoint(const CameraBlock& camera, const Eigen::Vector3d& X) {
+  Eigen::Vector2d pixel;
+  const bool in_front = std::visit(
+      [&](const auto& m) {
+        return Project(m, camera.intrinsics.data(), camera.coeffs.data(), X.data(), pixel.data());
+      },
+      camera.model);
+  if (!in_front) return std::nullopt;
+  return pixel;
+}
+
+std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen::Vector2d& pixel) {
+  const double* in = camera.intrinsics.data();
+  const double distorted[2] = {(pixel.x() - in[kCx]) / in[kFx], (pixel.y() - in[kCy]) / in[kFy]};
+  Eigen::Vector2d ideal;
+  const bool ok = std::visit(
+      [&](const auto& m) {
+        return Undistort(m, camera.coeffs.data(), in[kP1], in[kP2], distorted, ideal.data());
+      },
+      camera.model);
+  if (!ok) return std::nullopt;
+  return ideal;
+}
+
+double RadialDistortion(const CameraBlock& camera, double r) {
+  return std::visit([&](const auto& m) { return m.RadialDistortion(camera.coeffs.data(), r); },
+                    camera.model);
+}
+
+double ImageCornerRadius(const CameraBlock& camera, int image_width, int image_height,
+                         double fallback) {
+  double r = 0;
+  for (double u : {-0.5, image_width - 0.5})
+    for (double v : {-0.5, image_height - 0.5}) {
+      const auto ideal = IdealPoint(camera, Eigen::Vector2d(u, v));
+      if (!ideal) return fallback;
+      r = std::max(r, ideal->norm());
+    }
+  return std::isfinite(r) && r > 0 ? r : fallback;
+}
+
+std::optional<double> FoldRadius(const CameraBlock& camera, double r_end) {
+  double previous = 0;
+  for (int k = 1; k <= 256; ++k) {
+    const double r = r_end * k / 256;
+    const double height = r * (1 + RadialDistortion(camera, r));
+    if (!(height > previous)) return r;
+    previous = height;
+  }
+  return std::nullopt;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,70 @@
+// One camera's parameters as the solver holds them: the distortion model
+// (any kind of models/model_registry.h), the intrinsics {fx fy cx cy p1 p2}
+// and the model's estimated coefficients, each array one Ceres parameter
+// block, plus how a solve treats them.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "calib/options.h"
+#include "models/camera_model.h"
+#include "models/model_registry.h"
+
+namespace ws::calib {
+
+struct CameraBlock {
+  explicit CameraBlock(AnyDistortionModel model) : model(std::move(model)) {}
+
+  AnyDistortionModel model;
+  std::array<double, kNumIntrinsics> intrinsics{};
+  std::vector<double> coeffs;  // model's NumCoeffs()
+  bool fixed = false;          // intrinsics and coefficients constant
+  bool pinhole_only = false;   // coefficients constant, p1 = p2 = 0 held
+  int free_coeffs = -1;        // only coeffs[0 .. free_coeffs) free; -1: all
+  double prior_weight = 0;     // smoothness prior (B-splines), pixels
+  // A corner whose ideal radius exceeds this fails the evaluation, so a solve
+  // never steps where a distortion curve may fold back (ViewPoints).
+  double max_radius = 1e6;
+};
+
+// A pinhole start: the model of `kind` on knots over [0, 1] with zero
+// coefficients, only fx fy cx cy free (pinhole_only).
+CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
+                         double fy, double cx, double cy);
+
+// The same camera with its model (and, for B-splines, knots) for the field
+// [0, r_max]: the distortion curve carried over by least squares (B-splines;
+// the polynomials need no change), the prior weight and max_radius set for
+// r_max, everything free.
+CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
+
+std::string Kind(const CameraBlock& camera);
+// fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..).
+std::vector<std::string> ParamNames(const CameraBlock& camera);
+CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_height);
+bool AllFinite(const CameraBlock& camera);
+
+// The pixel of a camera-frame point; nullopt behind the camera.
+std::optional<Eigen::Vector2d> ProjectPoint(const CameraBlock& camera, const Eigen::Vector3d& X);
+// The ideal normalized point of a pixel; nullopt where the model does not
+// invert (models/pinhole_camera.h, Undistort).
+std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen::Vector2d& pixel);
+// D(r).
+double RadialDistortion(const CameraBlock& camera, double r);
+
+// The largest ideal radius of the image's four corners, or `fallback` where
+// the model cannot be inverted.
+double ImageCornerRadius(const CameraBlock& camera, int image_width, int image_height,
+                         double fallback);
+
+// The first radius in (0, r_end] (of 256 steps) where r (1 + D(r)) stops
+// increasing, i.e. where the curve folds back; nullopt when it does not.
+std::optional<double> FoldRadius(const CameraBlock& camera, double r_end);
+
+}  // namespace ws::calib

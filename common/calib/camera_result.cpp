@@ -1,0 +1,54 @@
+#include "calib/camera_result.h"
+
+#include <algorithm>
+
+#include "calib/stage_log.h"
+
+namespace ws::calib {
+
+CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
+                               const std::vector<double>& stddev, const std::string& init_method,
+                               const CalibrationOptions& options) {
+  const CameraBlock& camera = problem.cameras[c];
+  CameraCalibration out;
+  out.name = p.name;
+  out.model = ToCameraModel(camera, p.width, p.height);
+  out.residuals = Residuals(problem, c);
+  out.rms_px = Rms(out.residuals);
+  out.view_rms = ViewRms(out.residuals, static_cast<int>(p.views.size()));
+  for (const auto& r : out.residuals) (r.outlier ? out.outliers : out.points)++;
+  out.board_poses.assign(p.views.size(), Pose());
+  for (const Observation& o : problem.observations) {
+    if (o.camera != c) continue;
+    ++out.views;
+    const Pose pose = BoardPose(problem, o);
+    out.board_poses[o.view] = pose;
+    for (int i = 0; i < o.corners->size(); ++i) {
+      if (!(*o.inliers)[i]) continue;
+      const Eigen::Vector3d X = pose * o.corners->object[i];
+      out.max_observed_radius = std::max(out.max_observed_radius, X.head<2>().norm() / X.z());
+    }
+  }
+  if (const auto fold = FoldRadius(camera, out.max_observed_radius))
+    throw CalibrationError(p.name + " camera (" + Kind(camera) +
+                           "): the solved distortion curve folds back at r = " + Fixed(*fold, 3) +
+                           ", inside the observed field; the views do not constrain the model "
+                           "(more views, fewer knots or a stronger smoothness prior)");
+  if (out.views < options.min_views)
+    throw CalibrationError(p.name + " camera: only " + std::to_string(out.views) +
+                           " views fit the solved camera, at least " +
+                           std::to_string(options.min_views) + " needed");
+  out.skipped = p.skipped;
+  for (const auto& [left_out_camera, view] : problem.left_out)
+    if (left_out_camera == c)
+      out.skipped.push_back("view " + std::to_string(view) +
+                            ": left out, its corners do not project under the solved camera");
+  out.invalid_points = p.invalid_points;
+  out.param_names = ParamNames(camera);
+  out.stddev = stddev;
+  out.init_method = init_method;
+  out.grid = MakeResidualGrid(out.residuals, p.width, p.height, options.grid_rows, options.grid_cols);
+  return out;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,23 @@
+// A solved camera as the caller sees it (CameraCalibration, calibrate.h):
+// the stored model, its residuals and quality, and the checks that keep a
+// garbage result from leaving the solver.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "calib/calibrate.h"
+#include "calib/initialise.h"
+#include "calib/problem.h"
+
+namespace ws::calib {
+
+// Camera `camera` of the solved problem, over the views of `prepared`.
+// Throws CalibrationError when its distortion curve folds back inside the
+// observed field (r (1 + D(r)) not increasing: two directions on one pixel)
+// or fewer than options.min_views views fit it.
+CameraCalibration CameraResult(const Problem& problem, int camera, const Prepared& prepared,
+                               const std::vector<double>& stddev, const std::string& init_method,
+                               const CalibrationOptions& options);
+
+}  // namespace ws::calib

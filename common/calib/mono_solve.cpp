@@ -1,0 +1,142 @@
+#include "calib/mono_solve.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "calib/outliers.h"
+#include "calib/pose_fit.h"
+#include "calib/stage_log.h"
+
+namespace ws::calib {
+namespace {
+
+// Marks in *disc the corners less than `fraction` of the image's
+// half-diagonal from the principal point of `camera`; returns the number of
+// views with at least min_points such corners. *everything: whether the disc
+// holds every corner.
+int MarkDisc(const CameraBlock& camera, const Prepared& p, double fraction, int min_points,
+             Inliers* disc, bool* everything) {
+  const double* in = camera.intrinsics.data();
+  const double radius = fraction * 0.5 * std::hypot(p.width, p.height);
+  int views = 0;
+  *everything = true;
+  for (size_t v = 0; v < p.views.size(); ++v) {
+    (*disc)[v].assign(p.views[v].size(), 0);
+    if (!p.usable[v]) continue;
+    int inside = 0;
+    for (int i = 0; i < p.views[v].size(); ++i) {
+      const Eigen::Vector2d& u = p.views[v].image[i];
+      const bool in_disc = std::hypot(u.x() - in[kCx], u.y() - in[kCy]) < radius;
+      inside += (*disc)[v][i] = in_disc;
+      *everything = *everything && in_disc;
+    }
+    views += inside >= min_points;
+  }
+  return views;
+}
+
+// The problem of `camera` over the views with at least min_points corners in mask.
+Problem MaskedProblem(const CameraBlock& camera, MonoState* s, Inliers* mask, int min_points) {
+  Problem problem;
+  problem.cameras.push_back(camera);
+  const Prepared& p = s->prepared;
+  for (size_t v = 0; v < p.views.size(); ++v)
+    if (p.usable[v] && std::count((*mask)[v].begin(), (*mask)[v].end(), 1) >= min_points)
+      problem.observations.push_back({0, int(v), &p.views[v], &(*mask)[v], &s->poses[v], false});
+  return problem;
+}
+
+SolveSettings StageSettings(const CalibrationOptions& options, const std::string& what,
+                            int max_iterations) {
+  return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
+}
+
+// The last stages on every inlier corner: the camera's final problem,
+// solved with outlier rejection (and standard deviations).
+void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, const std::string& what,
+              MonoState* s) {
+  s->problem = MaskedProblem(camera, s, &s->inliers, 1);
+  s->outcome = SolveWithRejection(s->problem, options, what);
+}
+
+}  // namespace
+
+void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoState* s) {
+  s->prepared = Prepare(data, options);
+  Prepared& p = s->prepared;
+  RequireViews(p, options.min_views);
+  const Init init = Initialize(p, options);
+  s->poses = init.poses;
+  s->inliers.assign(p.views.size(), {});
+  for (size_t v = 0; v < p.views.size(); ++v) s->inliers[v].assign(p.views[v].size(), 1);
+  s->init_method = init.pinhole.method;
+  const std::string what = p.name + " camera (" + options.model + ")";
+  const int min_points = options.min_points_per_view;
+
+  // A pinhole on the central disc.
+  CameraBlock pinhole = PinholeBlock(options.model, options, init.pinhole.fx, init.pinhole.fy,
+                                     init.pinhole.cx, init.pinhole.cy);
+  Inliers disc(p.views.size());
+  bool everything = false;
+  double fraction = 0.25;
+  while (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views && !everything)
+    fraction *= 1.4;
+  {
+    Problem stage = MaskedProblem(pinhole, s, &disc, min_points);
+    Solve(stage, StageSettings(options, what + " pinhole start", 50));
+    pinhole = stage.cameras[0];
+    Say(options, what + ": pinhole fit of " + std::to_string(stage.observations.size()) +
+                     " views within " + Fixed(fraction, 2) + " of the half-diagonal" + ": rms " +
+                     Fixed(Rms(Residuals(stage, 0))) + " px, fx " + Fixed(pinhole.intrinsics[kFx], 2));
+  }
+  RefitPoses(pinhole, p, init, s->inliers, true, options, what, &s->poses);
+
+  // The full model on growing discs, its knots over the image as the
+  // pinhole sees it. A polynomial's coefficients are global, and the high
+  // orders fitted to a small disc explode outside it: one more of them is
+  // freed with each disc.
+  const double r_max = ImageCornerRadius(pinhole, p.width, p.height, 1.0) * options.r_max_margin;
+  CameraBlock camera = ForField(pinhole, options, r_max);
+  const bool global_coeffs = !std::holds_alternative<BsplineDistortion>(camera.model);
+  for (int stage = 1; ; ++stage) {
+    fraction *= 1.4;
+    if (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views ||
+        everything)
+      break;
+    const std::vector<bool> good = RefitPoses(camera, p, init, disc, false, options, what, &s->poses);
+    for (size_t v = 0; v < disc.size(); ++v)
+      if (!good[v]) std::fill(disc[v].begin(), disc[v].end(), 0);
+    camera.free_coeffs = global_coeffs ? stage : -1;
+    Problem stage_problem = MaskedProblem(camera, s, &disc, min_points);
+    Solve(stage_problem,
+          StageSettings(options, what + " within " + Fixed(fraction, 2), options.max_iterations));
+    camera = stage_problem.cameras[0];
+    Say(options, what + ": " + std::to_string(stage_problem.observations.size()) + " views within " +
+                     Fixed(fraction, 2) + " of the half-diagonal: rms " +
+                     Fixed(Rms(Residuals(stage_problem, 0))) + " px, fx " +
+                     Fixed(camera.intrinsics[kFx], 2));
+  }
+  camera.free_coeffs = -1;
+
+  // Every corner.
+  const std::vector<bool> good = RefitPoses(camera, p, init, s->inliers, false, options, what, &s->poses);
+  for (size_t v = 0; v < good.size(); ++v)
+    if (!good[v]) p.Skip(int(v), "no board pose fits its corners (a mirrored or partial view?)");
+  RequireViews(p, options.min_views);
+  SolveAll(camera, options, what, s);
+  Say(options, what + ": r_max " + Fixed(r_max, 3) + ", rms " +
+                   Fixed(Rms(Residuals(s->problem, 0))) + " px (" + s->outcome.message + ")");
+
+  // The knots again over the image as the solved model sees it, if that
+  // differs by more than 5 %.
+  if (Kind(camera) != BsplineDistortion::Kind()) return;
+  const CameraBlock& solved = s->problem.cameras[0];
+  const double r_image = ImageCornerRadius(solved, p.width, p.height, 0.0) * options.r_max_margin;
+  if (r_image > 0 && std::abs(r_image - r_max) > 0.05 * r_max) {
+    SolveAll(ForField(solved, options, r_image), options, what, s);
+    Say(options, what + ": knots moved to r_max " + Fixed(r_image, 3) + ", rms " +
+                     Fixed(Rms(Residuals(s->problem, 0))) + " px");
+  }
+}
+
+}  // namespace ws::calib

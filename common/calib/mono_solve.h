@@ -1,0 +1,38 @@
+// One camera's calibration from its own views (paper Sec. VI-B): Zhang's
+// start, then a radial continuation to the full model.
+//
+// Boards at the periphery of a super-wide lens pull any fit that starts
+// there far off, so the solve grows outwards: a pinhole fitted to the
+// central corners only (within a quarter of the image's half-diagonal of
+// the principal point, the disc growing until it holds enough views), where
+// every lens is closest to a pinhole; then the full model on ever larger discs (x1.4);
+// then all corners, with outlier rejection. Before each stage every view's
+// pose is refitted alone with the camera as it stands (pose_fit.h). For a
+// B-spline the knots span [0, r_max], r_max the image's corner radius under
+// the camera (times a margin), placed again once the distortion is known.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "calib/initialise.h"
+#include "calib/options.h"
+#include "calib/problem.h"
+
+namespace ws::calib {
+
+// Everything one camera's solve keeps. The problem points into prepared,
+// inliers and poses: a MonoState is solved in place and not copied after.
+struct MonoState {
+  Prepared prepared;
+  Inliers inliers;          // per view, per corner: used (outliers cleared)
+  std::vector<Pose> poses;  // board -> camera, per view
+  Problem problem;          // the last solve: the camera and its usable views
+  SolveOutcome outcome;
+  std::string init_method;  // PinholeInit::method
+};
+
+// Calibrates the camera of `data` into *state. Throws CalibrationError.
+void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoState* state);
+
+}  // namespace ws::calib

@@ -1,0 +1,20 @@
+// Outlier rejection around a solve: corners that a solved camera misses by
+// far more than the noise it shows are marked (their inlier flag cleared)
+// and the problem solved again.
+#pragma once
+
+#include <string>
+
+#include "calib/options.h"
+#include "calib/problem.h"
+
+namespace ws::calib {
+
+// Solves the problem; with options.outlier_sigma > 0 it then marks each free
+// camera's outliers (MarkOutliers in quality.h) and solves again while new
+// ones appear, at most 3 rounds; last, with options.covariance, the
+// standard deviations.
+SolveOutcome SolveWithRejection(Problem& problem, const CalibrationOptions& options,
+                                const std::string& what);
+
+}  // namespace ws::calib

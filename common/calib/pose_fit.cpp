@@ -1,0 +1,106 @@
+#include "calib/pose_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/calib3d.hpp>
+
+#include "calib/stage_log.h"
+
+namespace ws::calib {
+
+double RefinePose(const CameraBlock& camera, const BoardView& view, const std::vector<char>& mask,
+                  Pose* pose) {
+  const Pose before = *pose;
+  std::vector<char> inliers = mask;
+  Problem one;
+  one.cameras.push_back(camera);
+  one.cameras[0].fixed = true;
+  one.observations.push_back({0, 0, &view, &inliers, pose, false});
+  try {
+    Solve(one, SolveSettings{"pose", 30});
+  } catch (const CalibrationError&) {
+    *pose = before;
+    return std::numeric_limits<double>::infinity();
+  }
+  return Rms(Residuals(one, 0));
+}
+
+std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
+                                       const std::vector<char>& mask) {
+  std::vector<cv::Point3d> object;
+  std::vector<cv::Point2d> ideal;
+  for (int i = 0; i < view.size(); ++i) {
+    if (!mask[i]) continue;
+    const auto xy = IdealPoint(camera, view.image[i]);
+    if (!xy) continue;
+    object.emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+    ideal.emplace_back(xy->x(), xy->y());
+  }
+  std::vector<Pose> out;
+  if (object.size() < 4) return out;
+  std::vector<cv::Mat> rvecs, tvecs;
+  try {
+    cv::solvePnPGeneric(object, ideal, cv::Mat::eye(3, 3, CV_64F), cv::Mat(), rvecs, tvecs, false,
+                        cv::SOLVEPNP_IPPE);
+  } catch (const cv::Exception&) {
+    return out;
+  }
+  for (size_t k = 0; k < rvecs.size(); ++k) {
+    Pose pose;
+    for (int j = 0; j < 3; ++j) {
+      pose.data[j] = rvecs[k].at<double>(j);
+      pose.data[3 + j] = tvecs[k].at<double>(j);
+    }
+    if (pose.AllFinite()) out.push_back(pose);
+  }
+  return out;
+}
+
+std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const Init& init,
+                             const Inliers& mask, bool from_homography,
+                             const CalibrationOptions& options, const std::string& what,
+                             std::vector<Pose>* poses) {
+  const int n = static_cast<int>(p.views.size());
+  std::vector<double> rms(n, -1.0);  // -1: not refitted
+  for (int v = 0; v < n; ++v) {
+    if (!p.usable[v] ||
+        std::count(mask[v].begin(), mask[v].end(), 1) < options.min_points_per_view)
+      continue;
+    Pose pose;
+    if (from_homography && HomographyPose(init, p, v, camera.intrinsics.data(), &pose))
+      (*poses)[v] = pose;
+    rms[v] = RefinePose(camera, p.views[v], mask[v], &(*poses)[v]);
+  }
+  std::vector<double> fitted;
+  for (double r : rms)
+    if (r >= 0 && std::isfinite(r)) fitted.push_back(r);
+  std::vector<bool> good(n, true);
+  if (fitted.empty()) return good;
+  std::nth_element(fitted.begin(), fitted.begin() + fitted.size() / 2, fitted.end());
+  // Corners just outside the disc the camera was fitted on misfit by a few
+  // pixels; a wrong pose by tens.
+  const double bad = std::max(10 * fitted[fitted.size() / 2], 2.0);
+  for (int v = 0; v < n; ++v) {
+    if (!(rms[v] > bad)) continue;
+    std::vector<Pose> starts = PlanarPoseCandidates(camera, p.views[v], mask[v]);
+    Pose pose;
+    if (HomographyPose(init, p, v, camera.intrinsics.data(), &pose)) starts.push_back(pose);
+    for (const Pose& start : starts) {
+      pose = start;
+      const double r = RefinePose(camera, p.views[v], mask[v], &pose);
+      if (r < rms[v]) {
+        rms[v] = r;
+        (*poses)[v] = pose;
+      }
+    }
+    good[v] = rms[v] <= bad;
+    if (!good[v])
+      Say(options, what + ": view " + std::to_string(v) + " fits badly (rms " + Fixed(rms[v], 2) +
+                       " px), left out of this stage");
+  }
+  return good;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,39 @@
+// Board poses fitted one view at a time with the camera held fixed: how the
+// stages of a calibration bring every view's pose up to the camera as it
+// stands, and recover views whose pose fell into the wrong basin.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "calib/camera_block.h"
+#include "calib/initialise.h"
+#include "calib/problem.h"
+
+namespace ws::calib {
+
+// Fits the pose of one view from *pose on the corners of `mask`, the camera
+// fixed; returns the view's RMS, or infinity (and *pose unchanged) when the
+// fit fails.
+double RefinePose(const CameraBlock& camera, const BoardView& view, const std::vector<char>& mask,
+                  Pose* pose);
+
+// Both planar PnP solutions (IPPE) of the view's corners in mask, undistorted
+// by the camera; none when fewer than 4 corners can be undistorted.
+std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
+                                       const std::vector<char>& mask);
+
+// Refits the pose of every usable view with at least min_points_per_view
+// corners in `mask` (from its homography first when from_homography). A
+// board seen obliquely or far off axis has a second, mirrored pose that a
+// local fit can fall into, and a pose fitted to part of a board can put its
+// other corners behind the camera: views fitting ten times worse than the
+// median (and above 2 px) start again from both IPPE solutions and their
+// homography, keeping the best. Returns, per view, false for those that
+// still fit that badly.
+std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& prepared, const Init& init,
+                             const Inliers& mask, bool from_homography,
+                             const CalibrationOptions& options, const std::string& what,
+                             std::vector<Pose>* poses);
+
+}  // namespace ws::calib

@@ -1,0 +1,228 @@
+#include "calib/problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <ceres/ceres.h>
+
+#include "calib/covariance.h"
+#include "calib/residuals.h"
+#include "calib/smoothness_prior.h"
+
+namespace ws::calib {
+namespace {
+
+ceres::LossFunction* MakeLoss(const SolveSettings& settings) {
+  switch (settings.robust_loss) {
+    case RobustLoss::kHuber: return new ceres::HuberLoss(settings.robust_scale_px);
+    case RobustLoss::kCauchy: return new ceres::CauchyLoss(settings.robust_scale_px);
+    case RobustLoss::kNone: break;
+  }
+  return nullptr;
+}
+
+// The Ceres problem of a Problem, and which of its blocks are what.
+struct Built {
+  ceres::Problem ceres;
+  std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
+  int data_residuals = 0;
+  std::vector<double*> poses;        // board poses
+  std::vector<double*> free_blocks;  // fully free camera blocks and the extrinsic
+  std::vector<int> owner;            // per free block: its camera, -1 for the extrinsic
+};
+
+// The inlier corners of an observation as cost functions: one for the view,
+// or one per corner with a robust loss (Ceres applies a loss per block).
+std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem& problem,
+                                                                   const Observation& o,
+                                                                   bool per_corner) {
+  const CameraBlock& camera = problem.cameras[o.camera];
+  std::vector<ViewPoints> groups(1);
+  for (int i = 0; i < o.corners->size(); ++i) {
+    if (!(*o.inliers)[i]) continue;
+    if (per_corner && groups.back().size() > 0) groups.emplace_back();
+    groups.back().Add(o.corners->object[i], o.corners->image[i]);
+  }
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+  if (groups.front().size() == 0) return costs;
+  for (ViewPoints& points : groups) {
+    points.max_radius = camera.max_radius;
+    costs.emplace_back(MakeCost(camera.model, std::move(points), o.via_extrinsic));
+  }
+  return costs;
+}
+
+// Fills `built` from the problem; observations that cannot be evaluated at
+// the current parameters move to problem.left_out.
+void Build(Problem& problem, const SolveSettings& settings, Built* built) {
+  const bool per_corner = settings.robust_loss != RobustLoss::kNone;
+  std::vector<Observation> kept;
+  for (Observation& o : problem.observations) {
+    CameraBlock& camera = problem.cameras[o.camera];
+    std::vector<double*> blocks{camera.intrinsics.data(), camera.coeffs.data(), o.pose->data.data()};
+    if (o.via_extrinsic) blocks.push_back(problem.extrinsic.data.data());
+    auto costs = ObservationCosts(problem, o, per_corner);
+    bool valid = true;
+    for (const auto& cost : costs) {
+      std::vector<double> residuals(cost->num_residuals());
+      valid = valid && cost->Evaluate(blocks.data(), residuals.data(), nullptr);
+    }
+    if (!valid) {
+      problem.left_out.emplace_back(o.camera, o.view);
+      continue;
+    }
+    kept.push_back(o);
+    for (auto& cost : costs) {
+      built->data_residuals += cost->num_residuals();
+      built->data_blocks.push_back(
+          built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
+    }
+    double* pose = o.pose->data.data();
+    if (!costs.empty() && std::find(built->poses.begin(), built->poses.end(), pose) == built->poses.end())
+      built->poses.push_back(pose);
+  }
+  problem.observations = kept;
+  if (built->poses.empty()) throw CalibrationError(settings.what + ": no corners to solve with");
+
+  ceres::Problem& cp = built->ceres;
+  for (size_t c = 0; c < problem.cameras.size(); ++c) {
+    CameraBlock& camera = problem.cameras[c];
+    if (!cp.HasParameterBlock(camera.intrinsics.data())) continue;
+    if (camera.fixed) {
+      cp.SetParameterBlockConstant(camera.intrinsics.data());
+      cp.SetParameterBlockConstant(camera.coeffs.data());
+    } else if (camera.pinhole_only) {
+      cp.SetParameterBlockConstant(camera.coeffs.data());
+      cp.SetManifold(camera.intrinsics.data(), new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
+    } else {
+      AddSmoothnessPrior(cp, camera.model, camera.coeffs.data(), camera.prior_weight);
+      const int n = static_cast<int>(camera.coeffs.size());
+      if (camera.free_coeffs == 0) {
+        cp.SetParameterBlockConstant(camera.coeffs.data());
+      } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {
+        std::vector<int> held;
+        for (int k = camera.free_coeffs; k < n; ++k) held.push_back(k);
+        cp.SetManifold(camera.coeffs.data(), new ceres::SubsetManifold(n, held));
+      }
+      for (double* block : {camera.intrinsics.data(), camera.coeffs.data()}) {
+        built->free_blocks.push_back(block);
+        built->owner.push_back(int(c));
+      }
+    }
+  }
+  double* extrinsic = problem.extrinsic.data.data();
+  if (problem.extrinsic_used && cp.HasParameterBlock(extrinsic)) {
+    if (problem.extrinsic_fixed) {
+      cp.SetParameterBlockConstant(extrinsic);
+    } else {
+      built->free_blocks.push_back(extrinsic);
+      built->owner.push_back(-1);
+    }
+  }
+}
+
+bool SolutionValid(const Problem& problem, const Built& built) {
+  for (const CameraBlock& camera : problem.cameras)
+    if (!AllFinite(camera)) return false;
+  if (!problem.extrinsic.AllFinite()) return false;
+  for (const double* pose : built.poses)
+    for (int k = 0; k < 6; ++k)
+      if (!std::isfinite(pose[k])) return false;
+  return true;
+}
+
+}  // namespace
+
+Pose BoardPose(const Problem& problem, const Observation& o) {
+  if (!o.via_extrinsic) return *o.pose;
+  const Pose& e = problem.extrinsic;
+  return Pose::FromRt(e.R() * o.pose->R(), e.R() * o.pose->t() + e.t());
+}
+
+SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
+  Built built;
+  Build(problem, settings, &built);
+  ceres::Solver::Options options;
+  if (built.free_blocks.empty() && built.poses.size() == 1) {
+    options.linear_solver_type = ceres::DENSE_QR;  // one pose: nothing to eliminate
+  } else {
+    // Schur elimination of the board poses (Ceres's bundle-adjustment layout).
+    auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+    for (double* pose : built.poses) ordering->AddElementToGroup(pose, 0);
+    std::vector<double*> all;
+    built.ceres.GetParameterBlocks(&all);
+    for (double* block : all)
+      if (!ordering->IsMember(block)) ordering->AddElementToGroup(block, 1);
+    options.linear_solver_type = ceres::DENSE_SCHUR;
+    options.linear_solver_ordering = ordering;
+  }
+  options.num_threads = 1;  // the same input gives the same output
+  options.max_num_iterations = settings.max_iterations;
+  options.function_tolerance = 1e-12;
+  options.gradient_tolerance = 1e-14;
+  options.parameter_tolerance = 1e-12;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &built.ceres, &summary);
+  SolveOutcome outcome;
+  outcome.message = summary.BriefReport();
+  if (!summary.IsSolutionUsable() || !std::isfinite(summary.final_cost) ||
+      !SolutionValid(problem, built))
+    throw CalibrationError(settings.what + ": the solver did not reach a valid camera (" +
+                           outcome.message + "); the views may not constrain the model");
+  return outcome;
+}
+
+void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
+  Built built;
+  Build(problem, settings, &built);
+  if (built.free_blocks.empty()) return;
+  // sigma^2 from the data residuals only (the prior is not a measurement).
+  ceres::Problem::EvaluateOptions evaluate;
+  evaluate.num_threads = 1;
+  evaluate.apply_loss_function = false;
+  evaluate.residual_blocks = built.data_blocks;
+  double cost = 0;
+  built.ceres.Evaluate(evaluate, &cost, nullptr, nullptr, nullptr);
+  int free_parameters = 6 * static_cast<int>(built.poses.size());
+  for (double* block : built.free_blocks) free_parameters += built.ceres.ParameterBlockSize(block);
+  const int dof = built.data_residuals - free_parameters;
+  if (dof <= 0) return;
+  const auto covariance = CameraCovariance(built.ceres, built.free_blocks, built.poses, 2 * cost / dof);
+  if (!covariance) return;
+  int offset = 0;
+  for (size_t b = 0; b < built.free_blocks.size(); ++b) {
+    const int size = built.ceres.ParameterBlockSize(built.free_blocks[b]);
+    std::vector<double>& out =
+        built.owner[b] < 0 ? outcome->stddev_extrinsic : outcome->stddev_camera[built.owner[b]];
+    for (int k = 0; k < size; ++k)
+      out.push_back(std::sqrt(std::max(0.0, (*covariance)(offset + k, offset + k))));
+    offset += size;
+  }
+}
+
+std::vector<CornerResidual> Residuals(const Problem& problem, int camera) {
+  std::vector<CornerResidual> out;
+  const CameraBlock& block = problem.cameras[camera];
+  for (const Observation& o : problem.observations) {
+    if (o.camera != camera) continue;
+    const Pose pose = BoardPose(problem, o);
+    const Eigen::Matrix3d R = pose.R();
+    const Eigen::Vector3d t = pose.t();
+    for (int i = 0; i < o.corners->size(); ++i) {
+      const auto pixel = ProjectPoint(block, R * o.corners->object[i] + t);
+      CornerResidual r;
+      r.view = o.view;
+      r.index = i;
+      r.id = o.corners->ids[i];
+      r.observed = o.corners->image[i];
+      r.residual = pixel ? Eigen::Vector2d(*pixel - r.observed) : Eigen::Vector2d(NAN, NAN);
+      r.outlier = !(*o.inliers)[i];
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+}  // namespace ws::calib

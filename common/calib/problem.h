@@ -1,0 +1,76 @@
+// The least-squares problem of paper Eq. 10 over any set of cameras, views
+// and poses, and its solution with Ceres.
+//
+// A Problem holds the cameras (CameraBlock), and one Observation per camera
+// per view: which corners (with an inlier mask) and which board pose. A
+// right camera's observation of a stereo view can take the left camera's
+// board pose through the extrinsic (X_right = R X_left + T). Poses and masks
+// live outside the problem, so the stages of a calibration can share them.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "calib/calib_data.h"
+#include "calib/camera_block.h"
+#include "calib/pose.h"
+#include "calib/quality.h"
+
+namespace ws::calib {
+
+using Inliers = std::vector<std::vector<char>>;  // per view, per corner: 1 = used
+
+struct Observation {
+  int camera = 0;
+  int view = 0;
+  const BoardView* corners = nullptr;
+  std::vector<char>* inliers = nullptr;
+  Pose* pose = nullptr;  // board -> this camera, or board -> left when via_extrinsic
+  bool via_extrinsic = false;
+};
+
+struct Problem {
+  std::vector<CameraBlock> cameras;
+  std::vector<Observation> observations;
+  Pose extrinsic;  // left -> right camera
+  bool extrinsic_used = false;
+  bool extrinsic_fixed = false;
+  std::vector<std::pair<int, int>> left_out;  // (camera, view) that could not be evaluated
+};
+
+struct SolveSettings {
+  std::string what;  // for error messages: "left camera (bspline)"
+  int max_iterations = 100;
+  RobustLoss robust_loss = RobustLoss::kNone;
+  double robust_scale_px = 1.0;
+};
+
+struct SolveOutcome {
+  std::string message;  // Ceres's brief report
+  // Standard deviations of each free camera's intrinsics and coefficients
+  // (ParamNames order) and of the extrinsic (rx ry rz tx ty tz); empty when
+  // not computed or not determined by the data.
+  std::vector<double> stddev_camera[2];
+  std::vector<double> stddev_extrinsic;
+};
+
+// The board -> camera pose of an observation (through the extrinsic for a
+// right camera on the left's pose).
+Pose BoardPose(const Problem& problem, const Observation& observation);
+
+// Solves the problem over the inlier corners, in place. Observations whose
+// corners cannot be projected at the start (behind the camera, past
+// max_radius) are removed from it and listed in left_out. Throws
+// CalibrationError when nothing is left to solve or the solver does not
+// reach a valid camera.
+SolveOutcome Solve(Problem& problem, const SolveSettings& settings);
+
+// The standard deviations of the free parameters at the current solution
+// (covariance.h), into outcome.
+void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome);
+
+// Every corner of camera `camera` with its residual (outliers flagged).
+std::vector<CornerResidual> Residuals(const Problem& problem, int camera);
+
+}  // namespace ws::calib

@@ -1,0 +1,137 @@
+#include "calib/report.h"
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "calib/table2.h"
+
+namespace ws::calib {
+namespace {
+
+nlohmann::json Numbers(const std::vector<double>& values) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double v : values) out.push_back(v);
+  return out;
+}
+
+// Per-view RMS with null for views not used.
+nlohmann::json ViewRmsJson(const std::vector<double>& rms) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double v : rms) out.push_back(v < 0 ? nlohmann::json() : nlohmann::json(v));
+  return out;
+}
+
+const char* FlowName(StereoFlow flow) { return flow == StereoFlow::kJoint ? "joint" : "paper"; }
+
+}  // namespace
+
+nlohmann::json CameraReport(const CameraCalibration& c) {
+  const CameraModel& m = c.model;
+  nlohmann::json j;
+  j["name"] = c.name;
+  j["rms_px"] = c.rms_px;
+  j["views"] = c.views;
+  j["points"] = c.points;
+  j["outliers"] = c.outliers;
+  j["invalid_points"] = c.invalid_points;
+  j["image_size"] = {m.image_width, m.image_height};
+  j["fx"] = m.fx;
+  j["fy"] = m.fy;
+  j["cx"] = m.cx;
+  j["cy"] = m.cy;
+  j["p1"] = m.p1;
+  j["p2"] = m.p2;
+  j["model"] = m.distortion.kind;
+  j["degree"] = m.distortion.degree;
+  if (m.distortion.kind == "bspline") {
+    j["knots"] = Numbers(m.distortion.knots);
+    j["alpha"] = Numbers(m.distortion.coeffs);
+  } else {
+    j["knots"] = nlohmann::json::array();
+    j["k"] = Numbers(m.distortion.coeffs);
+  }
+  nlohmann::json stddev = nlohmann::json::object();
+  for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
+    stddev[c.param_names[i]] = c.stddev[i];
+  j["stddev"] = stddev;
+  j["view_rms"] = ViewRmsJson(c.view_rms);
+  j["skipped"] = c.skipped;
+  j["init_method"] = c.init_method;
+  j["max_observed_radius"] = c.max_observed_radius;
+  const ResidualGrid& g = c.grid;
+  nlohmann::json grid;
+  grid["rows"] = g.rows;
+  grid["cols"] = g.cols;
+  grid["count"] = g.count;
+  std::vector<double> mx, my;
+  for (const auto& v : g.mean) {
+    mx.push_back(v.x());
+    my.push_back(v.y());
+  }
+  grid["mean_x"] = Numbers(mx);
+  grid["mean_y"] = Numbers(my);
+  grid["rms"] = Numbers(g.rms);
+  j["residual_grid"] = grid;
+  return j;
+}
+
+nlohmann::json StereoReport(const StereoCalibration& s) {
+  nlohmann::json j;
+  j["model"] = s.model;
+  j["flow"] = FlowName(s.flow);
+  j["cameras"] = {CameraReport(s.left), CameraReport(s.right)};
+  nlohmann::json stereo;
+  stereo["rms_px"] = s.rms_px;
+  std::vector<double> R, T;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) R.push_back(s.R(r, c));
+    T.push_back(s.T(r));
+  }
+  stereo["R"] = Numbers(R);
+  stereo["T"] = Numbers(T);
+  stereo["baseline_m"] = s.T.norm();
+  stereo["views"] = s.views;
+  stereo["view_rms"] = ViewRmsJson(s.view_rms);
+  nlohmann::json stddev = nlohmann::json::object();
+  for (size_t i = 0; i < s.extrinsic_stddev.size() && i < s.extrinsic_names.size(); ++i)
+    stddev[s.extrinsic_names[i]] = s.extrinsic_stddev[i];
+  stereo["stddev"] = stddev;
+  j["stereo"] = stereo;
+  j["solve_seconds"] = s.solve_seconds;
+  return j;
+}
+
+nlohmann::json ModelsReport(const std::vector<StereoCalibration>& calibrations) {
+  nlohmann::json j;
+  j["models"] = nlohmann::json::array();
+  double seconds = 0;
+  for (const auto& c : calibrations) {
+    j["models"].push_back(StereoReport(c));
+    seconds += c.solve_seconds;
+  }
+  nlohmann::json table = nlohmann::json::array();
+  for (const auto& row : TableRows(calibrations))
+    table.push_back({{"model", row.model},
+                     {"left_rms_px", row.left_rms},
+                     {"right_rms_px", row.right_rms},
+                     {"stereo_rms_px", row.stereo_rms}});
+  j["table_ii"] = table;
+  j["solve_seconds"] = seconds;
+  return j;
+}
+
+void WriteJsonFile(const std::string& path, const nlohmann::json& json) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write " + path);
+    out << json.dump(2) << "\n";
+    if (!out) throw std::runtime_error("cannot write " + path);
+  }
+  std::error_code error;
+  std::filesystem::rename(tmp, path, error);
+  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
+}
+
+}  // namespace ws::calib

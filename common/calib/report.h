@@ -1,0 +1,42 @@
+// The calibration report (--report FILE.json), the contract tools and tests
+// read:
+//
+//   {"model": "bspline",
+//    "cameras": [{"name": "left", "rms_px": 0.11, "views": 30, "points": 1620, "outliers": 0,
+//                 "image_size": [1280, 960], "fx": ..., "fy": ..., "cx": ..., "cy": ...,
+//                 "p1": ..., "p2": ..., "knots": [...], "alpha": [...] (or "k": [...]),
+//                 "stddev": {"fx": ..., ...}, ...}, {"name": "right", ...}],
+//    "stereo": {"rms_px": ..., "R": [9, row-major], "T": [3], "baseline_m": ..., ...},
+//    "solve_seconds": ...}
+//
+// Besides those keys each camera has "degree", "view_rms" (per input view,
+// null where the view was not used), "invalid_points", "skipped",
+// "init_method", "max_observed_radius" and "residual_grid" (rows, cols,
+// count, mean_x, mean_y, rms per cell, row-major); "stereo" has "views",
+// "view_rms" and "stddev" (rx ry rz angle-axis radians, tx ty tz metres),
+// and the top level "flow" ("joint" or "paper").
+// With several models: {"models": [one object as above per model],
+// "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px"}],
+// "solve_seconds": total}.
+// Every number is written so that it reads back bit-identical; only
+// "solve_seconds" differs between runs on the same input.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "calib/calibrate.h"
+
+namespace ws::calib {
+
+nlohmann::json CameraReport(const CameraCalibration& camera);
+nlohmann::json StereoReport(const StereoCalibration& calibration);
+nlohmann::json ModelsReport(const std::vector<StereoCalibration>& calibrations);
+
+// Writes JSON (indented) to a temporary file and renames it; throws
+// std::runtime_error when it cannot.
+void WriteJsonFile(const std::string& path, const nlohmann::json& json);
+
+}  // namespace ws::calib

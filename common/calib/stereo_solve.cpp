@@ -1,0 +1,124 @@
+#include "calib/stereo_solve.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+
+#include "calib/camera_result.h"
+#include "calib/mono_solve.h"
+#include "calib/outliers.h"
+#include "calib/stage_log.h"
+
+namespace ws::calib {
+namespace {
+
+// The mean of the relative poses right * left^-1 of the stereo views:
+// rotation by the chordal mean (SVD of the summed matrices), translation by
+// the per-coordinate median.
+Pose AverageExtrinsic(const std::vector<Pose>& left, const std::vector<Pose>& right) {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  std::vector<double> t[3];
+  for (size_t j = 0; j < left.size(); ++j) {
+    const Eigen::Matrix3d R = right[j].R() * left[j].R().transpose();
+    sum += R;
+    const Eigen::Vector3d T = right[j].t() - R * left[j].t();
+    for (int k = 0; k < 3; ++k) t[k].push_back(T(k));
+  }
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d U = svd.matrixU();
+  if ((U * svd.matrixV().transpose()).determinant() < 0) U.col(2) = -U.col(2);
+  Eigen::Vector3d T;
+  for (int k = 0; k < 3; ++k) {
+    std::sort(t[k].begin(), t[k].end());
+    const size_t n = t[k].size();
+    T(k) = n % 2 ? t[k][n / 2] : 0.5 * (t[k][n / 2 - 1] + t[k][n / 2]);
+  }
+  return Pose::FromRt(U * svd.matrixV().transpose(), T);
+}
+
+}  // namespace
+
+StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options) {
+  if (data.left.views.size() != data.right.views.size())
+    throw CalibrationError("the left and right cameras have different numbers of views");
+  MonoState mono[2];
+  SolveMono(data.left, options, &mono[0]);
+  SolveMono(data.right, options, &mono[1]);
+  StereoCalibration out;
+  out.model = options.model;
+  out.flow = options.flow;
+  for (int c = 0; c < 2; ++c)
+    (c == 0 ? out.left : out.right) =
+        CameraResult(mono[c].problem, 0, mono[c].prepared, mono[c].outcome.stddev_camera[0],
+                     mono[c].init_method, options);
+
+  const int n = data.size();
+  std::vector<bool> is_stereo(n, false);
+  std::vector<Pose> left_poses, right_poses;
+  for (int v = 0; v < n; ++v) {
+    is_stereo[v] = mono[0].prepared.usable[v] && mono[1].prepared.usable[v];
+    if (!is_stereo[v]) continue;
+    left_poses.push_back(mono[0].poses[v]);
+    right_poses.push_back(mono[1].poses[v]);
+  }
+  out.views = static_cast<int>(left_poses.size());
+  if (out.views < options.min_stereo_views)
+    throw CalibrationError("only " + std::to_string(out.views) +
+                           " views where both cameras see the board, at least " +
+                           std::to_string(options.min_stereo_views) +
+                           " needed for R and T (hold the board where both cameras see it)");
+
+  Problem problem;
+  problem.cameras = {mono[0].problem.cameras[0], mono[1].problem.cameras[0]};
+  problem.extrinsic = AverageExtrinsic(left_poses, right_poses);
+  problem.extrinsic_used = true;
+  std::vector<Pose> poses[2] = {mono[0].poses, mono[1].poses};
+  Inliers inliers[2] = {mono[0].inliers, mono[1].inliers};
+  // The stereo views (and with all_views every other usable view), the right
+  // camera of a stereo view on the left's board pose through R, T.
+  auto observe = [&](bool all_views) {
+    problem.observations.clear();
+    for (int v = 0; v < n; ++v) {
+      if (!is_stereo[v] && !all_views) continue;
+      for (int c = 0; c < 2; ++c)
+        if (mono[c].prepared.usable[v])
+          problem.observations.push_back({c, v, &mono[c].prepared.views[v], &inliers[c][v],
+                                          is_stereo[v] ? &poses[0][v] : &poses[c][v],
+                                          c == 1 && is_stereo[v]});
+    }
+  };
+  // R, T with both cameras held: the paper's extrinsic step and the start of
+  // the joint solve (each camera's outliers are already out).
+  observe(false);
+  for (auto& camera : problem.cameras) camera.fixed = true;
+  CalibrationOptions extrinsic_options = options;
+  extrinsic_options.outlier_sigma = 0;
+  SolveOutcome outcome = SolveWithRejection(problem, extrinsic_options, "stereo extrinsics");
+  Say(options, "stereo extrinsics from " + std::to_string(out.views) + " views: baseline " +
+                   Fixed(problem.extrinsic.t().norm(), 5) + " m");
+  if (options.flow == StereoFlow::kJoint) {
+    for (auto& camera : problem.cameras) camera.fixed = false;
+    observe(true);
+    outcome = SolveWithRejection(problem, options, "joint stereo solve");
+    Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
+                     outcome.message + ")");
+    for (int c = 0; c < 2; ++c)
+      (c == 0 ? out.left : out.right) = CameraResult(problem, c, mono[c].prepared,
+                                                     outcome.stddev_camera[c], mono[c].init_method,
+                                                     options);
+  }
+  out.R = problem.extrinsic.R();
+  out.T = problem.extrinsic.t();
+  out.extrinsic_names = {"rx", "ry", "rz", "tx", "ty", "tz"};
+  out.extrinsic_stddev = outcome.stddev_extrinsic;
+
+  // Stereo quality: both cameras' corners of the stereo views.
+  std::vector<CornerResidual> both;
+  for (int c = 0; c < 2; ++c)
+    for (const auto& r : Residuals(problem, c))
+      if (is_stereo[r.view]) both.push_back(r);
+  out.rms_px = Rms(both);
+  out.view_rms = ViewRms(both, n);
+  return out;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,134 @@
+#include "cloud/cloud_node.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "cloud/pcd_io.h"
+#include "lcm_io/channels.h"
+
+namespace ws {
+namespace {
+
+constexpr const char* kProcessName = "stereo-cloud";
+
+std::string Join(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += (text.empty() ? "" : "; ") + line;
+  return text;
+}
+
+// The value of the argument NAME=VALUE, or "".
+std::string Argument(const widestereo::command_t& command, const std::string& name) {
+  for (const std::string& arg : command.args)
+    if (arg.rfind(name + "=", 0) == 0) return arg.substr(name.size() + 1);
+  return "";
+}
+
+// "1167047 points in, 412163 out; plane 1.9996 m, normal (0.0000, 0.0000, -1.0000),
+// inlier RMS 1.10 mm (411950 inliers); 2140 ms"
+std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult& result) {
+  const auto& s = result.stats;
+  double ms = 0;
+  for (double stage_ms : s.stage_ms) ms += stage_ms;
+  char text[256];
+  if (s.plane_found)
+    std::snprintf(text, sizeof text,
+                  "%d points in, %d out; plane %.4f m, normal (%.4f, %.4f, %.4f), inlier RMS %.2f mm "
+                  "(%d inliers); %.0f ms",
+                  in.npoints, result.cloud.npoints, s.plane_offset, s.plane_normal[0], s.plane_normal[1],
+                  s.plane_normal[2], 1000 * s.inlier_rms, s.stage_points.back(), ms);
+  else
+    std::snprintf(text, sizeof text, "%d points in, %d out; no plane; %.0f ms", in.npoints,
+                  result.cloud.npoints, ms);
+  return text;
+}
+
+}  // namespace
+
+CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
+    : process_(process), filter_(filter), save_(std::move(save)) {
+  if (save_.save_every < 0)
+    throw ConfigError("--save-every: must be >= 0, got " + std::to_string(save_.save_every));
+  if (!save_.pcd_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(save_.pcd_dir, error);
+    if (error)
+      throw std::runtime_error("--pcd-dir: cannot create '" + save_.pcd_dir + "': " + error.message());
+  }
+  process_.SetState("filtering");
+}
+
+void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) {
+  CloudFilterResult result = filter_.Run(msg);
+  const std::string frame = "frame " + std::to_string(msg.frame_id);
+  process_.log().Detail(frame + ": " + Summary(msg, result));
+  if (!result.notes.empty()) process_.log().Detail(frame + ": " + Join(result.notes));
+  if (result.cloud.npoints == 0) {
+    process_.Counters(channel::kStereoCloud).dropped++;
+    if (!in_empty_run_)
+      process_.ReportError(frame + ": no usable points in " + std::to_string(msg.npoints) +
+                           (result.notes.empty() ? "" : " (" + Join(result.notes) + ")") +
+                           "; publishing empty clouds until points come back");
+    in_empty_run_ = true;
+  } else {
+    in_empty_run_ = false;
+  }
+  process_.Publish(channel::kStereoCloudFiltered, result.cloud);
+  process_.Publish(channel::kCloudStats, result.stats);
+  ++filtered_;
+  newest_stats_ = result.stats;
+  newest_ = std::move(result.cloud);
+  if (!save_.pcd_dir.empty() && save_.save_every > 0 && filtered_ % save_.save_every == 0) {
+    try {
+      Save(*newest_, PeriodicPath(*newest_));
+    } catch (const std::exception& e) {
+      process_.ReportError(e.what());
+    }
+  }
+}
+
+void CloudNode::OnCommand(const widestereo::command_t& command) {
+  if (!command.target.empty() && command.target != kProcessName) return;
+  if (command.command != "save") {
+    if (command.target.empty()) return;  // meant for another process
+    throw std::invalid_argument("unknown command '" + command.command +
+                                "' (stereo-cloud knows: save [path=FILE.pcd])");
+  }
+  if (!newest_) throw std::runtime_error("save: no cloud has been filtered yet");
+  std::string path = Argument(command, "path");
+  if (path.empty()) {
+    if (save_.pcd_dir.empty())
+      throw std::runtime_error("save: give path=FILE.pcd or run stereo-cloud with --pcd-dir");
+    path = PeriodicPath(*newest_);
+  }
+  Save(*newest_, path);
+}
+
+std::string CloudNode::Progress() const {
+  char line[160];
+  if (!newest_) return "clouds 0";
+  if (newest_stats_.plane_found)
+    std::snprintf(line, sizeof line, "clouds %lld | last %d pts, plane %.3f m, rms %.1f mm | saved %lld",
+                  (long long)filtered_, newest_->npoints, newest_stats_.plane_offset,
+                  1000 * newest_stats_.inlier_rms, (long long)saved_);
+  else
+    std::snprintf(line, sizeof line, "clouds %lld | last %d pts, no plane | saved %lld",
+                  (long long)filtered_, newest_->npoints, (long long)saved_);
+  return line;
+}
+
+std::string CloudNode::PeriodicPath(const widestereo::point_cloud_t& cloud) const {
+  char name[48];
+  std::snprintf(name, sizeof name, "cloud_%06lld.pcd", (long long)cloud.frame_id);
+  return (std::filesystem::path(save_.pcd_dir) / name).string();
+}
+
+void CloudNode::Save(const widestereo::point_cloud_t& cloud, const std::string& path) {
+  WritePcd(path, cloud);
+  ++saved_;
+  process_.log().Info("frame " + std::to_string(cloud.frame_id) + ": " +
+                      std::to_string(cloud.npoints) + " points written to " + path);
+}
+
+}  // namespace ws

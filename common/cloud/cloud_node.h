@@ -1,0 +1,65 @@
+// stereo-cloud's work: runs the filter chain on every cloud of STEREO_CLOUD,
+// publishes the result on STEREO_CLOUD_FILTERED and what each stage did on
+// CLOUD_STATS (one of each per input cloud, empty or not, so that consumers
+// can pair them by frame_id), and writes filtered clouds as PCD files.
+//
+// PCD files: with a pcd_dir, every save_every-th filtered cloud goes to
+// <pcd_dir>/cloud_<frame_id>.pcd. A `save` command on STEREO_COMMAND (target
+// "" or "stereo-cloud") writes the newest filtered cloud to its argument
+// path=FILE.pcd, or else into pcd_dir; with neither it is an error. Commands
+// aimed at other processes, or at all processes but not ours ("solve"), are
+// ignored; an unknown command aimed at stereo-cloud is rejected.
+//
+// Each cloud gets a line in the log file: points in and out, the plane
+// (distance, normal, inlier RMS) or "no plane", the time taken.
+//
+// Counting: a cloud that fails validation is rejected (by Process); a valid
+// cloud from which nothing usable remains (empty, all NaN or out of range,
+// all one point) is published empty and counted as dropped on STEREO_CLOUD,
+// and the first of a run of such clouds is reported as an error. A failed
+// `save` is a rejected STEREO_COMMAND; a failed periodic write is reported.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cloud/cloud_filter.h"
+#include "runtime/process.h"
+#include "widestereo/command_t.hpp"
+#include "widestereo/point_cloud_t.hpp"
+
+namespace ws {
+
+struct CloudSaveConfig {
+  std::string pcd_dir;  // "" : no periodic files; `save` needs path=
+  int save_every = 1;   // with pcd_dir: every N-th filtered cloud (0: only on `save`)
+};
+
+class CloudNode {
+ public:
+  // Creates pcd_dir. Throws ConfigError for an invalid filter config or a
+  // negative save_every, std::runtime_error when pcd_dir cannot be created.
+  CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save);
+
+  void OnCloud(const widestereo::point_cloud_t& msg);
+  // Throws (so Process counts the command as rejected) when a `save` fails.
+  void OnCommand(const widestereo::command_t& command);
+  // "clouds 12 | last 40211 pts, plane 2.003 m, rms 4.1 mm | saved 3"
+  std::string Progress() const;
+
+ private:
+  std::string PeriodicPath(const widestereo::point_cloud_t& cloud) const;
+  void Save(const widestereo::point_cloud_t& cloud, const std::string& path);
+
+  Process& process_;
+  const CloudFilter filter_;
+  const CloudSaveConfig save_;
+  std::optional<widestereo::point_cloud_t> newest_;
+  widestereo::cloud_stats_t newest_stats_{};
+  int64_t filtered_ = 0;
+  int64_t saved_ = 0;
+  bool in_empty_run_ = false;
+};
+
+}  // namespace ws

@@ -1,0 +1,46 @@
+// stereo-cloud: filters every point cloud on STEREO_CLOUD (depth pass-through,
+// voxel grid, outlier removal, RANSAC plane) and publishes the result and
+// per-stage statistics; writes PCD files every N clouds or on a save command.
+#include <cstdio>
+
+#include "cloud/cloud_filter_options.h"
+#include "cloud/cloud_node.h"
+#include "lcm_io/channels.h"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-cloud",
+                     "Filters the point clouds on STEREO_CLOUD with PCL (depth pass-through, voxel "
+                     "grid, statistical outlier removal, RANSAC plane) and publishes "
+                     "STEREO_CLOUD_FILTERED and CLOUD_STATS. Writes PCD files every --save-every "
+                     "clouds into --pcd-dir, and on a 'save [path=FILE.pcd]' command on "
+                     "STEREO_COMMAND.");
+  ws::CloudFilterConfig filter;
+  ws::CloudSaveConfig save;
+  auto& app = cli.app();
+  ws::AddCloudFilterOptions(app, &filter);
+  auto* pcd_dir = app.add_option("--pcd-dir", save.pcd_dir,
+                                 "Folder for PCD files cloud_<frame_id>.pcd (created if needed)");
+  app.add_option("--save-every", save.save_every,
+                 "With --pcd-dir: write every N-th filtered cloud (0: only on save commands)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str()
+      ->needs(pcd_dir);
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    ws::SilencePclConsole();
+    ws::Process process(cli.options());
+    ws::CloudNode node(process, filter, save);
+    process.SetProgress([&] { return node.Progress(); });
+    process.Subscribe<widestereo::point_cloud_t>(
+        ws::channel::kStereoCloud, [&](const auto& msg) { node.OnCloud(msg); }, 2);
+    process.Subscribe<widestereo::command_t>(
+        ws::channel::kStereoCommand, [&](const auto& msg) { node.OnCommand(msg); });
+    return process.Run();
+  } catch (const std::exception& e) {
+    const std::string& config = cli.options().config_file;
+    std::fprintf(stderr, "stereo-cloud: %s%s\n", config.empty() ? "" : (config + ": ").c_str(),
+                 e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,167 @@
+// The calibration file: what the writer puts there reads back bit for bit,
+// OpenCV's own cv::FileStorage reads K, R and T, and every damaged field is
+// reported with the file, the field and the reason.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <opencv2/core.hpp>
+
+#include "calib/calib_file.h"
+#include "calib/synthetic_rig.h"
+#include "test_support.h"
+
+namespace {
+
+using namespace ws;
+using namespace ws::calib;
+
+CalibrationFile SampleFile(const std::string& model) {
+  CalibrationFile f;
+  f.model = model;
+  f.left = model == "bspline" ? MustacheTestCamera(0) : BarrelTestCamera(0);
+  f.right = model == "bspline" ? MustacheTestCamera(1) : BarrelTestCamera(1);
+  f.left_rms = 0.1234;
+  f.right_rms = 0.2345;
+  f.left_views = 30;
+  f.right_views = 28;
+  f.R = Pose{{0.004, -0.012, 0.003, 0, 0, 0}}.R();
+  f.T = {-0.12, 0.0015, 0.002};
+  f.rms = 0.1789;
+  f.views = 27;
+  return f;
+}
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void Spit(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
+  EXPECT_EQ(a.image_width, b.image_width);
+  EXPECT_EQ(a.image_height, b.image_height);
+  EXPECT_EQ(a.Intrinsics(), b.Intrinsics());
+  EXPECT_EQ(a.distortion.kind, b.distortion.kind);
+  EXPECT_EQ(a.distortion.degree, b.distortion.degree);
+  EXPECT_EQ(a.distortion.knots, b.distortion.knots);
+  EXPECT_EQ(a.distortion.coeffs, b.distortion.coeffs);
+}
+
+TEST(CalibFile, EveryModelReadsBackBitForBit) {
+  const std::string dir = test::TempDir("calib-file-roundtrip");
+  for (const std::string model : {"bspline", "poly6"}) {
+    const CalibrationFile written = SampleFile(model);
+    const std::string path = dir + "/" + model + ".yaml";
+    WriteCalibrationFile(path, written);
+    const CalibrationFile read = ReadCalibrationFile(path);
+    EXPECT_EQ(read.model, model);
+    ExpectSameCamera(read.left, written.left);
+    ExpectSameCamera(read.right, written.right);
+    EXPECT_EQ(read.left_rms, written.left_rms);
+    EXPECT_EQ(read.right_views, written.right_views);
+    EXPECT_EQ(read.R, written.R);
+    EXPECT_EQ(read.T, written.T);
+    EXPECT_EQ(read.rms, written.rms);
+    EXPECT_EQ(read.views, written.views);
+  }
+}
+
+TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
+  const std::string path = test::TempDir("calib-file-opencv") + "/calib.yaml";
+  const CalibrationFile f = SampleFile("bspline");
+  WriteCalibrationFile(path, f);
+  cv::FileStorage fs(path, cv::FileStorage::READ);
+  ASSERT_TRUE(fs.isOpened());
+  cv::Mat K, R, T;
+  fs["left"]["camera_matrix"] >> K;
+  fs["stereo"]["R"] >> R;
+  fs["stereo"]["T"] >> T;
+  ASSERT_EQ(K.size(), cv::Size(3, 3));
+  EXPECT_EQ(K.at<double>(0, 0), f.left.fx);
+  EXPECT_EQ(K.at<double>(1, 2), f.left.cy);
+  EXPECT_EQ(R.at<double>(0, 2), f.R(0, 2));
+  EXPECT_EQ(T.at<double>(0), f.T.x());
+  std::vector<double> alpha;
+  fs["right"]["alpha"] >> alpha;
+  EXPECT_EQ(alpha, f.right.distortion.coeffs);
+  EXPECT_EQ(static_cast<std::string>(fs["right"]["model"]), "bspline");
+  EXPECT_EQ(static_cast<double>(fs["stereo"]["baseline_m"]), f.T.norm());
+}
+
+// A valid file's text with `from` replaced by `to` must fail naming `field`.
+struct Damage {
+  std::string from, to, field, reason;
+};
+
+TEST(CalibFile, EachDamagedFieldIsNamed) {
+  const std::string dir = test::TempDir("calib-file-damage");
+  const std::string good = dir + "/good.yaml";
+  WriteCalibrationFile(good, SampleFile("bspline"));
+  const std::string text = Slurp(good);
+  ASSERT_NO_THROW(ReadCalibrationFile(good));
+  const std::vector<Damage> damages = {
+      {"left:\n   image_width: 1280", "left:\n   image_widht: 1280", "left.image_width", "missing"},
+      {"image_height: 960", "image_height: -960", "left.image_height", "below 1"},
+      {"image_height: 960", "image_height: 960.5", "left.image_height", "not an integer"},
+      {"rows: 3\n      cols: 3", "rows: 1\n      cols: 9", "left.camera_matrix", "3x3"},
+      {"   model: bspline\n", "   model: fisheye\n", "left.model", "unknown model"},
+      {"   degree: 3\n", "   degree: 0\n", "left.degree", "below 1"},
+      {"   knots: [ 0., 0., 0., 0.,", "   knots: [ 0., 0., 0., 1.,", "left.knots", "must not decrease"},
+      {"   alpha: [ 0.,", "   alpha: [ .Nan,", "left.alpha[0]", "not finite"},
+      {"   alpha: [ 0.,", "   alpha: [", "left.alpha", "coefficients"},
+      {"   p1: ", "   p1: abc\n   p1_was: ", "left.p1", "not a number"},
+      {"   rms: 1.234", "   rms: -1.234", "left.rms", "negative"},
+      {"right:", "rigth:", "right", "missing"},
+      {"stereo:", "stereo_:", "stereo", "missing"},
+      {"baseline_m: ", "baseline_m: 3.0\n   was: ", "stereo.baseline_m", "differs from |T|"},
+      {"model: bspline\nleft:", "model: poly6\nleft:", "model", "a camera's model is 'bspline'"},
+  };
+  for (const Damage& d : damages) {
+    const size_t at = text.find(d.from);
+    ASSERT_NE(at, std::string::npos) << d.from;
+    std::string damaged = text;
+    damaged.replace(at, d.from.size(), d.to);
+    const std::string path = dir + "/damaged.yaml";
+    Spit(path, damaged);
+    try {
+      ReadCalibrationFile(path);
+      ADD_FAILURE() << "accepted a file with " << d.to;
+    } catch (const CalibrationFileError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(path + ": " + d.field + ": "), std::string::npos) << message;
+      EXPECT_NE(message.find(d.reason), std::string::npos) << message;
+    }
+  }
+}
+
+TEST(CalibFile, RejectsARotationThatIsNot) {
+  const std::string path = test::TempDir("calib-file-rotation") + "/calib.yaml";
+  CalibrationFile f = SampleFile("poly6");
+  f.R(0, 0) *= 1.01;
+  WriteCalibrationFile(path, f);
+  try {
+    ReadCalibrationFile(path);
+    FAIL() << "accepted a stretched R";
+  } catch (const CalibrationFileError& e) {
+    EXPECT_NE(std::string(e.what()).find(": stereo.R: not a rotation"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CalibFile, MissingOrNonYamlFilesSayWhich) {
+  const std::string dir = test::TempDir("calib-file-missing");
+  EXPECT_THROW(ReadCalibrationFile(dir + "/none.yaml"), CalibrationFileError);
+  Spit(dir + "/garbage.yaml", "%YAML:1.0\n---\nleft: [ unclosed\n");
+  try {
+    ReadCalibrationFile(dir + "/garbage.yaml");
+    FAIL() << "accepted garbage";
+  } catch (const CalibrationFileError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir + "/garbage.yaml: "), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace

@@ -1,0 +1,222 @@
+// stereo-cloud as a real process over LCM, log to log: a wall cloud filtered
+// with its plane reported, PCD files every N clouds and on `save`, bad clouds
+// published empty and counted without stalling, commands checked, and bad
+// settings refused with their reason.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <limits>
+#include <set>
+
+#include "cloud/pcd_io.h"
+#include "cloud_test_support.h"
+#include "lcm_io/channels.h"
+#include "test_support.h"
+#include "widestereo/cloud_stats_t.hpp"
+#include "widestereo/command_t.hpp"
+#include "widestereo/process_status_t.hpp"
+
+namespace {
+
+using namespace ws::test;
+using ws::testing::MakeCloud;
+using ws::testing::Point;
+
+widestereo::point_cloud_t Framed(widestereo::point_cloud_t cloud, int64_t frame_id) {
+  cloud.frame_id = frame_id;
+  cloud.utime = 1000000 * frame_id;
+  return cloud;
+}
+
+widestereo::command_t Command(const std::string& command, const std::string& target,
+                              std::vector<std::string> args, int64_t utime) {
+  widestereo::command_t msg{};
+  msg.utime = utime;
+  msg.command = command;
+  msg.target = target;
+  msg.nargs = int32_t(args.size());
+  msg.args = std::move(args);
+  return msg;
+}
+
+// stereo-cloud from the log `dir`/in.lcmlog to `dir`/out.lcmlog.
+CommandResult RunStereoCloud(const std::string& dir, const std::vector<LogEvent>& input,
+                             std::vector<std::string> extra = {}) {
+  WriteLog(dir + "/in.lcmlog", input);
+  std::vector<std::string> argv = {"stereo-cloud", "--log-dir", dir, "--in-url",
+                                   "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                                   "file://" + dir + "/out.lcmlog?mode=w"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return RunCommand(argv, 60);
+}
+
+TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
+  const std::string dir = TempDir("cloud-wall");
+  const std::string saved = dir + "/asked.pcd";
+  const auto wall = ws::testing::NoisyWallScene();
+  const auto r = RunStereoCloud(
+      dir,
+      {Event(ws::channel::kStereoCloud, Framed(wall, 1)),
+       Event(ws::channel::kStereoCommand, Command("save", "", {"path=" + saved}, 1500000)),
+       Event(ws::channel::kStereoCloud, Framed(wall, 2)),
+       Event(ws::channel::kStereoCloud, Framed(wall, 3)),
+       Event(ws::channel::kStereoCloud, Framed(wall, 4))},
+      {"--pcd-dir", dir + "/pcd", "--save-every", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // PCL's console stays quiet (RANSAC and the PCD writer print nothing).
+  EXPECT_EQ(r.output.find("[pcl::"), std::string::npos) << r.output;
+
+  const auto events = ReadLog(dir + "/out.lcmlog");
+  const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloudFiltered);
+  const auto stats = Messages<widestereo::cloud_stats_t>(events, ws::channel::kCloudStats);
+  ASSERT_EQ(clouds.size(), 4u);
+  ASSERT_EQ(stats.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(clouds[i].frame_id, i + 1);
+    EXPECT_EQ(stats[i].frame_id, i + 1);
+    EXPECT_EQ(clouds[i].frame, "left_rectified");
+    ASSERT_TRUE(stats[i].plane_found);
+    EXPECT_NEAR(stats[i].plane_offset, ws::testing::kWallZ, 1e-3);
+    EXPECT_NEAR(stats[i].inlier_rms, ws::testing::kNoiseSigma, 0.05 * ws::testing::kNoiseSigma);
+    EXPECT_EQ(stats[i].stage_points[0], wall.npoints);
+    EXPECT_EQ(clouds[i].npoints, stats[i].stage_points[3]);  // the cloud after outlier removal
+    EXPECT_LT(clouds[i].npoints, wall.npoints);
+  }
+
+  // The save command wrote cloud 1; --save-every 2 wrote clouds 2 and 4.
+  const auto asked = ws::ReadPcd(saved);
+  EXPECT_EQ(asked.npoints, clouds[0].npoints);
+  EXPECT_EQ(asked.xyz, clouds[0].xyz);
+  EXPECT_EQ(asked.intensity, clouds[0].intensity);
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "/pcd"))
+    files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"cloud_000002.pcd", "cloud_000004.pcd"}));
+  EXPECT_EQ(ws::ReadPcd(dir + "/pcd/cloud_000004.pcd").npoints, clouds[3].npoints);
+
+  // A line per cloud in the log file, with its plane.
+  std::ifstream log(dir + "/stereo-cloud.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  char line[64];
+  std::snprintf(line, sizeof line, "frame 4: %d points in, %d out; plane 2.0", wall.npoints, clouds[3].npoints);
+  EXPECT_NE(text.find(line), std::string::npos) << text;
+
+  const auto in = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCloud);
+  EXPECT_EQ(in.received, 4);
+  EXPECT_EQ(in.dropped, 0);
+  EXPECT_EQ(in.rejected, 0);
+}
+
+// Empty, all-NaN and one-point clouds come out as empty clouds (with their
+// stats) and are counted as dropped; a message that does not decode is
+// rejected; the wall after them is filtered as usual, all within seconds.
+TEST(StereoCloudProcess, BadCloudsGiveEmptyResultsCountedWithoutStalling) {
+  const std::string dir = TempDir("cloud-bad");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  LogEvent garbage{ws::channel::kStereoCloud, {1, 2, 3, 4, 5, 6, 7}, 0};
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = RunStereoCloud(
+      dir, {Event(ws::channel::kStereoCloud, Framed(MakeCloud({}), 1)),
+            Event(ws::channel::kStereoCloud,
+                  Framed(MakeCloud(std::vector<Point>(5000, Point{nan, nan, nan})), 2)),
+            Event(ws::channel::kStereoCloud,
+                  Framed(MakeCloud(std::vector<Point>(200000, Point{0.5f, -0.25f, 2})), 3)),
+            garbage,
+            Event(ws::channel::kStereoCloud, Framed(ws::testing::NoisyWallScene(), 4))});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_LT(seconds, 20);
+
+  const auto events = ReadLog(dir + "/out.lcmlog");
+  const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloudFiltered);
+  const auto stats = Messages<widestereo::cloud_stats_t>(events, ws::channel::kCloudStats);
+  ASSERT_EQ(clouds.size(), 4u);
+  ASSERT_EQ(stats.size(), 4u);
+  const int inputs[3] = {0, 5000, 200000};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(clouds[i].npoints, 0) << i;
+    EXPECT_FALSE(stats[i].plane_found) << i;
+    EXPECT_EQ(stats[i].stage_points[0], inputs[i]) << i;
+    EXPECT_EQ(stats[i].stage_points[1], 0) << i;  // nothing passed the pass-through
+  }
+  EXPECT_TRUE(stats[3].plane_found);
+  EXPECT_GT(clouds[3].npoints, 0);
+
+  // One error for the run of empty clouds, naming the first and why.
+  EXPECT_NE(r.output.find("frame 1: no usable points in 0"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("frame 2: no usable points"), std::string::npos) << r.output;
+  const auto c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCloud);
+  EXPECT_EQ(c.received, 5);
+  EXPECT_EQ(c.dropped, 3);
+  EXPECT_EQ(c.rejected, 1);
+  // The one-point cloud is explained in the log file.
+  std::ifstream log(dir + "/stereo-cloud.log");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("frame 3: passthrough: all 200000 points are the one point (0.5, -0.25, 2)"),
+            std::string::npos);
+}
+
+// `save` with nowhere to write, before any cloud, or an unknown command for
+// stereo-cloud are rejected and counted; commands for others are ignored.
+TEST(StereoCloudProcess, CommandsAreCheckedAndCounted) {
+  const std::string dir = TempDir("cloud-commands");
+  // A second apart, so that a PROCESS_STATUS with its last_error follows each.
+  const auto cloud = Framed(MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}), 2);
+  const auto r = RunStereoCloud(
+      dir, {Event(ws::channel::kStereoCommand, Command("save", "", {}, 1000000)),  // no cloud yet
+            Event(ws::channel::kStereoCloud, cloud),
+            Event(ws::channel::kStereoCommand, Command("save", "", {}, 3000000)),  // nowhere
+            Event(ws::channel::kStereoCommand, Command("flush", "stereo-cloud", {}, 4000000)),
+            Event(ws::channel::kStereoCommand, Command("solve", "", {}, 5000000)),
+            Event(ws::channel::kStereoCommand,
+                  Command("save", "stereo-calibrate", {"path=" + dir + "/no.pcd"}, 6000000)),
+            Event(ws::channel::kStereoCommand,
+                  Command("save", "stereo-cloud", {"path=" + dir + "/yes.pcd"}, 7000000))});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::set<std::string> errors;
+  for (const auto& status : Messages<widestereo::process_status_t>(ReadLog(dir + "/out.lcmlog"),
+                                                                  ws::channel::kProcessStatus))
+    errors.insert(status.last_error);
+  EXPECT_EQ(errors, (std::set<std::string>{
+                        "STEREO_COMMAND: save: no cloud has been filtered yet",
+                        "STEREO_COMMAND: save: give path=FILE.pcd or run stereo-cloud with --pcd-dir",
+                        "STEREO_COMMAND: unknown command 'flush' (stereo-cloud knows: save "
+                        "[path=FILE.pcd])"}));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/no.pcd"));
+  EXPECT_EQ(ws::ReadPcd(dir + "/yes.pcd").npoints, 3);
+  const auto c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCommand);
+  EXPECT_EQ(c.received, 6);
+  EXPECT_EQ(c.rejected, 3);
+}
+
+TEST(StereoCloudProcess, BadSettingsAreRefusedWithTheirReason) {
+  const std::string dir = TempDir("cloud-settings");
+  auto run = [&](std::vector<std::string> argv) {
+    argv.insert(argv.begin(), {"stereo-cloud", "--log-dir", dir});
+    return RunCommand(argv, 30);
+  };
+  auto r = run({"--z-min", "2", "--z-max", "1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--z-max: must be greater than --z-min (2), got 1"), std::string::npos)
+      << r.output;
+  r = run({"--save-every", "3"});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--save-every requires --pcd-dir"), std::string::npos) << r.output;
+  std::ofstream(dir + "/bad.yaml") << "voxel-leaf: -1\n";
+  r = run({"--config", dir + "/bad.yaml"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find(dir + "/bad.yaml: --voxel-leaf: must be > 0, got -1"), std::string::npos)
+      << r.output;
+  std::ofstream(dir + "/unknown.yaml") << "voxel-size: 0.01\n";
+  r = run({"--config", dir + "/unknown.yaml"});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("voxel-size"), std::string::npos) << r.output;
+  r = run({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--plane-distance"), std::string::npos);
+}
+
+}  // namespace

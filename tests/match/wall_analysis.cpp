@@ -1,0 +1,106 @@
+#include "wall_analysis.h"
+
+#include <cmath>
+
+#include "models/camera_model.h"
+
+namespace ws::test {
+namespace {
+
+bool Inside(const std::optional<Eigen::Vector2d>& pixel, const CameraModel& model) {
+  return pixel && (*pixel)(0) >= 0 && (*pixel)(1) >= 0 && (*pixel)(0) <= model.image_width - 1 &&
+         (*pixel)(1) <= model.image_height - 1;
+}
+
+}  // namespace
+
+cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const cv::Vec3d& normal,
+                          double offset) {
+  const Camera left(rig.left), right(rig.right);
+  const cv::Vec3d n = rect.R_left * normal;  // the wall in the rectified frame
+  cv::Mat disparity(rect.size, CV_32FC1, cv::Scalar(0));
+  cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
+    for (int v = rows.start; v < rows.end; ++v)
+      for (int u = 0; u < rect.size.width; ++u) {
+        const cv::Vec3d ray((u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1);
+        const double scale = offset / n.dot(ray);
+        if (!(scale > 0)) continue;
+        const cv::Vec3d X = rect.R_left.t() * (ray * scale);  // left camera frame
+        const Eigen::Vector3d Xl(X[0], X[1], X[2]);
+        if (!Inside(left.Project(Xl), rig.left)) continue;
+        if (!Inside(right.Project(rig.R * Xl + rig.T), rig.right)) continue;
+        const double d = rect.f * rect.baseline / scale;
+        if (u - d < 0) continue;
+        disparity.at<float>(v, u) = float(d);
+      }
+  });
+  return disparity;
+}
+
+DisparityErrors CompareDisparity(const cv::Mat& disparity, const cv::Mat& truth) {
+  int overlap = 0, found = 0, bad = 0, close = 0;
+  double sum = 0, sum_squares = 0;
+  for (int v = 0; v < truth.rows; ++v)
+    for (int u = 0; u < truth.cols; ++u) {
+      const float t = truth.at<float>(v, u);
+      if (t <= 0) continue;
+      ++overlap;
+      const float d = disparity.at<float>(v, u);
+      if (!(d > 0)) continue;
+      ++found;
+      const double error = d - t;
+      if (std::abs(error) > 1) {
+        ++bad;
+        continue;
+      }
+      ++close;
+      sum += error;
+      sum_squares += error * error;
+    }
+  DisparityErrors e;
+  e.density = double(found) / std::max(1, overlap);
+  e.bad_rate = double(bad) / std::max(1, found);
+  e.bias = sum / std::max(1, close);
+  e.sigma = std::sqrt(std::max(0.0, sum_squares / std::max(1, close) - e.bias * e.bias));
+  return e;
+}
+
+WallFit MeasureWall(const widestereo::point_cloud_t& cloud, const widestereo::cloud_stats_t& stats,
+                    const Rectification& rect, const cv::Mat& truth, const cv::Vec3d& normal,
+                    double offset, double inlier_distance, int cell) {
+  WallFit fit;
+  const cv::Vec3d fitted(stats.plane_normal[0], stats.plane_normal[1], stats.plane_normal[2]);
+  fit.offset = stats.plane_offset;
+  fit.inlier_rms = stats.inlier_rms;
+  // The true normal faces away from the camera (n . X = offset > 0); the fitted one faces it.
+  fit.tilt_rad = std::acos(std::min(1.0, -fitted.dot(normal)));
+  const int cols = (rect.size.width + cell - 1) / cell, rows = (rect.size.height + cell - 1) / cell;
+  cv::Mat covered(rows, cols, CV_8UC1, cv::Scalar(0));
+  int inliers = 0;
+  double sum_squares = 0;
+  for (const auto& p : cloud.xyz) {
+    const cv::Vec3d X(p[0], p[1], p[2]);
+    const double to_truth = normal.dot(X) - offset;
+    sum_squares += to_truth * to_truth;
+    if (std::abs(fitted.dot(X) + stats.plane_offset) > inlier_distance) continue;
+    ++inliers;
+    const int u = int(std::lround(rect.f * X[0] / X[2] + rect.cx));
+    const int v = int(std::lround(rect.f * X[1] / X[2] + rect.cy));
+    if (u >= 0 && v >= 0 && u < rect.size.width && v < rect.size.height) covered.at<uint8_t>(v / cell, u / cell) = 1;
+  }
+  fit.inlier_fraction = double(inliers) / std::max<size_t>(1, cloud.xyz.size());
+  fit.rms_to_truth = std::sqrt(sum_squares / std::max<size_t>(1, cloud.xyz.size()));
+  int field = 0, hit = 0;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const int u = std::min(c * cell + cell / 2, rect.size.width - 1);
+      const int v = std::min(r * cell + cell / 2, rect.size.height - 1);
+      if (truth.at<float>(v, u) <= 0) continue;
+      ++field;
+      hit += covered.at<uint8_t>(r, c);
+    }
+  fit.coverage = double(hit) / std::max(1, field);
+  return fit;
+}
+
+}  // namespace ws::test
