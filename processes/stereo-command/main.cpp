@@ -1,6 +1,6 @@
 // stereo-command: sends one command on STEREO_COMMAND, e.g.
 //   stereo-command solve                      (stereo-calibrate: solve now)
-//   stereo-command save --target stereo-cloud (write the next cloud as PCD)
+//   stereo-command save --target stereo-cloud (write the newest filtered cloud as PCD)
 #include <cstdio>
 
 #include "lcm_io/channels.h"
