@@ -40,7 +40,7 @@ void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectific
   std::vector<double> pipeline, rectify_match, bare;
   size_t points = 0;
   for (int run = 0; run < runs; ++run) {
-    pipeline.push_back(Milliseconds([&] { points = ws::MatchFrame(rect, ours, config.max_depth, frame).cloud.xyz.size(); }));
+    pipeline.push_back(Milliseconds([&] { points = ws::MatchFrame(rect, ours, config.cloud, frame).cloud.xyz.size(); }));
     rectify_match.push_back(Milliseconds([&] {
       cv::Mat lr, rr;
       ws::RectifyPair(rect, left, right, &lr, &rr);

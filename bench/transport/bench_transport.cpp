@@ -5,8 +5,9 @@
 //  - latency from capture (the pair's utime, this host's clock) to the
 //    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
 //  - every process's drop counters from PROCESS_STATUS.
-// With --prepare DIR it instead writes the simulator's wall and board frames
-// as left*/right* PNG pairs for stereo-capture --source dir:DIR.
+// With --prepare DIR it instead writes the simulator's frames as left*/right*
+// PNG pairs for stereo-capture --source dir:DIR, and the rig's true
+// calibration.yaml for stereo-match.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
 #include "sim/sim_source.h"
+#include "sim/truth_calibration.h"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -37,7 +39,8 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
     cv::imwrite(dir + "/left" + name, pair->left);
     cv::imwrite(dir + "/right" + name, pair->right);
   }
-  std::printf("wrote %d pairs to %s\n", n, dir.c_str());
+  ws::calib::WriteCalibrationFile(dir + "/calibration.yaml", ws::TrueCalibration(source->simulator().Truth()));
+  std::printf("wrote %d pairs and the true calibration.yaml to %s\n", n, dir.c_str());
   return 0;
 }
 

@@ -12,15 +12,16 @@ namespace {
 // The points of rows [begin, end), appended to `cloud` (xyz and, when `gray`
 // is not empty, intensity).
 void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min_disparity,
-                  const cv::Mat& gray, double max_depth, int begin, int end,
+                  const cv::Mat& gray, const CloudSampling& sampling, int begin, int end,
                   widestereo::point_cloud_t* cloud) {
   const double fb = rect.f * rect.baseline;
   for (int v = begin; v < end; ++v) {
+    if (v % sampling.step != 0) continue;
     const float* d = disparity.ptr<float>(v);
-    for (int u = 0; u < disparity.cols; ++u) {
+    for (int u = 0; u < disparity.cols; u += sampling.step) {
       if (!(d[u] >= min_disparity && d[u] > 0)) continue;
       const double z = fb / d[u];
-      if (z > max_depth) continue;
+      if (z > sampling.max_depth) continue;
       cloud->xyz.push_back({float((u - rect.cx) * z / rect.f), float((v - rect.cy) * z / rect.f),
                             float(z)});
       if (!gray.empty()) cloud->intensity.push_back(gray.at<uint8_t>(v, u));
@@ -32,8 +33,8 @@ void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min
 
 widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
                                            float min_disparity, const cv::Mat& intensity,
-                                           double max_depth) {
-  CV_Assert(disparity.type() == CV_32FC1);
+                                           const CloudSampling& sampling) {
+  CV_Assert(disparity.type() == CV_32FC1 && sampling.step >= 1);
   cv::Mat gray;
   if (!intensity.empty()) {
     CV_Assert(intensity.size() == disparity.size() && intensity.depth() == CV_8U);
@@ -50,7 +51,7 @@ widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::
   std::vector<widestereo::point_cloud_t> parts(static_cast<size_t>(bands));
   cv::parallel_for_(cv::Range(0, bands), [&](const cv::Range& range) {
     for (int band = range.start; band < range.end; ++band)
-      RowsToPoints(rect, disparity, min_disparity, gray, max_depth, band * kBandRows,
+      RowsToPoints(rect, disparity, min_disparity, gray, sampling, band * kBandRows,
                    std::min(disparity.rows, (band + 1) * kBandRows), &parts[size_t(band)]);
   });
   widestereo::point_cloud_t cloud;

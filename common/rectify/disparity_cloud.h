@@ -2,6 +2,8 @@
 // (x right, y down, z forward, metres): Z = f b / d, X = (u - cx) Z / f,
 // Y = (v - cy) Z / f. Only valid disparities (>= min_disparity, > 0) with
 // Z <= max_depth become points; OpenCV's "missing" marker never does.
+// step > 1 keeps every step-th pixel of every step-th row: a megapixel
+// frame's full cloud is a 13 MB message, too much for a busy network.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -11,11 +13,16 @@
 
 namespace ws {
 
+struct CloudSampling {
+  double max_depth = 20.0;  // metres; farther points are left out
+  int step = 1;             // pixels between points, in u and in v
+};
+
 inline constexpr const char* kLeftRectifiedFrame = "left_rectified";
 
 // `intensity` (8-bit grey or BGR, the left rectified image) may be empty.
 widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
                                            float min_disparity, const cv::Mat& intensity,
-                                           double max_depth);
+                                           const CloudSampling& sampling);
 
 }  // namespace ws

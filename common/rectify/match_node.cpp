@@ -8,7 +8,7 @@
 
 namespace ws {
 
-MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, const CloudSampling& sampling,
                        const widestereo::stereo_frame_t& frame,
                        const std::string& calibration_source) {
   const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
@@ -29,7 +29,7 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, dou
   d.min_disparity = float(matcher.config().min_disparity);
   d.num_disparities = matcher.config().num_disparities;
   for (int i = 0; i < 16; ++i) d.Q[i] = rect.Q.val[i];
-  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, max_depth);
+  result.cloud = DisparityToCloud(rect, disparity, d.min_disparity, left_rect, sampling);
   result.cloud.utime = frame.utime;
   result.cloud.frame_id = frame.frame_id;
   return result;
@@ -62,7 +62,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  const MatchResult result = MatchFrame(*rect_, matcher_, config_.max_depth, frame, calibration_source_);
+  const MatchResult result = MatchFrame(*rect_, matcher_, config_.cloud, frame, calibration_source_);
   process_.Publish(channel::kStereoDisparity, result.disparity);
   process_.Publish(channel::kStereoCloud, result.cloud);
 }

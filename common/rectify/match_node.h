@@ -18,7 +18,7 @@ namespace ws {
 struct MatchConfig {
   MatcherConfig matcher;
   RectifyOptions rectify;
-  double max_depth = 20.0;  // metres; farther points are left out of the cloud
+  CloudSampling cloud;
 };
 
 struct MatchResult {
@@ -26,11 +26,11 @@ struct MatchResult {
   widestereo::point_cloud_t cloud;
 };
 
-// Rectifies and matches one frame; the cloud keeps points up to max_depth.
+// Rectifies and matches one frame; the cloud is sampled as `sampling` says.
 // Throws std::invalid_argument when the frame's size is not the
 // calibration's; the message names the calibration by `calibration_source`
 // (e.g. its file).
-MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, double max_depth,
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, const CloudSampling& sampling,
                        const widestereo::stereo_frame_t& frame,
                        const std::string& calibration_source = "the calibration");
 

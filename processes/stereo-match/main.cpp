@@ -28,7 +28,12 @@ int main(int argc, char** argv) {
   app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
   app.add_option("--focal-scale", config.rectify.focal_scale,
                  "Rectified focal length over the cameras' smallest (< 1 keeps more field)")->capture_default_str();
-  app.add_option("--max-depth", config.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
+  app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
+  app.add_option("--cloud-step", config.cloud.step,
+                 "Every N-th pixel of every N-th row becomes a cloud point (1: all; 2 makes the "
+                 "message 4x smaller)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 
   try {

@@ -100,6 +100,25 @@ TEST(Rectification, IdentityCalibrationLeavesImagesUntouched) {
   EXPECT_EQ(cv::norm(rr, right, cv::NORM_INF), 0);
 }
 
+TEST(DisparityCloud, StepKeepsEveryNthPixelOfEveryNthRow) {
+  const auto rig = ws::StereoRigFromMessage(IdentityCalibration(64, 48, 100, 0.1));
+  const ws::Rectification rect = ws::BuildRectification(rig);
+  const cv::Mat disparity(48, 64, CV_32FC1, cv::Scalar(10.0f));  // every pixel at Z = 100 * 0.1 / 10 = 1 m
+  const cv::Mat gray(48, 64, CV_8UC1, cv::Scalar(7));
+  const auto full = ws::DisparityToCloud(rect, disparity, 0, gray, {20.0, 1});
+  const auto sparse = ws::DisparityToCloud(rect, disparity, 0, gray, {20.0, 4});
+  ASSERT_EQ(full.npoints, 64 * 48);
+  ASSERT_EQ(sparse.npoints, 16 * 12);
+  EXPECT_EQ(sparse.nintensity, sparse.npoints);
+  for (int i = 0; i < sparse.npoints; ++i) {
+    EXPECT_FLOAT_EQ(sparse.xyz[i][2], 1.0f);
+    const double u = sparse.xyz[i][0] * rect.f + rect.cx, v = sparse.xyz[i][1] * rect.f + rect.cy;
+    EXPECT_NEAR(u, 4 * std::round(u / 4), 1e-3) << "a point between the sampled columns";
+    EXPECT_NEAR(v, 4 * std::round(v / 4), 1e-3) << "a point between the sampled rows";
+  }
+  EXPECT_EQ(ws::DisparityToCloud(rect, disparity, 0, gray, {0.5, 1}).npoints, 0) << "all beyond max_depth";
+}
+
 struct Score {
   double bad_rate;  // of pixels with ground truth and an estimate: |d - gt| > 1 px
   double density;   // of pixels with ground truth: those with an estimate
