@@ -47,9 +47,12 @@ Problem MaskedProblem(const CameraBlock& camera, MonoState* s, Inliers* mask, in
 }
 
 // How far the model's field must reach: the ideal radius of the image's
-// corners under the camera (not more than 1.5 times the next figure, since
-// a curve known only on a disc extrapolates), and of every corner in `mask`
-// under its view's pose; times options.r_max_margin.
+// corners under the camera (where the camera cannot invert them yet, their
+// distorted radius; not more than 1.5 times the next figure, since a curve
+// known only on a disc extrapolates), and of every corner in `mask` under
+// its view's pose; times options.r_max_margin. A B-spline is only tame
+// (the prior's work) up to its last knot: past it the last cubic piece
+// continues.
 double FieldRadius(const CameraBlock& camera, const Prepared& p, const Inliers& mask,
                    const std::vector<Pose>& poses, const CalibrationOptions& options) {
   double observed = 0;
@@ -59,7 +62,12 @@ double FieldRadius(const CameraBlock& camera, const Prepared& p, const Inliers& 
       const Eigen::Vector3d X = poses[v] * p.views[v].object[i];
       if (X.z() > 0) observed = std::max(observed, X.head<2>().norm() / X.z());
     }
-  const double corners = ImageCornerRadius(camera, p.width, p.height, observed);
+  const double* in = camera.intrinsics.data();
+  double distorted = 0;
+  for (double u : {-0.5, p.width - 0.5})
+    for (double v : {-0.5, p.height - 0.5})
+      distorted = std::max(distorted, std::hypot((u - in[kCx]) / in[kFx], (v - in[kCy]) / in[kFy]));
+  const double corners = ImageCornerRadius(camera, p.width, p.height, distorted);
   return std::max(observed, std::min(corners, 1.5 * observed)) * options.r_max_margin;
 }
 
