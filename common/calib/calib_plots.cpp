@@ -21,18 +21,6 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
 
 }  // namespace
 
-double ImageCornerIdealRadius(const CameraModel& model) {
-  const Camera camera(model);
-  double r = 0;
-  for (double u : {-0.5, model.image_width - 0.5})
-    for (double v : {-0.5, model.image_height - 0.5}) {
-      const auto ray = camera.Unproject(Eigen::Vector2d(u, v));
-      if (!ray) continue;
-      r = std::max(r, ray->head<2>().norm() / ray->z());
-    }
-  return r;
-}
-
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
                               const std::string& png_path,
                               const std::vector<ReferenceCurve>& references) {
@@ -43,12 +31,16 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
         figure.panels.emplace_back(name + " camera", "ideal radius r = |(X/Z, Y/Z)|", "D(r) [%]");
     panel.zero_line = true;
     panel.legend = "bottom left";
+    // To the end of the B-spline's knots (which the calibration puts at
+    // the image's corners), else a fifth past the largest observed radius.
     double r_end = 0, r_seen = 0;
     for (const auto& c : calibrations) {
-      r_end = std::max(r_end, ImageCornerIdealRadius(Side(c, side).model));
+      const Distortion& d = Side(c, side).model.distortion;
+      if (!d.knots.empty()) r_end = std::max(r_end, d.knots.back());
       r_seen = std::max(r_seen, Side(c, side).max_observed_radius);
     }
-    if (!(r_end > 0)) r_end = std::max(1.0, r_seen * 1.1);
+    if (!(r_end > r_seen)) r_end = 1.2 * r_seen;
+    if (!(r_end > 0)) r_end = 1.0;
     double lo = 0, hi = 0;
     auto curve = [&](const CameraModel& model, const std::string& title) {
       const Camera camera(model);

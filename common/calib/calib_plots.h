@@ -30,8 +30,4 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
 void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
                          const std::string& png_path);
 
-// The ideal radius of the image corner farthest from the principal point
-// (the end of the curve plots); 0 when the model cannot be inverted there.
-double ImageCornerIdealRadius(const CameraModel& model);
-
 }  // namespace ws::calib

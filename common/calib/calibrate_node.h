@@ -1,9 +1,9 @@
 // The stereo-calibrate process's behaviour, on a ws::Process:
 //
 //  - STEREO_CORNERS: each message becomes a stereo view unless it is a near
-//    duplicate of one it has (CalibrationSession), saved to --state.
-//  - STEREO_COMMAND (target "" or the process's name):
-//      "solve"  [model=bspline|poly6|poly12|all] [knots=N]: solve the views so far
+//    duplicate of one it has (CalibrationSession), kept in the state file.
+//  - STEREO_COMMAND (target "" or "stereo-calibrate"):
+//      "solve" [model=bspline|poly6|poly12|all] [knots=N]: solve the views so far
 //      "reset"  forget every view (and empty the state file)
 //      "save"   [path=FILE.yaml] [report=FILE.json]: write the last solution again
 //  - CALIBRATION_STATUS every second of the process clock (the message clock
@@ -14,8 +14,8 @@
 //    calibration file (--out), the report (--report), the figures
 //    (--plot-dir: distortion_curves.png, residual_map.png) and, with several
 //    models, Table II on the terminal and in the log.
-//  - --once: solve when a file:// input ends (or after the first solve
-//    command live), then exit; exit code 1 when that solve fails.
+//  - --once: solve when a file:// input ends (or at the first solve command),
+//    then exit; exit code 1 when that solve or writing its files fails.
 //
 // Replaying a log, solves run in the message handler, so the same log gives
 // the same output; live they run on a worker thread so that the status keeps
@@ -23,7 +23,6 @@
 #pragma once
 
 #include <atomic>
-#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -47,16 +46,6 @@ struct NodeOptions {
 // "all" -> every registered kind; else the one kind (checked).
 std::vector<std::string> ParseModelList(const std::string& spec);
 
-// Solves the data with every model of `models` (in order) and writes the
-// outputs asked for; returns the results. Throws CalibrationError (bad
-// data) or std::runtime_error (cannot write).
-std::vector<StereoCalibration> SolveAndWrite(const StereoData& data,
-                                             const std::vector<std::string>& models,
-                                             const CalibrationOptions& options,
-                                             const std::string& out_yaml,
-                                             const std::string& report_json,
-                                             const std::string& plot_dir);
-
 class CalibrateNode {
  public:
   CalibrateNode(Process& process, NodeOptions options);
@@ -69,10 +58,14 @@ class CalibrateNode {
   void OnCorners(const widestereo::stereo_corners_t& msg);
   void OnCommand(const widestereo::command_t& msg);
   void PublishStatus();
-  void Solve(std::vector<std::string> models, CalibrationOptions options, bool exit_after);
-  // Runs one solve; false (after reporting) when it failed.
+  void Solve(std::vector<std::string> models, CalibrationOptions options);
+  // Solves and writes every output; false (after reporting why) when the
+  // solve or writing the calibration file or report failed.
   bool SolveNow(const StereoData& data, const std::vector<std::string>& models,
                 const CalibrationOptions& options);
+  // The calibration file and report of `results`; throws when one cannot be written.
+  void WriteFiles(const std::vector<StereoCalibration>& results, const std::string& yaml,
+                  const std::string& json);
   void SetState(const std::string& state, double rms);
 
   Process& process_;
@@ -84,7 +77,6 @@ class CalibrateNode {
   std::vector<StereoCalibration> last_;
   std::atomic<bool> solving_{false};
   std::thread worker_;
-  int accepted_ = 0, duplicates_ = 0, rejected_ = 0;
 };
 
 }  // namespace ws::calib

@@ -46,6 +46,37 @@ Problem MaskedProblem(const CameraBlock& camera, MonoState* s, Inliers* mask, in
   return problem;
 }
 
+// How far the model's field must reach: the ideal radius of the image's
+// corners under the camera (where the camera cannot invert them yet, their
+// distorted radius; not more than 1.5 times the next figure, since a curve
+// known only on a disc extrapolates), and of every corner in `mask` under
+// its view's pose; times options.r_max_margin. A B-spline is only tame
+// (the prior's work) up to its last knot: past it the last cubic piece
+// continues.
+double FieldRadius(const CameraBlock& camera, const Prepared& p, const Inliers& mask,
+                   const std::vector<Pose>& poses, const CalibrationOptions& options) {
+  double observed = 0;
+  for (size_t v = 0; v < p.views.size(); ++v)
+    for (int i = 0; i < p.views[v].size() && p.usable[v]; ++i) {
+      if (!mask[v][i]) continue;
+      const Eigen::Vector3d X = poses[v] * p.views[v].object[i];
+      if (X.z() > 0) observed = std::max(observed, X.head<2>().norm() / X.z());
+    }
+  const double* in = camera.intrinsics.data();
+  double distorted = 0;
+  for (double u : {-0.5, p.width - 0.5})
+    for (double v : {-0.5, p.height - 0.5})
+      distorted = std::max(distorted, std::hypot((u - in[kCx]) / in[kFx], (v - in[kCy]) / in[kFy]));
+  const double corners = ImageCornerRadius(camera, p.width, p.height, distorted);
+  return std::max(observed, std::min(corners, 1.5 * observed)) * options.r_max_margin;
+}
+
+// Clears the mask of the views RefitPoses found bad: they sit out a stage.
+void DropBadViews(const std::vector<bool>& good, Inliers* mask) {
+  for (size_t v = 0; v < mask->size(); ++v)
+    if (!good[v]) std::fill((*mask)[v].begin(), (*mask)[v].end(), 0);
+}
+
 SolveSettings StageSettings(const CalibrationOptions& options, const std::string& what,
                             int max_iterations) {
   return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
@@ -81,31 +112,40 @@ void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoSt
   double fraction = 0.25;
   while (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views && !everything)
     fraction *= 1.4;
-  {
+  // Poses from Zhang's K can be far off for a strongly distorted lens: the
+  // fit alternates with refitting each view's pose, while that helps.
+  for (double previous = INFINITY;;) {
     Problem stage = MaskedProblem(pinhole, s, &disc, min_points);
     Solve(stage, StageSettings(options, what + " pinhole start", 50));
     pinhole = stage.cameras[0];
+    const double rms = Rms(Residuals(stage, 0));
     Say(options, what + ": pinhole fit of " + std::to_string(stage.observations.size()) +
-                     " views within " + Fixed(fraction, 2) + " of the half-diagonal" + ": rms " +
-                     Fixed(Rms(Residuals(stage, 0))) + " px, fx " + Fixed(pinhole.intrinsics[kFx], 2));
+                     " views within " + Fixed(fraction, 2) + " of the half-diagonal: rms " +
+                     Fixed(rms) + " px, fx " + Fixed(pinhole.intrinsics[kFx], 2));
+    if (!(rms < 0.9 * previous)) break;
+    previous = rms;
+    DropBadViews(RefitPoses(pinhole, p, init, disc, false, options, what, &s->poses), &disc);
   }
   RefitPoses(pinhole, p, init, s->inliers, true, options, what, &s->poses);
 
-  // The full model on growing discs, its knots over the image as the
-  // pinhole sees it. A polynomial's coefficients are global, and the high
-  // orders fitted to a small disc explode outside it: one more of them is
-  // freed with each disc.
-  const double r_max = ImageCornerRadius(pinhole, p.width, p.height, 1.0) * options.r_max_margin;
+  // The full model on growing discs, its field (the B-spline's knots) over
+  // the image as the camera sees it, grown with the discs. A polynomial's
+  // coefficients are global, and the high orders fitted to a small disc
+  // explode outside it: one more of them is freed with each disc.
+  double r_max = ImageCornerRadius(pinhole, p.width, p.height, 1.0) * options.r_max_margin;
   CameraBlock camera = ForField(pinhole, options, r_max);
+  auto cover = [&](const Inliers& mask) {
+    const double needed = FieldRadius(camera, p, mask, s->poses, options);
+    if (!(needed > 1.05 * r_max)) return;
+    r_max = needed;
+    camera = ForField(camera, options, r_max);
+  };
   const bool global_coeffs = !std::holds_alternative<BsplineDistortion>(camera.model);
-  for (int stage = 1; ; ++stage) {
+  for (int stage = 1; !everything; ++stage) {
     fraction *= 1.4;
-    if (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views ||
-        everything)
-      break;
-    const std::vector<bool> good = RefitPoses(camera, p, init, disc, false, options, what, &s->poses);
-    for (size_t v = 0; v < disc.size(); ++v)
-      if (!good[v]) std::fill(disc[v].begin(), disc[v].end(), 0);
+    MarkDisc(pinhole, p, fraction, min_points, &disc, &everything);
+    DropBadViews(RefitPoses(camera, p, init, disc, false, options, what, &s->poses), &disc);
+    cover(disc);
     camera.free_coeffs = global_coeffs ? stage : -1;
     Problem stage_problem = MaskedProblem(camera, s, &disc, min_points);
     Solve(stage_problem,
@@ -114,27 +154,27 @@ void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoSt
     Say(options, what + ": " + std::to_string(stage_problem.observations.size()) + " views within " +
                      Fixed(fraction, 2) + " of the half-diagonal: rms " +
                      Fixed(Rms(Residuals(stage_problem, 0))) + " px, fx " +
-                     Fixed(camera.intrinsics[kFx], 2));
+                     Fixed(camera.intrinsics[kFx], 2) + ", r_max " + Fixed(r_max, 3));
   }
   camera.free_coeffs = -1;
 
-  // Every corner.
+  // Every corner, without the views that still fit badly.
   const std::vector<bool> good = RefitPoses(camera, p, init, s->inliers, false, options, what, &s->poses);
   for (size_t v = 0; v < good.size(); ++v)
     if (!good[v]) p.Skip(int(v), "no board pose fits its corners (a mirrored or partial view?)");
   RequireViews(p, options.min_views);
+  cover(s->inliers);
   SolveAll(camera, options, what, s);
   Say(options, what + ": r_max " + Fixed(r_max, 3) + ", rms " +
                    Fixed(Rms(Residuals(s->problem, 0))) + " px (" + s->outcome.message + ")");
 
-  // The knots again over the image as the solved model sees it, if that
-  // differs by more than 5 %.
-  if (Kind(camera) != BsplineDistortion::Kind()) return;
+  // The field once more as the solved camera sees it, if that differs by
+  // more than 5 %.
   const CameraBlock& solved = s->problem.cameras[0];
-  const double r_image = ImageCornerRadius(solved, p.width, p.height, 0.0) * options.r_max_margin;
-  if (r_image > 0 && std::abs(r_image - r_max) > 0.05 * r_max) {
-    SolveAll(ForField(solved, options, r_image), options, what, s);
-    Say(options, what + ": knots moved to r_max " + Fixed(r_image, 3) + ", rms " +
+  const double needed = FieldRadius(solved, p, s->inliers, s->poses, options);
+  if (std::abs(needed - r_max) > 0.05 * r_max) {
+    SolveAll(ForField(solved, options, needed), options, what, s);
+    Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
 }

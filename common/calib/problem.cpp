@@ -1,6 +1,7 @@
 #include "calib/problem.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <memory>
 
@@ -22,8 +23,45 @@ ceres::LossFunction* MakeLoss(const SolveSettings& settings) {
   return nullptr;
 }
 
-// The Ceres problem of a Problem, and which of its blocks are what.
+// Every parameter block of a solve copied into one buffer in a fixed order
+// (cameras, extrinsic, poses in the order of the observations). Ceres orders
+// blocks by their address in places (the Schur elimination groups), so
+// blocks scattered over the heap would make the summation order, and the
+// last bits of the solution, differ from run to run.
+class ParameterArena {
+ public:
+  explicit ParameterArena(Problem& problem) {
+    auto add = [&](double* block, int size) {
+      if (index_.count(block)) return;
+      index_[block] = values_.size();
+      blocks_.emplace_back(block, size);
+      values_.insert(values_.end(), block, block + size);
+    };
+    for (CameraBlock& camera : problem.cameras) {
+      add(camera.intrinsics.data(), kNumIntrinsics);
+      add(camera.coeffs.data(), static_cast<int>(camera.coeffs.size()));
+    }
+    add(problem.extrinsic.data.data(), 6);
+    for (Observation& o : problem.observations) add(o.pose->data.data(), 6);
+  }
+  double* operator[](double* block) { return values_.data() + index_.at(block); }
+  // The solved values back into the problem's own blocks.
+  void CopyBack() const {
+    for (const auto& [block, size] : blocks_)
+      std::copy_n(values_.data() + index_.at(block), size, block);
+  }
+
+ private:
+  std::vector<double> values_;
+  std::map<double*, size_t> index_;
+  std::vector<std::pair<double*, int>> blocks_;
+};
+
+// The Ceres problem of a Problem, and which of its blocks are what (arena
+// pointers).
 struct Built {
+  explicit Built(Problem& problem) : arena(problem) {}
+  ParameterArena arena;
   ceres::Problem ceres;
   std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
   int data_residuals = 0;
@@ -58,10 +96,12 @@ std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem
 void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   const bool per_corner = settings.robust_loss != RobustLoss::kNone;
   std::vector<Observation> kept;
+  ParameterArena& arena = built->arena;
   for (Observation& o : problem.observations) {
     CameraBlock& camera = problem.cameras[o.camera];
-    std::vector<double*> blocks{camera.intrinsics.data(), camera.coeffs.data(), o.pose->data.data()};
-    if (o.via_extrinsic) blocks.push_back(problem.extrinsic.data.data());
+    std::vector<double*> blocks{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
+                                arena[o.pose->data.data()]};
+    if (o.via_extrinsic) blocks.push_back(arena[problem.extrinsic.data.data()]);
     auto costs = ObservationCosts(problem, o, per_corner);
     bool valid = true;
     for (const auto& cost : costs) {
@@ -78,7 +118,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       built->data_blocks.push_back(
           built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
     }
-    double* pose = o.pose->data.data();
+    double* pose = arena[o.pose->data.data()];
     if (!costs.empty() && std::find(built->poses.begin(), built->poses.end(), pose) == built->poses.end())
       built->poses.push_back(pose);
   }
@@ -88,30 +128,32 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   ceres::Problem& cp = built->ceres;
   for (size_t c = 0; c < problem.cameras.size(); ++c) {
     CameraBlock& camera = problem.cameras[c];
-    if (!cp.HasParameterBlock(camera.intrinsics.data())) continue;
+    double* intrinsics = arena[camera.intrinsics.data()];
+    double* coeffs = arena[camera.coeffs.data()];
+    if (!cp.HasParameterBlock(intrinsics)) continue;
     if (camera.fixed) {
-      cp.SetParameterBlockConstant(camera.intrinsics.data());
-      cp.SetParameterBlockConstant(camera.coeffs.data());
+      cp.SetParameterBlockConstant(intrinsics);
+      cp.SetParameterBlockConstant(coeffs);
     } else if (camera.pinhole_only) {
-      cp.SetParameterBlockConstant(camera.coeffs.data());
-      cp.SetManifold(camera.intrinsics.data(), new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
+      cp.SetParameterBlockConstant(coeffs);
+      cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
     } else {
-      AddSmoothnessPrior(cp, camera.model, camera.coeffs.data(), camera.prior_weight);
+      AddSmoothnessPrior(cp, camera.model, coeffs, camera.prior_weight);
       const int n = static_cast<int>(camera.coeffs.size());
       if (camera.free_coeffs == 0) {
-        cp.SetParameterBlockConstant(camera.coeffs.data());
+        cp.SetParameterBlockConstant(coeffs);
       } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {
         std::vector<int> held;
         for (int k = camera.free_coeffs; k < n; ++k) held.push_back(k);
-        cp.SetManifold(camera.coeffs.data(), new ceres::SubsetManifold(n, held));
+        cp.SetManifold(coeffs, new ceres::SubsetManifold(n, held));
       }
-      for (double* block : {camera.intrinsics.data(), camera.coeffs.data()}) {
+      for (double* block : {intrinsics, coeffs}) {
         built->free_blocks.push_back(block);
         built->owner.push_back(int(c));
       }
     }
   }
-  double* extrinsic = problem.extrinsic.data.data();
+  double* extrinsic = arena[problem.extrinsic.data.data()];
   if (problem.extrinsic_used && cp.HasParameterBlock(extrinsic)) {
     if (problem.extrinsic_fixed) {
       cp.SetParameterBlockConstant(extrinsic);
@@ -122,13 +164,12 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   }
 }
 
-bool SolutionValid(const Problem& problem, const Built& built) {
+bool SolutionValid(const Problem& problem) {
   for (const CameraBlock& camera : problem.cameras)
     if (!AllFinite(camera)) return false;
   if (!problem.extrinsic.AllFinite()) return false;
-  for (const double* pose : built.poses)
-    for (int k = 0; k < 6; ++k)
-      if (!std::isfinite(pose[k])) return false;
+  for (const Observation& o : problem.observations)
+    if (!o.pose->AllFinite()) return false;
   return true;
 }
 
@@ -141,7 +182,7 @@ Pose BoardPose(const Problem& problem, const Observation& o) {
 }
 
 SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
-  Built built;
+  Built built(problem);
   Build(problem, settings, &built);
   ceres::Solver::Options options;
   if (built.free_blocks.empty() && built.poses.size() == 1) {
@@ -165,17 +206,17 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &built.ceres, &summary);
+  built.arena.CopyBack();
   SolveOutcome outcome;
   outcome.message = summary.BriefReport();
-  if (!summary.IsSolutionUsable() || !std::isfinite(summary.final_cost) ||
-      !SolutionValid(problem, built))
+  if (!summary.IsSolutionUsable() || !std::isfinite(summary.final_cost) || !SolutionValid(problem))
     throw CalibrationError(settings.what + ": the solver did not reach a valid camera (" +
                            outcome.message + "); the views may not constrain the model");
   return outcome;
 }
 
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
-  Built built;
+  Built built(problem);
   Build(problem, settings, &built);
   if (built.free_blocks.empty()) return;
   // sigma^2 from the data residuals only (the prior is not a measurement).

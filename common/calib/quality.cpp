@@ -83,13 +83,13 @@ double RobustSigma(const std::vector<CornerResidual>& residuals) {
 
 int MarkOutliers(std::vector<CornerResidual>& residuals, double sigma_factor, double min_px) {
   const double threshold = std::max(sigma_factor * RobustSigma(residuals), min_px);
-  int marked = 0;
-  for (auto& r : residuals)
-    if (!r.outlier && !(r.residual.norm() <= threshold)) {
-      r.outlier = true;
-      ++marked;
-    }
-  return marked;
+  int changed = 0;
+  for (auto& r : residuals) {
+    const bool outlier = !(r.residual.norm() <= threshold);
+    changed += outlier != r.outlier;
+    r.outlier = outlier;
+  }
+  return changed;
 }
 
 }  // namespace ws::calib

@@ -43,8 +43,9 @@ ResidualGrid MakeResidualGrid(const std::vector<CornerResidual>& residuals, int 
 // residual norms have the inliers' median (median |e| = 1.1774 sigma).
 double RobustSigma(const std::vector<CornerResidual>& residuals);
 
-// Marks as outliers the inliers whose |residual| exceeds
-// max(sigma_factor * RobustSigma, min_px); returns how many it marked.
+// Decides every corner anew, previous outliers included: an outlier when its
+// |residual| exceeds max(sigma_factor * RobustSigma of the current inliers,
+// min_px). Returns how many flags changed.
 int MarkOutliers(std::vector<CornerResidual>& residuals, double sigma_factor, double min_px);
 
 }  // namespace ws::calib

@@ -9,16 +9,16 @@
 namespace ws::calib {
 namespace {
 
-nlohmann::json Numbers(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
+Json Numbers(const std::vector<double>& values) {
+  Json out = Json::array();
   for (double v : values) out.push_back(v);
   return out;
 }
 
 // Per-view RMS with null for views not used.
-nlohmann::json ViewRmsJson(const std::vector<double>& rms) {
-  nlohmann::json out = nlohmann::json::array();
-  for (double v : rms) out.push_back(v < 0 ? nlohmann::json() : nlohmann::json(v));
+Json ViewRmsJson(const std::vector<double>& rms) {
+  Json out = Json::array();
+  for (double v : rms) out.push_back(v < 0 ? Json() : Json(v));
   return out;
 }
 
@@ -26,15 +26,14 @@ const char* FlowName(StereoFlow flow) { return flow == StereoFlow::kJoint ? "joi
 
 }  // namespace
 
-nlohmann::json CameraReport(const CameraCalibration& c) {
+Json CameraReport(const CameraCalibration& c) {
   const CameraModel& m = c.model;
-  nlohmann::json j;
+  Json j;
   j["name"] = c.name;
   j["rms_px"] = c.rms_px;
   j["views"] = c.views;
   j["points"] = c.points;
   j["outliers"] = c.outliers;
-  j["invalid_points"] = c.invalid_points;
   j["image_size"] = {m.image_width, m.image_height};
   j["fx"] = m.fx;
   j["fy"] = m.fy;
@@ -42,25 +41,21 @@ nlohmann::json CameraReport(const CameraCalibration& c) {
   j["cy"] = m.cy;
   j["p1"] = m.p1;
   j["p2"] = m.p2;
-  j["model"] = m.distortion.kind;
-  j["degree"] = m.distortion.degree;
-  if (m.distortion.kind == "bspline") {
-    j["knots"] = Numbers(m.distortion.knots);
-    j["alpha"] = Numbers(m.distortion.coeffs);
-  } else {
-    j["knots"] = nlohmann::json::array();
-    j["k"] = Numbers(m.distortion.coeffs);
-  }
-  nlohmann::json stddev = nlohmann::json::object();
+  j["knots"] = Numbers(m.distortion.knots);
+  j[m.distortion.kind == "bspline" ? "alpha" : "k"] = Numbers(m.distortion.coeffs);
+  Json stddev = Json::object();
   for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
     stddev[c.param_names[i]] = c.stddev[i];
   j["stddev"] = stddev;
+  j["model"] = m.distortion.kind;
+  j["degree"] = m.distortion.degree;
+  j["invalid_points"] = c.invalid_points;
   j["view_rms"] = ViewRmsJson(c.view_rms);
   j["skipped"] = c.skipped;
   j["init_method"] = c.init_method;
   j["max_observed_radius"] = c.max_observed_radius;
   const ResidualGrid& g = c.grid;
-  nlohmann::json grid;
+  Json grid;
   grid["rows"] = g.rows;
   grid["cols"] = g.cols;
   grid["count"] = g.count;
@@ -76,12 +71,11 @@ nlohmann::json CameraReport(const CameraCalibration& c) {
   return j;
 }
 
-nlohmann::json StereoReport(const StereoCalibration& s) {
-  nlohmann::json j;
+Json StereoReport(const StereoCalibration& s) {
+  Json j;
   j["model"] = s.model;
-  j["flow"] = FlowName(s.flow);
   j["cameras"] = {CameraReport(s.left), CameraReport(s.right)};
-  nlohmann::json stereo;
+  Json stereo;
   stereo["rms_px"] = s.rms_px;
   std::vector<double> R, T;
   for (int r = 0; r < 3; ++r) {
@@ -93,24 +87,25 @@ nlohmann::json StereoReport(const StereoCalibration& s) {
   stereo["baseline_m"] = s.T.norm();
   stereo["views"] = s.views;
   stereo["view_rms"] = ViewRmsJson(s.view_rms);
-  nlohmann::json stddev = nlohmann::json::object();
+  Json stddev = Json::object();
   for (size_t i = 0; i < s.extrinsic_stddev.size() && i < s.extrinsic_names.size(); ++i)
     stddev[s.extrinsic_names[i]] = s.extrinsic_stddev[i];
   stereo["stddev"] = stddev;
   j["stereo"] = stereo;
+  j["flow"] = FlowName(s.flow);
   j["solve_seconds"] = s.solve_seconds;
   return j;
 }
 
-nlohmann::json ModelsReport(const std::vector<StereoCalibration>& calibrations) {
-  nlohmann::json j;
-  j["models"] = nlohmann::json::array();
+Json ModelsReport(const std::vector<StereoCalibration>& calibrations) {
+  Json j;
+  j["models"] = Json::array();
   double seconds = 0;
   for (const auto& c : calibrations) {
     j["models"].push_back(StereoReport(c));
     seconds += c.solve_seconds;
   }
-  nlohmann::json table = nlohmann::json::array();
+  Json table = Json::array();
   for (const auto& row : TableRows(calibrations))
     table.push_back({{"model", row.model},
                      {"left_rms_px", row.left_rms},
@@ -121,7 +116,7 @@ nlohmann::json ModelsReport(const std::vector<StereoCalibration>& calibrations) 
   return j;
 }
 
-void WriteJsonFile(const std::string& path, const nlohmann::json& json) {
+void WriteJsonFile(const std::string& path, const Json& json) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp);

@@ -31,12 +31,15 @@
 
 namespace ws::calib {
 
-nlohmann::json CameraReport(const CameraCalibration& camera);
-nlohmann::json StereoReport(const StereoCalibration& calibration);
-nlohmann::json ModelsReport(const std::vector<StereoCalibration>& calibrations);
+// Keys in the order above.
+using Json = nlohmann::ordered_json;
+
+Json CameraReport(const CameraCalibration& camera);
+Json StereoReport(const StereoCalibration& calibration);
+Json ModelsReport(const std::vector<StereoCalibration>& calibrations);
 
 // Writes JSON (indented) to a temporary file and renames it; throws
 // std::runtime_error when it cannot.
-void WriteJsonFile(const std::string& path, const nlohmann::json& json);
+void WriteJsonFile(const std::string& path, const Json& json);
 
 }  // namespace ws::calib

@@ -60,6 +60,10 @@ BoardView See(const Camera& camera, const Pose& pose, const std::vector<Eigen::V
     if (X.head<2>().norm() > 11 * X.z()) continue;
     const auto pixel = camera.Project(X);
     if (!pixel || !Inside(*pixel, camera.model(), margin)) continue;
+    // Past the radius where a model's curve folds back (r (1 + D(r)) stops
+    // increasing) a point lands in the image again, but no lens images it.
+    const auto ray = camera.Unproject(*pixel);
+    if (!ray || (*ray - X.normalized()).norm() > 1e-6) continue;
     view.ids.push_back(id);
     view.object.push_back(object[id]);
     view.image.push_back(*pixel);
@@ -92,15 +96,7 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
     for (int attempt = 0;; ++attempt, ++halton) {
       if (attempt > 1000) throw std::runtime_error("synthetic rig: no visible board pose found");
       const double e = options.target_extent;
-      Eigen::Vector2d unit(Halton(halton, 2) - 0.5, Halton(halton, 3) - 0.5);
-      // Every other view of the periphery's share goes to a corner of the
-      // image or the middle of an edge (in turn), jittered.
-      if (v % 2 == 1 && v / 2 < options.periphery_fraction * options.views / 2 + 0.5) {
-        static const double kBorder[8][2] = {{-1, -1}, {1, 1}, {1, -1}, {-1, 1},
-                                             {0, -1},  {1, 0}, {0, 1},  {-1, 0}};
-        const double* b = kBorder[(v / 2) % 8];
-        unit = Eigen::Vector2d(0.5 * b[0], 0.5 * b[1]) + 0.1 * unit;
-      }
+      const Eigen::Vector2d unit(Halton(halton, 2) - 0.5, Halton(halton, 3) - 0.5);
       const Eigen::Vector2d target((0.5 + e * unit.x()) * options.left.image_width - 0.5,
                                    (0.5 + e * unit.y()) * options.left.image_height - 0.5);
       const auto ray = left.Unproject(target);

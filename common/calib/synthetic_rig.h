@@ -8,7 +8,8 @@
 // (so they reach its periphery and corners), the distance is drawn from
 // [min_distance, max_distance], the board faces the camera tilted by
 // [min_tilt_deg, max_tilt_deg] about a random axis and turned by a random
-// roll. Corners outside an image (or behind a camera) are left out; a camera
+// roll. Corners outside an image, behind a camera or past the radius where
+// its distortion curve folds back are left out; a camera
 // that keeps less than min_visible of the corners does not see the board in
 // that view; a view the left camera does not see is drawn again.
 #pragma once
@@ -35,7 +36,6 @@ struct SyntheticRigOptions {
   double noise_px = 0.1;  // per coordinate
   uint64_t seed = 1;
   double target_extent = 0.95;  // fraction of the image the board centres span
-  double periphery_fraction = 0;  // share of the views aimed at the border of that extent
   double min_distance = 0.35, max_distance = 0.8;
   double min_tilt_deg = 10, max_tilt_deg = 45;
   double min_visible = 0.5;

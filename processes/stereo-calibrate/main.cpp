@@ -1,0 +1,78 @@
+// stereo-calibrate: collects board corners from STEREO_CORNERS, tells the
+// person holding the board where corners are still missing, solves the
+// stereo calibration on a 'solve' command (or, with --once, at the end of a
+// replayed log) and publishes and writes it.
+#include <cstdio>
+
+#include "calib/calibrate_node.h"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-calibrate",
+                     "Calibrates a stereo rig from the board corners on STEREO_CORNERS (Zhang's "
+                     "start, then a joint Ceres solve of every camera parameter, the B-spline or "
+                     "polynomial distortion, R, T and every board pose). Publishes "
+                     "CALIBRATION_STATUS (coverage and a hint) every second and, after a solve "
+                     "(a 'solve' command on STEREO_COMMAND, or --once at the end of a replayed "
+                     "log), STEREO_CALIBRATION; writes the calibration file and report.");
+  ws::calib::NodeOptions node;
+  ws::calib::CalibrationOptions& calib = node.calibration;
+  std::string model = "bspline", flow = "joint", loss = "none", state;
+  auto& app = cli.app();
+  app.add_option("--model", model, "bspline, poly6, poly12 or all (Table II; the first is published)")
+      ->check(CLI::IsMember({"bspline", "poly6", "poly12", "all"}))
+      ->capture_default_str();
+  app.add_option("--knots", calib.knots, "Estimated B-spline coefficients (distinct knots)")
+      ->check(CLI::Range(2, 64))
+      ->capture_default_str();
+  app.add_option("--smoothness", calib.smoothness, "B-spline smoothness prior weight lambda (0: off)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--flow", flow, "joint (one solve of everything) or paper (cameras first, then R, T)")
+      ->check(CLI::IsMember({"joint", "paper"}))
+      ->capture_default_str();
+  app.add_option("--robust-loss", loss, "none, huber or cauchy (scale --robust-scale)")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
+      ->capture_default_str();
+  app.add_option("--robust-scale", calib.robust_scale_px, "Robust loss scale, pixels")->capture_default_str();
+  app.add_option("--outlier-sigma", calib.outlier_sigma,
+                 "Leave out corners farther than this many sigma from their projection (0: keep all)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--min-views", calib.min_views, "Views each camera needs")->check(CLI::Range(3, 1000))->capture_default_str();
+  app.add_option("--duplicate-px", node.session.duplicate_px,
+                 "A view whose corners are on average this close to a kept view's is a near duplicate "
+                 "(0: 1.5 % of the image diagonal)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_flag("--once", node.once, "Solve at the end of a file:// input (or at the first solve command) and exit");
+  app.add_option("--out", node.out_yaml, "Calibration file to write (YAML, cv::FileStorage)");
+  app.add_option("--report", node.report_json, "Report to write (JSON)");
+  app.add_option("--plot-dir", node.plot_dir,
+                 "Folder for distortion_curves.png and residual_map.png (needs gnuplot)");
+  app.add_option("--state", state,
+                 "File keeping the accepted views across restarts; 'none' for none. Default: "
+                 "LOG_DIR/stereo-calibrate-views.lcmlog live, none when replaying a log");
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    node.models = ws::calib::ParseModelList(model);
+    calib.model = node.models.front();
+    calib.flow = flow == "paper" ? ws::calib::StereoFlow::kPaper : ws::calib::StereoFlow::kJoint;
+    calib.robust_loss = loss == "huber"    ? ws::calib::RobustLoss::kHuber
+                        : loss == "cauchy" ? ws::calib::RobustLoss::kCauchy
+                                           : ws::calib::RobustLoss::kNone;
+    node.session.min_views = calib.min_views;
+    const bool replay = cli.options().in_url.rfind("file://", 0) == 0;
+    if (state.empty() && !replay) state = cli.options().log_dir + "/stereo-calibrate-views.lcmlog";
+    node.session.state_path = state == "none" ? "" : state;
+    ws::calib::CheckOptions(calib);
+
+    ws::Process process(cli.options());
+    ws::calib::CalibrateNode calibrate(process, node);
+    calibrate.Start();
+    return process.Run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereo-calibrate: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,33 @@
+// Running the capture -> detect -> calibrate chain as real processes, log to
+// log, for the stereo-calibrate tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "calib/calib_data.h"
+#include "test_support.h"
+
+namespace ws::calib::test {
+
+std::string FileUrl(const std::string& path, const std::string& mode);
+
+// stereo-capture --source SOURCE [extra] into DIR/images.lcmlog, then
+// stereo-detect --board BOARD into DIR/corners.lcmlog; returns the corners
+// log (test failures when a stage fails).
+std::string CaptureAndDetect(const std::string& dir, const std::string& source,
+                             const std::string& board, const std::vector<std::string>& extra = {});
+
+// stereo-calibrate --once over the corners log with `extra` options, its
+// output log, --out and --report in DIR/NAME.{lcmlog,yaml,json}.
+ws::test::CommandResult CalibrateOnce(const std::string& dir, const std::string& corners,
+                                      const std::string& name, std::vector<std::string> extra);
+
+// The STEREO_CORNERS of a log as calibration data.
+StereoData ReadCorners(const std::string& corners_log);
+
+nlohmann::json ReadJson(const std::string& path);
+
+}  // namespace ws::calib::test

@@ -1,0 +1,172 @@
+// Input no calibration can come from gives a clear CalibrationError; input
+// that is partly bad is used without its bad part, which is counted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "calib_test_rigs.h"
+
+namespace {
+
+using namespace ws;
+using namespace ws::calib;
+using namespace ws::calib::test;
+
+// 15 views of the barrel rig, solved with poly6 (fast).
+struct BarrelViews : ::testing::Test {
+  void SetUp() override {
+    truth = BarrelRig();
+    truth.views = 15;
+    rig = MakeSyntheticRig(truth);
+    options.model = "poly6";
+  }
+  SyntheticRigOptions truth;
+  SyntheticRig rig;
+  CalibrationOptions options;
+};
+
+// Runs f, expecting a CalibrationError whose message contains every part.
+template <class F>
+void ExpectCalibrationError(F f, const std::vector<std::string>& parts) {
+  try {
+    f();
+    ADD_FAILURE() << "no CalibrationError";
+  } catch (const CalibrationError& e) {
+    for (const auto& part : parts)
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(BarrelViews, TwoViewsAreTooFew) {
+  rig.data.left.views.resize(2);
+  ExpectCalibrationError([&] { CalibrateCamera(rig.data.left, options); },
+                         {"left camera: 2 usable views", "at least 3 needed"});
+}
+
+TEST_F(BarrelViews, CollinearViewsAreSkippedAndNamed) {
+  for (int v : {0, 1}) {  // keep the first row of the board only: a line of corners
+    BoardView& view = rig.data.left.views[v];
+    BoardView line;
+    for (int i = 0; i < view.size(); ++i)
+      if (view.object[i].y() == 0) {
+        line.ids.push_back(view.ids[i]);
+        line.object.push_back(view.object[i]);
+        line.image.push_back(view.image[i]);
+      }
+    ASSERT_GE(line.size(), 6);
+    view = line;
+  }
+  const CameraCalibration result = CalibrateCamera(rig.data.left, options);
+  EXPECT_EQ(result.views, 13);
+  ASSERT_GE(result.skipped.size(), 2u);
+  EXPECT_NE(result.skipped[0].find("view 0: the corners are (nearly) collinear"), std::string::npos)
+      << result.skipped[0];
+  EXPECT_LT(result.rms_px, 0.16);
+
+  for (BoardView& view : rig.data.left.views) view = rig.data.left.views[0];
+  ExpectCalibrationError([&] { CalibrateCamera(rig.data.left, options); },
+                         {"0 usable views", "collinear"});
+}
+
+TEST_F(BarrelViews, NonFiniteCornersAreDroppedAndCounted) {
+  const double floor = TruthRms(truth, rig, 0);
+  rig.data.left.views[3].image[0].x() = NAN;
+  rig.data.left.views[4].image[5].y() = INFINITY;
+  rig.data.left.views[4].object[6].x() = NAN;
+  for (auto& p : rig.data.left.views[5].image) p = Eigen::Vector2d(NAN, NAN);
+  const int view5 = rig.data.left.views[5].size();
+  const CameraCalibration result = CalibrateCamera(rig.data.left, options);
+  EXPECT_EQ(result.invalid_points, 3 + view5);
+  EXPECT_EQ(result.views, 14);
+  EXPECT_TRUE(std::isfinite(result.rms_px));
+  EXPECT_NEAR(result.rms_px, floor, 0.1 * floor);
+  for (const double v : result.model.Intrinsics()) EXPECT_TRUE(std::isfinite(v));
+}
+
+TEST_F(BarrelViews, ABoardSeenByOneCameraOnly) {
+  // Views 0-4 seen by the left camera only: they serve its intrinsics alone.
+  for (int v = 0; v < 5; ++v) rig.data.right.views[v] = BoardView();
+  const StereoCalibration result = CalibrateStereo(rig.data, options);
+  int both = 0;
+  for (int v = 0; v < rig.data.size(); ++v)
+    both += !rig.data.left.views[v].empty() && !rig.data.right.views[v].empty();
+  EXPECT_EQ(result.views, both);
+  EXPECT_EQ(result.left.views, 15);
+  EXPECT_LT(result.view_rms[0], 0);  // not a stereo view
+  EXPECT_LE(std::abs(result.T.norm() / truth.T.norm() - 1), 0.002);
+
+  // The right camera never sees the board: nothing to calibrate it from.
+  for (BoardView& view : rig.data.right.views) view = BoardView();
+  ExpectCalibrationError([&] { CalibrateStereo(rig.data, options); },
+                         {"right camera: 0 usable views"});
+}
+
+TEST_F(BarrelViews, ParallelBoardsAreDegenerate) {
+  // The board fronto-parallel in every view, only moved around: Zhang's
+  // method cannot tell the focal length.
+  const Camera camera(truth.left);
+  CameraData data;
+  data.name = "left";
+  data.image_width = truth.left.image_width;
+  data.image_height = truth.left.image_height;
+  for (int v = 0; v < 8; ++v) {
+    const Pose pose = Pose::FromRt(Eigen::Matrix3d::Identity(),
+                                   Eigen::Vector3d(-0.2 + 0.05 * v, -0.15 + 0.02 * v, 0.8));
+    BoardView view;
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 9; ++c) {
+        const Eigen::Vector3d X(0.04 * c, 0.04 * r, 0);
+        const auto pixel = camera.Project(pose * X);
+        view.ids.push_back(r * 9 + c);
+        view.object.push_back(X);
+        view.image.push_back(*pixel);
+      }
+    data.views.push_back(view);
+  }
+  ExpectCalibrationError([&] { CalibrateCamera(data, options); }, {"parallel", "tilt the board"});
+}
+
+TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
+  // 12 corners 5 px off (a detector that jumped to the wrong corner).
+  const double floor = TruthRms(truth, rig, 0);
+  int moved = 0;
+  for (int v = 2; v < 14; v += 3)
+    for (int i : {1, 7, 13}) {
+      rig.data.left.views[v].image[i] += Eigen::Vector2d(3.0, -4.0);
+      ++moved;
+    }
+  const CameraCalibration plain = CalibrateCamera(rig.data.left, options);
+  EXPECT_EQ(plain.outliers, 0);
+  EXPECT_GT(plain.rms_px, 1.5 * floor);
+  options.outlier_sigma = 5;
+  const CameraCalibration robust = CalibrateCamera(rig.data.left, options);
+  EXPECT_EQ(robust.outliers, moved);
+  int flagged_moved = 0;
+  for (const CornerResidual& r : robust.residuals)
+    flagged_moved += r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
+  EXPECT_EQ(flagged_moved, moved);
+  EXPECT_NEAR(robust.rms_px, floor, 0.1 * floor);
+}
+
+TEST(CalibBadInput, ImageSizeChangesAndBadOptionsAreRefused) {
+  widestereo::stereo_corners_t msg;
+  msg.left.n = 1;
+  msg.left.ids = {0};
+  msg.left.image_points = {{1.0, 2.0}};
+  msg.left.object_points = {{0, 0, 0}};
+  msg.left.image_width = 640;
+  msg.left.image_height = 480;
+  StereoData data;
+  AddStereoCorners(data, msg);
+  msg.left.image_width = 1280;
+  ExpectCalibrationError([&] { AddStereoCorners(data, msg); }, {"1280x480", "640x480"});
+
+  CalibrationOptions options;
+  options.model = "fisheye";
+  ExpectCalibrationError([&] { CalibrateStereo(data, options); }, {"unknown model 'fisheye'"});
+  options.model = "bspline";
+  options.knots = 1;
+  ExpectCalibrationError([&] { CalibrateStereo(data, options); }, {"2 to 64 knots"});
+}
+
+}  // namespace

@@ -1,0 +1,114 @@
+// Calibration of synthetic stereo rigs (projected board corners, 0.1 px
+// Gaussian noise per coordinate, no images): a mustache lens from
+// config/lenses/ that only the B-spline can follow, and an ordinary poly6
+// barrel lens that every model can.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "calib/table2.h"
+#include "calib_test_rigs.h"
+
+namespace {
+
+using namespace ws;
+using namespace ws::calib;
+using namespace ws::calib::test;
+
+// r (1 + D(r)) of a stored camera increases up to the image's corner radius
+// (the curve past the last observed radius stays a lens).
+bool MonotoneToImageCorners(const CameraModel& model, double r_end) {
+  const Camera camera(model);
+  double previous = 0;
+  for (int k = 1; k <= 512; ++k) {
+    const double r = r_end * k / 512;
+    const double height = r * (1 + camera.DistortionCurve(r));
+    if (!(height > previous)) return false;
+    previous = height;
+  }
+  return true;
+}
+
+TEST(CalibSynthetic, MustacheBsplineMatchesTheTruth) {
+  const SyntheticRigOptions truth = MustacheRig();
+  const SyntheticRig rig = MakeSyntheticRig(truth);
+  const StereoCalibration result = CalibrateStereo(rig.data, CalibrationOptions());
+  const CameraCalibration* cameras[2] = {&result.left, &result.right};
+  const CameraModel* true_models[2] = {&truth.left, &truth.right};
+  const CameraData* data[2] = {&rig.data.left, &rig.data.right};
+  for (int c = 0; c < 2; ++c) {
+    const CameraCalibration& camera = *cameras[c];
+    const double floor = TruthRms(truth, rig, c);
+    const ProjectionError error = MaxProjectionError(*true_models[c], camera.model, *data[c]);
+    std::printf("%s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
+                "(%.4f px without the best rotation of %.1e rad), %d views, largest observed "
+                "radius %.3f\n",
+                camera.name.c_str(), camera.rms_px, floor, error.turned_px, error.direct_px,
+                error.rotation_rad, camera.views, camera.max_observed_radius);
+    EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << camera.name;
+    EXPECT_LE(error.turned_px, 0.1) << camera.name;
+    EXPECT_EQ(camera.outliers, 0);
+    ExpectParametersWithin(*true_models[c], camera, 3.0, false);
+    EXPECT_TRUE(MonotoneToImageCorners(camera.model, 2.6)) << camera.name;
+  }
+  const double baseline_error = std::abs(result.T.norm() / truth.T.norm() - 1);
+  std::printf("baseline %.6f m (true %.6f): error %.4f %%, stereo rms %.4f px over %d views\n",
+              result.T.norm(), truth.T.norm(), 100 * baseline_error, result.rms_px, result.views);
+  EXPECT_LE(baseline_error, 0.001);
+  ExpectExtrinsicWithin(truth, result, 3.0);
+}
+
+TEST(CalibSynthetic, MustacheTableIIPolynomialsCannotFollow) {
+  const SyntheticRigOptions truth = MustacheRig();
+  const SyntheticRig rig = MakeSyntheticRig(truth);
+  const auto results =
+      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6", "poly12"});
+  std::vector<TableRow> rows = TableRows(results);
+  rows.push_back({"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  std::printf("%s", FormatTableII(rows, "Table II, synthetic mustache rig [px]").c_str());
+  const StereoCalibration& bspline = results[0];
+  const StereoCalibration& poly6 = results[1];
+  EXPECT_GE(poly6.left.rms_px, 3 * bspline.left.rms_px);
+  EXPECT_GE(poly6.right.rms_px, 3 * bspline.right.rms_px);
+}
+
+TEST(CalibSynthetic, BarrelLensBothModelsReachTheNoiseFloor) {
+  const SyntheticRigOptions truth = BarrelRig();
+  const SyntheticRig rig = MakeSyntheticRig(truth);
+  const auto results = CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6"});
+  std::vector<TableRow> rows = TableRows(results);
+  rows.push_back({"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  std::printf("%s", FormatTableII(rows, "Table II, synthetic barrel rig [px]").c_str());
+  for (const StereoCalibration& result : results) {
+    for (int c = 0; c < 2; ++c) {
+      const CameraCalibration& camera = c == 0 ? result.left : result.right;
+      const double floor = TruthRms(truth, rig, c);
+      EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << result.model << " " << camera.name;
+      const ProjectionError error = MaxProjectionError(c == 0 ? truth.left : truth.right,
+                                                       camera.model,
+                                                       c == 0 ? rig.data.left : rig.data.right);
+      std::printf("%s %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
+                  result.model.c_str(), camera.name.c_str(), error.turned_px, error.direct_px);
+    }
+    EXPECT_LE(std::abs(result.T.norm() / truth.T.norm() - 1), 0.001) << result.model;
+    ExpectExtrinsicWithin(truth, result, 3.0);
+  }
+  // poly6 is the true model: every parameter, k1..k3 included, within 3 sigma.
+  ExpectParametersWithin(truth.left, results[1].left, 3.0, true);
+  ExpectParametersWithin(truth.right, results[1].right, 3.0, true);
+}
+
+TEST(CalibSynthetic, PaperFlowKeepsEachCamerasOwnSolution) {
+  const SyntheticRigOptions truth = BarrelRig();
+  const SyntheticRig rig = MakeSyntheticRig(truth);
+  CalibrationOptions options;
+  options.model = "poly6";
+  options.flow = StereoFlow::kPaper;
+  const StereoCalibration paper = CalibrateStereo(rig.data, options);
+  const CameraCalibration left_alone = CalibrateCamera(rig.data.left, options);
+  EXPECT_EQ(paper.left.rms_px, left_alone.rms_px);
+  EXPECT_EQ(paper.left.model.fx, left_alone.model.fx);
+  EXPECT_LE(std::abs(paper.T.norm() / truth.T.norm() - 1), 0.001);
+}
+
+}  // namespace

@@ -1,0 +1,90 @@
+// What stereo-calibrate keeps between solves: accepted views, near
+// duplicates skipped, the coverage and hint, and the state file that brings
+// the views back after a crash, even one in the middle of a write.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "calib/calibration_session.h"
+#include "calib_test_rigs.h"
+#include "test_support.h"
+
+namespace {
+
+using namespace ws::calib;
+using namespace ws::calib::test;
+
+widestereo::stereo_corners_t Message(const SyntheticRig& rig, int v, const std::string& board) {
+  widestereo::stereo_corners_t msg;
+  msg.utime = 1000 * v;
+  msg.frame_id = v;
+  msg.left = ToCornersMessage(rig.data.left.views[v], board, 1280, 960);
+  msg.right = ToCornersMessage(rig.data.right.views[v], board, 1280, 960);
+  return msg;
+}
+
+class CalibSession : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    SyntheticRigOptions options = BarrelRig();
+    options.views = 8;
+    rig = MakeSyntheticRig(options);
+  }
+  SyntheticRig rig;
+  const std::string board = "chessboard:12x9:0.04";
+};
+
+TEST_F(CalibSession, SkipsNearDuplicatesEmptyFramesAndOtherBoards) {
+  CalibrationSession session(SessionOptions{});
+  EXPECT_EQ(session.Add(Message(rig, 0, board)), CalibrationSession::Outcome::kAccepted);
+  widestereo::stereo_corners_t moved = Message(rig, 0, board);
+  for (auto& p : moved.left.image_points) p[0] += 2.0;  // the board held still: 2 px
+  EXPECT_EQ(session.Add(moved), CalibrationSession::Outcome::kDuplicate);
+  EXPECT_EQ(session.Add(Message(rig, 1, board)), CalibrationSession::Outcome::kAccepted);
+  widestereo::stereo_corners_t empty = Message(rig, 2, board);
+  empty.left = ToCornersMessage(BoardView(), board, 1280, 960);
+  empty.right = empty.left;
+  EXPECT_EQ(session.Add(empty), CalibrationSession::Outcome::kNoBoard);
+  std::string why;
+  EXPECT_EQ(session.Add(Message(rig, 3, "chessboard:9x6:0.025"), &why),
+            CalibrationSession::Outcome::kRejected);
+  EXPECT_NE(why.find("differs from the board so far"), std::string::npos) << why;
+  EXPECT_EQ(session.views(), 2);
+  EXPECT_EQ(session.duplicates(), 1);
+
+  const auto status = session.Status(42, "collecting", -1);
+  EXPECT_EQ(status.views_left, 2);
+  EXPECT_EQ(status.grid_rows, 6);
+  EXPECT_EQ(status.grid_cols, 8);
+  EXPECT_NE(status.hint.find("need at least 3 views per camera"), std::string::npos) << status.hint;
+}
+
+TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
+  const std::string state = ws::test::TempDir("calib-session") + "/views.lcmlog";
+  SessionOptions options;
+  options.state_path = state;
+  {
+    CalibrationSession session(options);
+    EXPECT_EQ(session.Restore(), 0);
+    for (int v = 0; v < 5; ++v) session.Add(Message(rig, v, board));
+  }
+  {  // a process killed while writing the next view leaves half an event
+    std::ofstream(state, std::ios::app | std::ios::binary) << std::string("\xED\xA1\xDA\x01partial", 11);
+  }
+  {
+    CalibrationSession session(options);
+    EXPECT_EQ(session.Restore(), 5);
+    EXPECT_EQ(session.Add(Message(rig, 2, board)), CalibrationSession::Outcome::kDuplicate);
+    EXPECT_EQ(session.Add(Message(rig, 5, board)), CalibrationSession::Outcome::kAccepted);
+  }
+  CalibrationSession session(options);
+  EXPECT_EQ(session.Restore(), 6);
+  const StereoData data = session.Data();
+  ASSERT_EQ(data.size(), 6);
+  EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
+  session.Reset();
+  EXPECT_EQ(session.views(), 0);
+  EXPECT_EQ(CalibrationSession(options).Restore(), 0);
+}
+
+}  // namespace

@@ -1,0 +1,173 @@
+// stereo-calibrate as a real process, log to log after stereo-capture and
+// stereo-detect: OpenCV's own stereo set (opencv-doc) against
+// cv::calibrateCamera on the same detections, the same output on every
+// replay, and the simulator end to end against its ground truth.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/Geometry>
+#include <opencv2/calib3d.hpp>
+
+#include "calib/calib_file.h"
+#include "calib_process_support.h"
+#include "calib_test_rigs.h"
+#include "lcm_io/channels.h"
+#include "sim/ground_truth.h"
+#include "widestereo/stereo_calibration_t.hpp"
+
+namespace {
+
+using namespace ws;
+using namespace ws::calib;
+using namespace ws::calib::test;
+using ws::test::TempDir;
+
+// cv::calibrateCamera, its default 5-coefficient model, on one camera's views.
+double OpenCvRms(const CameraData& camera) {
+  std::vector<std::vector<cv::Point3f>> object;
+  std::vector<std::vector<cv::Point2f>> image;
+  for (const calib::BoardView& view : camera.views) {
+    if (view.empty()) continue;
+    object.emplace_back();
+    image.emplace_back();
+    for (int i = 0; i < view.size(); ++i) {
+      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+      image.back().emplace_back(view.image[i].x(), view.image[i].y());
+    }
+  }
+  cv::Mat K, distortion;
+  std::vector<cv::Mat> rvecs, tvecs;
+  return cv::calibrateCamera(object, image, cv::Size(camera.image_width, camera.image_height), K,
+                             distortion, rvecs, tvecs);
+}
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void PrintTable(const char* title, const nlohmann::json& report) {
+  std::printf("%s\n%-10s %10s %10s %10s\n", title, "model", "left", "right", "stereo");
+  for (const auto& row : report["table_ii"])
+    std::printf("%-10s %10.4f %10.4f %10.4f\n", row["model"].get<std::string>().c_str(),
+                row["left_rms_px"].get<double>(), row["right_rms_px"].get<double>(),
+                row["stereo_rms_px"].get<double>());
+}
+
+// The paper's flow gives each camera its own calibration, as calibrateCamera
+// does: the same model (poly6) must reach the same RMS, the B-spline no more.
+TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
+  const std::string dir = TempDir("calibrate-opencv");
+  const std::string corners =
+      CaptureAndDetect(dir, "dir:" + ws::test::OpenCvStereoSetDir(), "chessboard:9x6:0.025");
+  const auto run = CalibrateOnce(dir, corners, "paper",
+                                 {"--model", "all", "--flow", "paper", "--plot-dir", dir});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("Table II"), std::string::npos) << run.output;
+  const StereoData data = ReadCorners(corners);
+  const double opencv[2] = {OpenCvRms(data.left), OpenCvRms(data.right)};
+  const nlohmann::json report = ReadJson(dir + "/paper.json");
+  PrintTable("Table II, opencv-doc stereo set, paper flow [px]", report);
+  std::printf("%-10s %10.4f %10.4f (cv::calibrateCamera, 5 coefficients)\n", "opencv", opencv[0],
+              opencv[1]);
+  ASSERT_EQ(report["models"].size(), 3u);
+  for (const auto& model : report["models"]) {
+    for (int c = 0; c < 2; ++c) {
+      const auto& camera = model["cameras"][c];
+      EXPECT_EQ(camera["views"], 13);
+      EXPECT_LE(camera["rms_px"].get<double>(), opencv[c] * (1 + 1e-4))
+          << model["model"] << " " << camera["name"];
+    }
+    EXPECT_EQ(model["stereo"]["views"], 13);
+  }
+  // The file holds the first model; STEREO_CALIBRATION says the same.
+  const CalibrationFile file = ReadCalibrationFile(dir + "/paper.yaml");
+  EXPECT_EQ(file.model, "bspline");
+  const auto published = ws::test::Messages<widestereo::stereo_calibration_t>(
+      ws::test::ReadLog(dir + "/paper.lcmlog"), channel::kStereoCalibration);
+  ASSERT_EQ(published.size(), 1u);
+  EXPECT_EQ(published[0].left.fx, file.left.fx);
+  EXPECT_EQ(published[0].T[0], file.T.x());
+  for (const char* png : {"/distortion_curves.png", "/residual_map.png"})
+    EXPECT_GT(std::filesystem::file_size(dir + png), 10000u) << png;
+}
+
+// Drops "solve_seconds" (wall clock) everywhere.
+void DropSolveSeconds(nlohmann::json& j) {
+  if (j.is_object()) j.erase("solve_seconds");
+  if (j.is_structured())
+    for (auto& item : j) DropSolveSeconds(item);
+}
+
+TEST(StereoCalibrateProcess, OnceOverALogGivesTheSameCalibrationTwice) {
+  const std::string dir = TempDir("calibrate-twice");
+  const std::string corners =
+      CaptureAndDetect(dir, "dir:" + ws::test::OpenCvStereoSetDir(), "chessboard:9x6:0.025");
+  for (const char* name : {"first", "second"}) {
+    const auto run = CalibrateOnce(dir, corners, name, {"--model", "all"});
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  EXPECT_EQ(Slurp(dir + "/first.yaml"), Slurp(dir + "/second.yaml"));
+  nlohmann::json first = ReadJson(dir + "/first.json"), second = ReadJson(dir + "/second.json");
+  DropSolveSeconds(first);
+  DropSolveSeconds(second);
+  EXPECT_EQ(first.dump(), second.dump());
+  std::vector<std::vector<uint8_t>> messages[2];
+  int n = 0;
+  for (const char* name : {"/first.lcmlog", "/second.lcmlog"}) {
+    for (const auto& event : ws::test::ReadLog(dir + name))
+      if (event.channel == channel::kStereoCalibration || event.channel == channel::kCalibrationStatus)
+        messages[n].push_back(event.data);
+    ++n;
+  }
+  EXPECT_GE(messages[0].size(), 2u);
+  EXPECT_EQ(messages[0], messages[1]);
+}
+
+// The simulator's default rig (Theia-like mustache lenses, 0.3 m baseline),
+// rendered, detected and calibrated, against the simulator's ground truth.
+TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
+  const std::string dir = TempDir("calibrate-sim");
+  const std::string truth_path = dir + "/truth.yaml";
+  const std::string corners =
+      CaptureAndDetect(dir, "sim:" + ws::test::SourceDir() + "/config/sim/default.yaml?truth=" + truth_path,
+                       "chessboard:9x6:0.05", {"--frame-clock", "--rate", "5"});
+  std::filesystem::remove(dir + "/images.lcmlog");  // 86 MB
+  const auto run = CalibrateOnce(dir, corners, "sim", {"--model", "all", "--plot-dir", dir});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const SimTruth truth = LoadSimTruth(truth_path);
+  const nlohmann::json report = ReadJson(dir + "/sim.json");
+  PrintTable("Table II, simulator end to end (rendered, detected) [px]", report);
+  const StereoData data = ReadCorners(corners);
+  const CalibrationFile file = ReadCalibrationFile(dir + "/sim.yaml");  // the B-spline
+  Eigen::Vector3d true_T(truth.T(0), truth.T(1), truth.T(2));
+  Eigen::Matrix3d true_R;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) true_R(r, c) = truth.R(r, c);
+  const double baseline_error = std::abs(file.T.norm() / true_T.norm() - 1);
+  const double rotation_error = Eigen::AngleAxisd(file.R * true_R.transpose()).angle();
+  std::printf("bspline: baseline %.5f m (true %.5f, error %.3f %%), R off by %.4f deg\n",
+              file.T.norm(), true_T.norm(), 100 * baseline_error, rotation_error * 180 / M_PI);
+  EXPECT_LE(baseline_error, 0.001);
+  EXPECT_LE(rotation_error * 180 / M_PI, 0.05);
+  for (int c = 0; c < 2; ++c) {
+    const ProjectionError error = MaxProjectionError(c == 0 ? truth.left : truth.right,
+                                                     c == 0 ? file.left : file.right,
+                                                     c == 0 ? data.left : data.right);
+    std::printf("bspline %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
+                c == 0 ? "left" : "right", error.turned_px, error.direct_px);
+    EXPECT_LE(error.turned_px, 0.1);
+  }
+  const auto& models = report["models"];
+  for (int c = 0; c < 2; ++c)
+    EXPECT_GE(models[1]["cameras"][c]["rms_px"].get<double>(),
+              3 * models[0]["cameras"][c]["rms_px"].get<double>());
+}
+
+}  // namespace
