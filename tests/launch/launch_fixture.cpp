@@ -1,0 +1,40 @@
+#include "launch_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace ws::test {
+
+std::vector<std::string> LaunchCommand(const std::string& launch_file, const std::string& lcm_url,
+                                       const std::string& run_dir, const std::vector<std::string>& extra) {
+  std::vector<std::string> argv = {SourceDir() + "/scripts/launch", SourceDir() + "/" + launch_file,
+                                   "--lcm-url", lcm_url, "--run-dir", run_dir};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+std::string LaunchLog(const std::string& run_dir) {
+  std::ifstream in(run_dir + "/launch.log");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int WaitForStart(const std::string& run_dir, const std::string& process, int nth, std::chrono::seconds timeout) {
+  const std::string marker = "started " + process + " pid ";
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < deadline) {
+    const std::string log = LaunchLog(run_dir);
+    size_t at = 0;
+    for (int seen = 0; (at = log.find(marker, at)) != std::string::npos; at += marker.size())
+      if (++seen == nth) return std::stoi(log.substr(at + marker.size()));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ADD_FAILURE() << "launch.log has no start " << nth << " of " << process << ":\n" << LaunchLog(run_dir);
+  return -1;
+}
+
+}  // namespace ws::test

@@ -1,0 +1,79 @@
+// The calibrate launch on the simulator, as a user runs it: a process that
+// dies is restarted without a gap in the other channels, and Ctrl-C leaves a
+// complete log that replays.
+#include <signal.h>
+
+#include <algorithm>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "launch_fixture.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
+#include "widestereo/calibration_status_t.hpp"
+#include "widestereo/stereo_corners_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using namespace ws::test;
+
+// Frame ids of the messages, in log order.
+template <class Msg>
+std::vector<int64_t> FrameIds(const std::vector<LogEvent>& events, const std::string& channel) {
+  std::vector<int64_t> ids;
+  for (const Msg& m : Messages<Msg>(events, channel)) ids.push_back(m.frame_id);
+  return ids;
+}
+
+TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
+  const std::string run_dir = TempDir("launch_calibrate");
+  Command launch(LaunchCommand("config/launch/calibrate.yaml", UniqueUdpmUrl() + "&recv_buf_size=16777216", run_dir,
+                               {"--append", "stereo-capture=--rate=2"}));
+  const int detect = WaitForStart(run_dir, "stereo-detect", 1, 60s);
+  ASSERT_GT(detect, 0);
+  std::this_thread::sleep_for(6s);
+  kill(detect, SIGKILL);
+  ASSERT_GT(WaitForStart(run_dir, "stereo-detect", 2, 30s), 0);
+  std::this_thread::sleep_for(6s);
+  launch.Signal(SIGINT);
+  const CommandResult result = launch.Wait(60);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+
+  const std::string record = LaunchLog(run_dir);
+  EXPECT_NE(record.find("stereo-detect died (signal 9); restarting (1 of 3)"), std::string::npos) << record;
+  for (const char* process : {"stereo-capture", "stereo-detect", "stereo-calibrate"})
+    EXPECT_NE(record.find(std::string(process) + " stopped (code 0)"), std::string::npos) << record;
+
+  const std::string log = run_dir + "/calibrate.lcmlog";
+  const ws::LcmLogScan scan = ws::ScanLcmLog(log);
+  EXPECT_TRUE(scan.complete()) << scan.problem;
+  const std::vector<LogEvent> events = ReadLog(log);
+  const auto images = FrameIds<widestereo::stereo_frame_t>(events, ws::channel::kStereoImages);
+  ASSERT_GE(images.size(), 15u) << "2 Hz for about 12 s";
+  for (size_t i = 1; i < images.size(); ++i)
+    EXPECT_EQ(images[i], images[i - 1] + 1) << "STEREO_IMAGES lost frames while stereo-detect restarted";
+
+  // Corners before the kill and after the restart, and a gap between.
+  const auto corners = FrameIds<widestereo::stereo_corners_t>(events, ws::channel::kStereoCorners);
+  ASSERT_FALSE(corners.empty());
+  size_t restart = 0;  // the first corners of the restarted detector
+  for (size_t i = 1; i < corners.size() && restart == 0; ++i)
+    if (corners[i] != corners[i - 1] + 1) restart = i;
+  ASSERT_GT(restart, 0u) << "the killed detector's frames are missing";
+  EXPECT_GE(corners.size() - restart, 3u) << "the restarted detector published corners";
+  EXPECT_GE(Messages<widestereo::calibration_status_t>(events, ws::channel::kCalibrationStatus).size(), 10u);
+
+  // It replays: stereo-detect over the recorded images gives corners for all of them.
+  const std::string replay = TempDir("launch_replay") + "/corners.lcmlog";
+  const CommandResult detected = RunCommand({"stereo-detect", "--board", "chessboard:9x6:0.05", "--in-url",
+                                             "file://" + log + "?speed=0", "--out-url", "file://" + replay + "?mode=w",
+                                             "--log-dir", TempDir("launch_replay_logs"), "--quiet"},
+                                            120);
+  ASSERT_EQ(detected.exit_code, 0) << detected.output;
+  EXPECT_EQ(FrameIds<widestereo::stereo_corners_t>(ReadLog(replay), ws::channel::kStereoCorners), images);
+}
+
+}  // namespace
