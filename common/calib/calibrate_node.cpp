@@ -14,6 +14,16 @@
 
 namespace ws::calib {
 
+namespace {
+
+// calib.yaml and "poly6" -> calib.poly6.yaml
+std::string ModelFilePath(const std::string& yaml, const std::string& model) {
+  const std::filesystem::path path(yaml);
+  return (path.parent_path() / (path.stem().string() + "." + model + path.extension().string())).string();
+}
+
+}  // namespace
+
 std::vector<std::string> ParseModelList(const std::string& spec) {
   const auto kinds = ModelKinds();
   if (spec == "all") return kinds;
@@ -155,6 +165,12 @@ void CalibrateNode::WriteFiles(const std::vector<StereoCalibration>& results,
   if (!yaml.empty()) {
     WriteCalibrationFile(yaml, ToCalibrationFile(results.front()));
     process_.log().Info("wrote " + yaml);
+    if (results.size() > 1)
+      for (const StereoCalibration& result : results) {
+        const std::string path = ModelFilePath(yaml, result.model);
+        WriteCalibrationFile(path, ToCalibrationFile(result));
+        process_.log().Info("wrote " + path);
+      }
   }
   if (!json.empty()) {
     WriteJsonFile(json, results.size() == 1 ? StereoReport(results.front()) : ModelsReport(results));

@@ -11,7 +11,8 @@
 //    views per camera, coverage grids, RMS of the last solve (-1: none) and
 //    a hint for the person holding the board.
 //  - After a solve: STEREO_CALIBRATION (the first model asked for), the
-//    calibration file (--out), the report (--report), the figures
+//    calibration file (--out; with several models also one per model,
+//    calib.poly6.yaml), the report (--report), the figures
 //    (--plot-dir: distortion_curves.png, residual_map.png) and, with several
 //    models, Table II on the terminal and in the log.
 //  - --once: solve when a file:// input ends (or at the first solve command),

@@ -45,7 +45,9 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--once", node.once, "Solve at the end of a file:// input (or at the first solve command) and exit");
-  app.add_option("--out", node.out_yaml, "Calibration file to write (YAML, cv::FileStorage)");
+  app.add_option("--out", node.out_yaml,
+                 "Calibration file to write (YAML, cv::FileStorage) of the first model; with several "
+                 "models also FILE.MODEL.yaml for each (calib.poly6.yaml)");
   app.add_option("--report", node.report_json, "Report to write (JSON)");
   app.add_option("--plot-dir", node.plot_dir,
                  "Folder for distortion_curves.png and residual_map.png (needs gnuplot)");

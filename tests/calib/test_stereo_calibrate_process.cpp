@@ -146,6 +146,8 @@ TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   PrintTable("Table II, simulator end to end (rendered, detected) [px]", report);
   const StereoData data = ReadCorners(corners);
   const CalibrationFile file = ReadCalibrationFile(dir + "/sim.yaml");  // the B-spline
+  for (const std::string model : {"bspline", "poly6", "poly12"})  // and one file per model
+    EXPECT_EQ(ReadCalibrationFile(dir + "/sim." + model + ".yaml").model, model);
   Eigen::Vector3d true_T(truth.T(0), truth.T(1), truth.T(2));
   Eigen::Matrix3d true_R;
   for (int r = 0; r < 3; ++r)
