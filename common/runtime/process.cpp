@@ -133,6 +133,7 @@ int Process::Run() {
 
 int Process::Finish() {
   PublishStatus();
+  log_.Detail("final: " + ProgressLine());
   ShowProgress();
   log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
   return exit_code_;
@@ -250,7 +251,9 @@ void Process::PublishStatus() {
   Publish(channel::kProcessStatus, status);
 }
 
-void Process::ShowProgress() {
+void Process::ShowProgress() { log_.Progress(ProgressLine()); }
+
+std::string Process::ProgressLine() {
   std::ostringstream line;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -262,7 +265,7 @@ void Process::ShowProgress() {
     }
   }
   if (progress_) line << " | " << progress_();
-  log_.Progress(line.str());
+  return line.str();
 }
 
 }  // namespace ws

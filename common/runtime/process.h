@@ -103,6 +103,8 @@ class Process {
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
   void PublishStatus();
   void ShowProgress();
+  // State, per-channel counters and the process's own progress, on one line.
+  std::string ProgressLine();
   void HandleRejected(const std::string& channel, const std::string& why);
   void CountFrameGap(const std::string& channel, int64_t frame_id);
 
