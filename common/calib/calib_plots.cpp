@@ -22,8 +22,7 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
 }  // namespace
 
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
-                              const std::string& png_path,
-                              const std::vector<ReferenceCurve>& references) {
+                              const std::string& png_path) {
   plot::Figure figure("Recovered radial distortion D(r) = r'/r - 1", 2, 1400, 600);
   for (int side = 0; side < 2; ++side) {
     const std::string name = side == 0 ? "left" : "right";
@@ -53,8 +52,6 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
       }
       panel.series.emplace_back(title, r, d);
     };
-    for (const auto& ref : references)
-      if (ref.camera == name) curve(ref.model, ref.title);
     for (const auto& c : calibrations)
       curve(Side(c, side).model,
             c.model + " (RMS " + Format("%.3f", Side(c, side).rms_px) + " px)");

@@ -25,14 +25,6 @@ void CoverageGrid::Add(const BoardView& view, int width, int height) {
   }
 }
 
-int CoverageGrid::CoveredCells() const {
-  return static_cast<int>(std::count_if(count.begin(), count.end(), [](int n) { return n > 0; }));
-}
-
-double CoverageGrid::CoveredFraction() const {
-  return count.empty() ? 0.0 : double(CoveredCells()) / count.size();
-}
-
 std::vector<std::string> CoverageGrid::EmptyRegions() const {
   // Region index 0..8 (row-major 3 x 3) of each cell; a region is empty when
   // at least half of its cells are.

@@ -124,11 +124,9 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
         rv = See(right, right_pose, object, options.edge_margin_px);
         if (rv.size() < options.min_visible * total) rv = BoardView();
       }
-      rig.exact_left.push_back(lv);
-      rig.exact_right.push_back(rv);
       for (auto* view : {&lv, &rv})
         for (auto& p : view->image) p += options.noise_px * Eigen::Vector2d(noise.Gaussian(), noise.Gaussian());
-      rig.data.Add(lv, rv, int64_t(v + 1) * 1000000);
+      rig.data.Add(lv, rv);
       rig.left_poses.push_back(pose);
       rig.right_poses.push_back(right_pose);
       ++halton;

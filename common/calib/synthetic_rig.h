@@ -46,7 +46,6 @@ struct SyntheticRig {
   StereoData data;                // the noisy corners
   std::vector<Pose> left_poses;   // true board -> left camera, per view
   std::vector<Pose> right_poses;  // true board -> right camera, per view
-  std::vector<BoardView> exact_left, exact_right;  // the corners without noise
 };
 
 SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options);
