@@ -5,14 +5,13 @@
 // p1 p2) and must reach the same RMS. Ratios are measured in one run.
 //
 //   build/bench/bench_calib [--repeats N]
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <vector>
-
-#include <CLI/CLI.hpp>
 #include <opencv2/calib3d.hpp>
+#include <vector>
 
 #include "calib/calibrate.h"
 #include "calib/synthetic_rig.h"
@@ -97,10 +96,11 @@ int main(int argc, char** argv) {
     ws::calib::CalibrationOptions options;
     options.model = "poly6";
     double ours_rms = 0;
-    const double ours_s =
-        MedianSeconds(repeats, [&] { ours_rms = ws::calib::CalibrateCamera(data, options).rms_px; });
+    const double ours_s = MedianSeconds(
+        repeats, [&] { ours_rms = ws::calib::CalibrateCamera(data, options).rms_px; });
     options.covariance = false;
-    const double nocov_s = MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, options); });
+    const double nocov_s =
+        MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, options); });
     std::printf("%6d %8d %12.4f %12.4f %12.4f %8.2f %12.5f %12.5f\n", views, corners, opencv_s,
                 ours_s, nocov_s, ours_s / opencv_s, opencv_rms, ours_rms);
   }

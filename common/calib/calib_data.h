@@ -6,12 +6,11 @@
 // camera that did not see the board in a frame has an empty view there.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "widestereo/stereo_corners_t.hpp"
 

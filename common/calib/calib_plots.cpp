@@ -103,13 +103,16 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
       panel.series.emplace_back("", std::vector<double>{-0.5, w, w, -0.5, -0.5},
                                 std::vector<double>{0.5, 0.5, -h, -h, 0.5}, plot::Style::kLines,
                                 "#c0c0c0");
-      if (!ax.empty()) panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
+      if (!ax.empty())
+        panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
       if (!px.empty()) {
-        plot::Series& dots = panel.series.emplace_back("cell", px, py, plot::Style::kPoints, "#0072b2");
+        plot::Series& dots =
+            panel.series.emplace_back("cell", px, py, plot::Style::kPoints, "#0072b2");
         dots.point_size = 0.5;
       }
       if (!ex.empty()) {
-        plot::Series& empty = panel.series.emplace_back("no corners", ex, ey, plot::Style::kPoints, "#808080");
+        plot::Series& empty =
+            panel.series.emplace_back("no corners", ex, ey, plot::Style::kPoints, "#808080");
         empty.point_type = 2;
         empty.point_size = 0.8;
       }

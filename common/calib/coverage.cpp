@@ -65,8 +65,8 @@ std::string CoverageHint(const CoverageStatus& s, int min_views) {
                     "): show the board tilted in different directions");
   else if (s.views_stereo < min_views)
     parts.push_back("need the board seen by both cameras at once (" +
-                    std::to_string(s.views_stereo) + " stereo views, " +
-                    std::to_string(min_views) + " needed)");
+                    std::to_string(s.views_stereo) + " stereo views, " + std::to_string(min_views) +
+                    " needed)");
   for (const auto* side : {"left", "right"}) {
     const CoverageGrid& grid = std::string(side) == "left" ? s.left : s.right;
     const auto empty = grid.EmptyRegions();

@@ -144,7 +144,8 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
   EXPECT_EQ(robust.outliers, moved);
   int flagged_moved = 0;
   for (const CornerResidual& r : robust.residuals)
-    flagged_moved += r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
+    flagged_moved +=
+        r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
   EXPECT_EQ(flagged_moved, moved);
   EXPECT_NEAR(robust.rms_px, floor, 0.1 * floor);
 
@@ -164,9 +165,10 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
       }
     return std::sqrt(sum / n);
   };
-  std::printf("rms over the corners not moved: least squares %.4f px, Cauchy loss %.4f px, "
-              "rejection %.4f px (noise floor %.4f px)\n",
-              good_rms(plain), good_rms(cauchy), good_rms(robust), floor);
+  std::printf(
+      "rms over the corners not moved: least squares %.4f px, Cauchy loss %.4f px, "
+      "rejection %.4f px (noise floor %.4f px)\n",
+      good_rms(plain), good_rms(cauchy), good_rms(robust), floor);
   EXPECT_GT(good_rms(plain), good_rms(cauchy));
   EXPECT_NEAR(good_rms(cauchy), floor, 0.1 * floor);
 }
