@@ -7,10 +7,9 @@
 
 namespace ws::calib {
 
-void StereoData::Add(const BoardView& left_view, const BoardView& right_view, int64_t utime) {
+void StereoData::Add(const BoardView& left_view, const BoardView& right_view) {
   left.views.push_back(left_view);
   right.views.push_back(right_view);
-  utimes.push_back(utime);
 }
 
 BoardView ToBoardView(const widestereo::camera_corners_t& msg) {
@@ -63,7 +62,7 @@ void TakeImageSize(CameraData& camera, const widestereo::camera_corners_t& msg) 
 void AddStereoCorners(StereoData& data, const widestereo::stereo_corners_t& msg) {
   TakeImageSize(data.left, msg.left);
   TakeImageSize(data.right, msg.right);
-  data.Add(ToBoardView(msg.left), ToBoardView(msg.right), msg.utime);
+  data.Add(ToBoardView(msg.left), ToBoardView(msg.right));
 }
 
 std::string ViewProblem(const BoardView& view, int min_points) {

@@ -6,12 +6,11 @@
 // camera that did not see the board in a frame has an empty view there.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "widestereo/stereo_corners_t.hpp"
 
@@ -51,10 +50,9 @@ struct StereoData {
   }
   CameraData left;
   CameraData right;
-  std::vector<int64_t> utimes;  // of each frame, for reports (may be empty)
 
   int size() const { return static_cast<int>(left.views.size()); }
-  void Add(const BoardView& left_view, const BoardView& right_view, int64_t utime = 0);
+  void Add(const BoardView& left_view, const BoardView& right_view);
 };
 
 // The corners of one camera in a message (board not seen: an empty view).

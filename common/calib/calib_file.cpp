@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
 #include <opencv2/core.hpp>
 
 #include "models/model_registry.h"
@@ -13,7 +12,8 @@ namespace ws::calib {
 namespace {
 
 const char* kHeader[] = {
-    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point (X,Y,Z):",
+    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point "
+    "(X,Y,Z):",
     "  x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
@@ -84,8 +84,8 @@ class Reader {
   Eigen::MatrixXd Matrix(const cv::FileNode& parent, const std::string& key,
                          const std::string& field, int rows, int cols) const {
     const cv::FileNode node = Required(parent, key, field);
-    const std::string shape = "not a " + std::to_string(rows) + "x" + std::to_string(cols) +
-                              " !!opencv-matrix";
+    const std::string shape =
+        "not a " + std::to_string(rows) + "x" + std::to_string(cols) + " !!opencv-matrix";
     cv::Mat mat;
     try {
       node >> mat;
@@ -196,8 +196,10 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
       for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
       T.at<double>(r) = file.T(r);
     }
-    fs << "stereo" << "{" << "R" << R << "T" << T << "rms" << file.rms << "baseline_m"
-       << file.T.norm() << "views" << file.views << "}";
+    fs << "stereo"
+       << "{"
+       << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
+       << file.views << "}";
     fs.release();
   }
   std::error_code error;
@@ -221,7 +223,8 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
   for (const auto* camera : {&f.left, &f.right})
     if (camera->distortion.kind != f.model)
-      in.Fail("model", "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
+      in.Fail("model",
+              "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
   const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
   if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
   f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);

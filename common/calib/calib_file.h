@@ -31,10 +31,9 @@
 //     views: ...                       stereo views used
 #pragma once
 
+#include <Eigen/Core>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "calib/calibrate.h"
 #include "models/camera_model.h"
@@ -48,8 +47,8 @@ struct CalibrationFile {
   int left_views = 0, right_views = 0;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
   Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
-  double rms = 0;  // stereo, pixels
-  int views = 0;   // stereo views
+  double rms = 0;                                   // stereo, pixels
+  int views = 0;                                    // stereo views
 };
 
 // What ReadCalibrationFile throws: "FILE: FIELD: REASON", e.g.

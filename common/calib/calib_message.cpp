@@ -46,19 +46,4 @@ widestereo::stereo_calibration_t ToMessage(const StereoCalibration& s, int64_t u
   return msg;
 }
 
-CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) {
-  CameraModel m;
-  m.image_width = msg.image_width;
-  m.image_height = msg.image_height;
-  m.fx = msg.fx;
-  m.fy = msg.fy;
-  m.cx = msg.cx;
-  m.cy = msg.cy;
-  m.p1 = msg.p1;
-  m.p2 = msg.p2;
-  m.distortion = Distortion{msg.model, msg.degree, msg.knots, msg.coeffs};
-  const Camera check(m);
-  return m;
-}
-
 }  // namespace ws::calib

@@ -2,7 +2,7 @@
 // back. camera_calibration_t carries the full coefficient vector (for a
 // B-spline alpha_0 = alpha_1 = 0 included), the parameter names and their
 // standard deviations; per-view RMS is over the input views, -1 for views
-// that were not used.
+// that were not used. (rectify/stereo_rig.h reads a message back.)
 #pragma once
 
 #include <cstdint>
@@ -15,9 +15,5 @@ namespace ws::calib {
 
 widestereo::camera_calibration_t ToMessage(const CameraCalibration& camera);
 widestereo::stereo_calibration_t ToMessage(const StereoCalibration& calibration, int64_t utime);
-
-// The camera model a message describes; throws std::invalid_argument when
-// it is inconsistent (Camera's checks).
-CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg);
 
 }  // namespace ws::calib

@@ -22,8 +22,7 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
 }  // namespace
 
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
-                              const std::string& png_path,
-                              const std::vector<ReferenceCurve>& references) {
+                              const std::string& png_path) {
   plot::Figure figure("Recovered radial distortion D(r) = r'/r - 1", 2, 1400, 600);
   for (int side = 0; side < 2; ++side) {
     const std::string name = side == 0 ? "left" : "right";
@@ -53,8 +52,6 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
       }
       panel.series.emplace_back(title, r, d);
     };
-    for (const auto& ref : references)
-      if (ref.camera == name) curve(ref.model, ref.title);
     for (const auto& c : calibrations)
       curve(Side(c, side).model,
             c.model + " (RMS " + Format("%.3f", Side(c, side).rms_px) + " px)");
@@ -106,13 +103,16 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
       panel.series.emplace_back("", std::vector<double>{-0.5, w, w, -0.5, -0.5},
                                 std::vector<double>{0.5, 0.5, -h, -h, 0.5}, plot::Style::kLines,
                                 "#c0c0c0");
-      if (!ax.empty()) panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
+      if (!ax.empty())
+        panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
       if (!px.empty()) {
-        plot::Series& dots = panel.series.emplace_back("cell", px, py, plot::Style::kPoints, "#0072b2");
+        plot::Series& dots =
+            panel.series.emplace_back("cell", px, py, plot::Style::kPoints, "#0072b2");
         dots.point_size = 0.5;
       }
       if (!ex.empty()) {
-        plot::Series& empty = panel.series.emplace_back("no corners", ex, ey, plot::Style::kPoints, "#808080");
+        plot::Series& empty =
+            panel.series.emplace_back("no corners", ex, ey, plot::Style::kPoints, "#808080");
         empty.point_type = 2;
         empty.point_size = 0.8;
       }

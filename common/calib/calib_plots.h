@@ -16,16 +16,8 @@
 
 namespace ws::calib {
 
-// A known curve to draw with the recovered ones (e.g. the true lens).
-struct ReferenceCurve {
-  std::string title;
-  std::string camera;  // "left" or "right"
-  CameraModel model;
-};
-
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
-                              const std::string& png_path,
-                              const std::vector<ReferenceCurve>& references = {});
+                              const std::string& png_path);
 
 void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
                          const std::string& png_path);

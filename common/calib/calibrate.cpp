@@ -18,7 +18,8 @@ void CheckOptions(const CalibrationOptions& options) {
     throw CalibrationError("unknown model '" + options.model + "' (known: " + known + ")");
   }
   if (options.knots < 2 || options.knots > 64)
-    throw CalibrationError("the B-spline needs 2 to 64 knots, not " + std::to_string(options.knots));
+    throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
+                           std::to_string(options.knots));
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
   if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
 }

@@ -18,10 +18,9 @@
 // the root mean square of the corners' pixel distances.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calib/calib_data.h"
 #include "calib/options.h"
@@ -35,11 +34,11 @@ namespace ws::calib {
 struct CameraCalibration {
   std::string name;
   CameraModel model;
-  double rms_px = 0;       // over all the camera's inlier corners
-  int views = 0;           // views used
-  int points = 0;          // inlier corners used
-  int outliers = 0;        // corners rejected as outliers
-  int invalid_points = 0;  // non-finite corners dropped
+  double rms_px = 0;                      // over all the camera's inlier corners
+  int views = 0;                          // views used
+  int points = 0;                         // inlier corners used
+  int outliers = 0;                       // corners rejected as outliers
+  int invalid_points = 0;                 // non-finite corners dropped
   std::vector<double> view_rms;           // per input view; negative: not used
   std::vector<Pose> board_poses;          // per input view, board -> this camera (used views)
   std::vector<std::string> skipped;       // why views were not used ("view 3: ...")
@@ -61,8 +60,10 @@ struct StereoCalibration {
   int views = 0;                 // stereo views used
   std::vector<double> view_rms;  // per input view; negative: not a stereo view
   std::vector<std::string> extrinsic_names;  // rx ry rz tx ty tz
-  std::vector<double> extrinsic_stddev;      // angle-axis radians, metres
-  double solve_seconds = 0;      // wall clock, not reproducible
+  // Angle-axis radians, metres. In the paper's flow they are those of R, T
+  // with the cameras held, so smaller than the joint flow's.
+  std::vector<double> extrinsic_stddev;
+  double solve_seconds = 0;  // wall clock, not reproducible
 };
 
 // Calibrates one camera from its views (empty views are skipped).

@@ -78,7 +78,8 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
       process_.ReportError("frame " + std::to_string(msg.frame_id) + " not used: " + why);
       break;
     case CalibrationSession::Outcome::kDuplicate:
-    case CalibrationSession::Outcome::kNoBoard: break;
+    case CalibrationSession::Outcome::kNoBoard:
+      break;
   }
 }
 
@@ -92,13 +93,19 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     const std::string key = arg.substr(0, eq);
     const std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
     try {
-      if (key == "model") models = ParseModelList(value);
-      else if (key == "knots") calibration.knots = std::stoi(value);
-      else if (key == "path") yaml = value;
-      else if (key == "report") json = value;
-      else throw std::invalid_argument("unknown argument");
+      if (key == "model")
+        models = ParseModelList(value);
+      else if (key == "knots")
+        calibration.knots = std::stoi(value);
+      else if (key == "path")
+        yaml = value;
+      else if (key == "report")
+        json = value;
+      else
+        throw std::invalid_argument("unknown argument");
     } catch (const std::exception& e) {
-      process_.ReportError("command '" + msg.command + "': bad argument '" + arg + "': " + e.what());
+      process_.ReportError("command '" + msg.command + "': bad argument '" + arg +
+                           "': " + e.what());
       return;
     }
   }
@@ -173,7 +180,8 @@ void CalibrateNode::WriteFiles(const std::vector<StereoCalibration>& results,
       }
   }
   if (!json.empty()) {
-    WriteJsonFile(json, results.size() == 1 ? StereoReport(results.front()) : ModelsReport(results));
+    WriteJsonFile(json,
+                  results.size() == 1 ? StereoReport(results.front()) : ModelsReport(results));
     process_.log().Info("wrote " + json);
   }
 }
@@ -199,7 +207,8 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
            << r.rms_px << " px (" << r.views << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right})
-        for (const auto& skipped : camera->skipped) process_.log().Detail(camera->name + " " + skipped);
+        for (const auto& skipped : camera->skipped)
+          process_.log().Detail(camera->name + " " + skipped);
     }
     if (results.size() > 1) {
       std::istringstream table(FormatTableII(TableRows(results)));

@@ -3,10 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
 #include <vector>
-
-#include <lcm/lcm-cpp.hpp>
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
@@ -67,7 +66,8 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
     if (side->n <= 0) continue;
     if (board_id_.empty()) board_id_ = side->board_id;
     if (side->board_id != board_id_) {
-      if (why) *why = "board '" + side->board_id + "' differs from the board so far, '" + board_id_ + "'";
+      if (why)
+        *why = "board '" + side->board_id + "' differs from the board so far, '" + board_id_ + "'";
       return Outcome::kRejected;
     }
   }
@@ -144,8 +144,7 @@ int CalibrationSession::duplicates() const {
   return duplicates_;
 }
 
-widestereo::calibration_status_t CalibrationSession::Status(int64_t utime,
-                                                            const std::string& state,
+widestereo::calibration_status_t CalibrationSession::Status(int64_t utime, const std::string& state,
                                                             double rms) const {
   std::lock_guard<std::mutex> lock(mutex_);
   CoverageStatus c;

@@ -4,13 +4,12 @@
 // block, plus how a solve treats them.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calib/options.h"
 #include "models/camera_model.h"

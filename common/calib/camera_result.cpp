@@ -47,7 +47,8 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
   out.param_names = ParamNames(camera);
   out.stddev = stddev;
   out.init_method = init_method;
-  out.grid = MakeResidualGrid(out.residuals, p.width, p.height, options.grid_rows, options.grid_cols);
+  out.grid =
+      MakeResidualGrid(out.residuals, p.width, p.height, options.grid_rows, options.grid_cols);
   return out;
 }
 

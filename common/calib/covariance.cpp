@@ -1,10 +1,10 @@
 #include "calib/covariance.h"
 
+#include <ceres/crs_matrix.h>
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <cmath>
-
-#include <ceres/crs_matrix.h>
 
 namespace ws::calib {
 

@@ -11,11 +11,11 @@
 // Ceres's general covariance for hundreds of pose parameters.
 #pragma once
 
-#include <optional>
-#include <vector>
+#include <ceres/problem.h>
 
 #include <Eigen/Core>
-#include <ceres/problem.h>
+#include <optional>
+#include <vector>
 
 namespace ws::calib {
 

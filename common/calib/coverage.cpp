@@ -25,14 +25,6 @@ void CoverageGrid::Add(const BoardView& view, int width, int height) {
   }
 }
 
-int CoverageGrid::CoveredCells() const {
-  return static_cast<int>(std::count_if(count.begin(), count.end(), [](int n) { return n > 0; }));
-}
-
-double CoverageGrid::CoveredFraction() const {
-  return count.empty() ? 0.0 : double(CoveredCells()) / count.size();
-}
-
 std::vector<std::string> CoverageGrid::EmptyRegions() const {
   // Region index 0..8 (row-major 3 x 3) of each cell; a region is empty when
   // at least half of its cells are.
@@ -73,8 +65,8 @@ std::string CoverageHint(const CoverageStatus& s, int min_views) {
                     "): show the board tilted in different directions");
   else if (s.views_stereo < min_views)
     parts.push_back("need the board seen by both cameras at once (" +
-                    std::to_string(s.views_stereo) + " stereo views, " +
-                    std::to_string(min_views) + " needed)");
+                    std::to_string(s.views_stereo) + " stereo views, " + std::to_string(min_views) +
+                    " needed)");
   for (const auto* side : {"left", "right"}) {
     const CoverageGrid& grid = std::string(side) == "left" ? s.left : s.right;
     const auto empty = grid.EmptyRegions();

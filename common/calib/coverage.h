@@ -22,8 +22,6 @@ struct CoverageGrid {
   CoverageGrid() = default;
   CoverageGrid(int rows, int cols);
   void Add(const BoardView& view, int image_width, int image_height);
-  int CoveredCells() const;
-  double CoveredFraction() const;
   // 3 x 3 regions: "top-left corner", "top edge", ..., "centre"; cells in the
   // outer ring of the grid belong to the edges and corners.
   std::vector<std::string> EmptyRegions() const;

@@ -128,7 +128,8 @@ namespace {
 // Zhang's constraints h1^T B h2 = 0 and h1^T B h1 = h2^T B h2 on
 // B = K^-T K^-1 with the principal point at the origin (B = diag(1/fx^2,
 // 1/fy^2, 1)): rows of A (in 1/fx^2, 1/fy^2) and the right-hand side.
-void CentredSystem(const std::vector<Eigen::Matrix3d>& Hs, Eigen::MatrixXd* A, Eigen::VectorXd* rhs) {
+void CentredSystem(const std::vector<Eigen::Matrix3d>& Hs, Eigen::MatrixXd* A,
+                   Eigen::VectorXd* rhs) {
   const int n = static_cast<int>(Hs.size());
   A->resize(2 * n, 2);
   rhs->resize(2 * n);
@@ -136,7 +137,8 @@ void CentredSystem(const std::vector<Eigen::Matrix3d>& Hs, Eigen::MatrixXd* A, E
     const Eigen::Matrix3d& H = Hs[k];
     A->row(2 * k) << H(0, 0) * H(0, 1), H(1, 0) * H(1, 1);
     (*rhs)(2 * k) = -H(2, 0) * H(2, 1);
-    A->row(2 * k + 1) << H(0, 0) * H(0, 0) - H(0, 1) * H(0, 1), H(1, 0) * H(1, 0) - H(1, 1) * H(1, 1);
+    A->row(2 * k + 1) << H(0, 0) * H(0, 0) - H(0, 1) * H(0, 1),
+        H(1, 0) * H(1, 0) - H(1, 1) * H(1, 1);
     (*rhs)(2 * k + 1) = -(H(2, 0) * H(2, 0) - H(2, 1) * H(2, 1));
   }
 }

@@ -10,11 +10,10 @@
 // principal point starts at the image centre, and every result is checked.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calib/calib_data.h"
 #include "calib/pose.h"

@@ -80,12 +80,11 @@ Init Initialize(Prepared& p, const CalibrationOptions& options) {
   }
   RequireViews(p, options.min_views);
   init.pinhole = ZhangIntrinsics(found, p.width, p.height);
-  Say(options, p.name + ": " + init.pinhole.method + " start from " +
-                   std::to_string(found.size()) + " views: fx " + Fixed(init.pinhole.fx, 2) +
-                   " fy " + Fixed(init.pinhole.fy, 2) + " cx " + Fixed(init.pinhole.cx, 2) +
-                   " cy " + Fixed(init.pinhole.cy, 2));
-  const double intrinsics[kNumIntrinsics] = {init.pinhole.fx, init.pinhole.fy, init.pinhole.cx,
-                                             init.pinhole.cy, 0, 0};
+  Say(options, p.name + ": " + init.pinhole.method + " start from " + std::to_string(found.size()) +
+                   " views: fx " + Fixed(init.pinhole.fx, 2) + " fy " + Fixed(init.pinhole.fy, 2) +
+                   " cx " + Fixed(init.pinhole.cx, 2) + " cy " + Fixed(init.pinhole.cy, 2));
+  const double intrinsics[kNumIntrinsics] = {
+      init.pinhole.fx, init.pinhole.fy, init.pinhole.cx, init.pinhole.cy, 0, 0};
   init.poses.resize(n);
   std::vector<Pose> used;
   for (int v = 0; v < n; ++v) {

@@ -2,10 +2,9 @@
 // closed form on them (homography.h): pinhole intrinsics and a pose per view.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calib/calib_data.h"
 #include "calib/homography.h"
@@ -48,7 +47,7 @@ Init Initialize(Prepared& prepared, const CalibrationOptions& options);
 
 // The pose of view `view` from its homography under the pinhole (fx, fy,
 // cx, cy); false when it puts the board behind the camera.
-bool HomographyPose(const Init& init, const Prepared& prepared, int view,
-                    const double* intrinsics, Pose* pose);
+bool HomographyPose(const Init& init, const Prepared& prepared, int view, const double* intrinsics,
+                    Pose* pose);
 
 }  // namespace ws::calib

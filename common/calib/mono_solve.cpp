@@ -110,7 +110,8 @@ void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoSt
   Inliers disc(p.views.size());
   bool everything = false;
   double fraction = 0.25;
-  while (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views && !everything)
+  while (MarkDisc(pinhole, p, fraction, min_points, &disc, &everything) < options.min_views &&
+         !everything)
     fraction *= 1.4;
   // Poses from Zhang's K can be far off for a strongly distorted lens: the
   // fit alternates with refitting each view's pose, while that helps.
@@ -151,15 +152,16 @@ void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoSt
     Solve(stage_problem,
           StageSettings(options, what + " within " + Fixed(fraction, 2), options.max_iterations));
     camera = stage_problem.cameras[0];
-    Say(options, what + ": " + std::to_string(stage_problem.observations.size()) + " views within " +
-                     Fixed(fraction, 2) + " of the half-diagonal: rms " +
+    Say(options, what + ": " + std::to_string(stage_problem.observations.size()) +
+                     " views within " + Fixed(fraction, 2) + " of the half-diagonal: rms " +
                      Fixed(Rms(Residuals(stage_problem, 0))) + " px, fx " +
                      Fixed(camera.intrinsics[kFx], 2) + ", r_max " + Fixed(r_max, 3));
   }
   camera.free_coeffs = -1;
 
   // Every corner, without the views that still fit badly.
-  const std::vector<bool> good = RefitPoses(camera, p, init, s->inliers, false, options, what, &s->poses);
+  const std::vector<bool> good =
+      RefitPoses(camera, p, init, s->inliers, false, options, what, &s->poses);
   for (size_t v = 0; v < good.size(); ++v)
     if (!good[v]) p.Skip(int(v), "no board pose fits its corners (a mirrored or partial view?)");
   RequireViews(p, options.min_views);

@@ -49,12 +49,12 @@ struct CalibrationOptions {
   double outlier_sigma = 0;
   double outlier_min_px = 0.25;
 
-  int min_views = 3;                // per camera
-  int min_stereo_views = 3;         // views where both cameras see the board
+  int min_views = 3;         // per camera
+  int min_stereo_views = 3;  // views where both cameras see the board
   int min_points_per_view = 6;
   double min_view_angle_deg = 5.0;  // the board normals must spread at least this much
   StereoFlow flow = StereoFlow::kJoint;
-  bool covariance = true;           // parameter standard deviations
+  bool covariance = true;  // parameter standard deviations
   int max_iterations = 100;
   int grid_rows = 6, grid_cols = 8;  // the residual pattern per image region
   // Receives one line per stage (initialisation, each solve, r_max), for

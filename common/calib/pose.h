@@ -3,11 +3,11 @@
 // tz), X_to = R X_from + t.
 #pragma once
 
-#include <array>
-#include <cmath>
+#include <ceres/rotation.h>
 
 #include <Eigen/Core>
-#include <ceres/rotation.h>
+#include <array>
+#include <cmath>
 
 namespace ws::calib {
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
 #include <opencv2/calib3d.hpp>
 
 #include "calib/stage_log.h"
@@ -65,8 +64,7 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
   const int n = static_cast<int>(p.views.size());
   std::vector<double> rms(n, -1.0);  // -1: not refitted
   for (int v = 0; v < n; ++v) {
-    if (!p.usable[v] ||
-        std::count(mask[v].begin(), mask[v].end(), 1) < options.min_points_per_view)
+    if (!p.usable[v] || std::count(mask[v].begin(), mask[v].end(), 1) < options.min_points_per_view)
       continue;
     Pose pose;
     if (from_homography && HomographyPose(init, p, v, camera.intrinsics.data(), &pose))

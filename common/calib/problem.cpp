@@ -1,11 +1,11 @@
 #include "calib/problem.h"
 
-#include <algorithm>
-#include <map>
-#include <cmath>
-#include <memory>
-
 #include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
 
 #include "calib/covariance.h"
 #include "calib/residuals.h"
@@ -16,9 +16,12 @@ namespace {
 
 ceres::LossFunction* MakeLoss(const SolveSettings& settings) {
   switch (settings.robust_loss) {
-    case RobustLoss::kHuber: return new ceres::HuberLoss(settings.robust_scale_px);
-    case RobustLoss::kCauchy: return new ceres::CauchyLoss(settings.robust_scale_px);
-    case RobustLoss::kNone: break;
+    case RobustLoss::kHuber:
+      return new ceres::HuberLoss(settings.robust_scale_px);
+    case RobustLoss::kCauchy:
+      return new ceres::CauchyLoss(settings.robust_scale_px);
+    case RobustLoss::kNone:
+      break;
   }
   return nullptr;
 }
@@ -119,7 +122,8 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
           built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
     }
     double* pose = arena[o.pose->data.data()];
-    if (!costs.empty() && std::find(built->poses.begin(), built->poses.end(), pose) == built->poses.end())
+    if (!costs.empty() &&
+        std::find(built->poses.begin(), built->poses.end(), pose) == built->poses.end())
       built->poses.push_back(pose);
   }
   problem.observations = kept;
@@ -230,7 +234,8 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
   for (double* block : built.free_blocks) free_parameters += built.ceres.ParameterBlockSize(block);
   const int dof = built.data_residuals - free_parameters;
   if (dof <= 0) return;
-  const auto covariance = CameraCovariance(built.ceres, built.free_blocks, built.poses, 2 * cost / dof);
+  const auto covariance =
+      CameraCovariance(built.ceres, built.free_blocks, built.poses, 2 * cost / dof);
   if (!covariance) return;
   int offset = 0;
   for (size_t b = 0; b < built.free_blocks.size(); ++b) {

@@ -3,9 +3,8 @@
 // pattern: residuals pointing in or out, growing towards the periphery).
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace ws::calib {
 
@@ -29,9 +28,9 @@ std::vector<double> ViewRms(const std::vector<CornerResidual>& residuals, int nu
 struct ResidualGrid {
   int rows = 0, cols = 0;
   int image_width = 0, image_height = 0;
-  std::vector<int> count;              // row-major
-  std::vector<Eigen::Vector2d> mean;   // mean residual
-  std::vector<double> rms;             // 0 where count is 0
+  std::vector<int> count;             // row-major
+  std::vector<Eigen::Vector2d> mean;  // mean residual
+  std::vector<double> rms;            // 0 where count is 0
 
   int Cell(double u, double v) const;  // -1 outside the image
   Eigen::Vector2d CellCentre(int cell) const;

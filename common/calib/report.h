@@ -22,10 +22,9 @@
 // "solve_seconds" differs between runs on the same input.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "calib/calibrate.h"
 

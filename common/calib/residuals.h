@@ -18,15 +18,15 @@
 // dynamic automatic differentiation, which gives the same numbers more slowly.
 #pragma once
 
+#include <ceres/autodiff_cost_function.h>
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <ceres/rotation.h>
+
+#include <Eigen/Core>
 #include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
-#include <ceres/autodiff_cost_function.h>
-#include <ceres/dynamic_autodiff_cost_function.h>
-#include <ceres/rotation.h>
 
 #include "models/model_registry.h"
 #include "models/pinhole_camera.h"

@@ -102,9 +102,8 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
                      outcome.message + ")");
     for (int c = 0; c < 2; ++c)
-      (c == 0 ? out.left : out.right) = CameraResult(problem, c, mono[c].prepared,
-                                                     outcome.stddev_camera[c], mono[c].init_method,
-                                                     options);
+      (c == 0 ? out.left : out.right) = CameraResult(
+          problem, c, mono[c].prepared, outcome.stddev_camera[c], mono[c].init_method, options);
   }
   out.R = problem.extrinsic.R();
   out.T = problem.extrinsic.t();

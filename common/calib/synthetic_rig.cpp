@@ -107,28 +107,31 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
       if (!ray) continue;
       // Board z axis along the ray (away from the camera), then tilted and rolled.
       const Eigen::Vector3d z = ray->normalized();
-      const Eigen::Vector3d a = std::abs(z.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+      const Eigen::Vector3d a =
+          std::abs(z.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
       const Eigen::Vector3d x = (a - a.dot(z) * z).normalized();
       const Eigen::Vector3d y = z.cross(x);
       Eigen::Matrix3d facing;
       facing << x, y, z;
-      const Eigen::Vector3d tilt_axis = std::cos(tilt_axis_angle) * x + std::sin(tilt_axis_angle) * y;
-      const Eigen::Matrix3d R = Eigen::AngleAxisd(tilt, tilt_axis).toRotationMatrix() * facing *
-                                Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      const Eigen::Vector3d tilt_axis =
+          std::cos(tilt_axis_angle) * x + std::sin(tilt_axis_angle) * y;
+      const Eigen::Matrix3d R =
+          Eigen::AngleAxisd(tilt, tilt_axis).toRotationMatrix() * facing *
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()).toRotationMatrix();
       const Pose pose = Pose::FromRt(R, distance * z - R * centre);
       BoardView lv = See(left, pose, object, options.edge_margin_px);
       if (lv.size() < options.min_visible * total) continue;
-      const Pose right_pose = Pose::FromRt(extrinsic.R() * pose.R(), extrinsic.R() * pose.t() + extrinsic.t());
+      const Pose right_pose =
+          Pose::FromRt(extrinsic.R() * pose.R(), extrinsic.R() * pose.t() + extrinsic.t());
       BoardView rv;
       if (options.stereo) {
         rv = See(right, right_pose, object, options.edge_margin_px);
         if (rv.size() < options.min_visible * total) rv = BoardView();
       }
-      rig.exact_left.push_back(lv);
-      rig.exact_right.push_back(rv);
       for (auto* view : {&lv, &rv})
-        for (auto& p : view->image) p += options.noise_px * Eigen::Vector2d(noise.Gaussian(), noise.Gaussian());
-      rig.data.Add(lv, rv, int64_t(v + 1) * 1000000);
+        for (auto& p : view->image)
+          p += options.noise_px * Eigen::Vector2d(noise.Gaussian(), noise.Gaussian());
+      rig.data.Add(lv, rv);
       rig.left_poses.push_back(pose);
       rig.right_poses.push_back(right_pose);
       ++halton;

@@ -14,10 +14,9 @@
 // that view; a view the left camera does not see is drawn again.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calib/calib_data.h"
 #include "calib/pose.h"
@@ -29,7 +28,7 @@ struct SyntheticRigOptions {
   CameraModel left, right;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
   Eigen::Vector3d T{-0.12, 0, 0};
-  bool stereo = true;  // false: the right camera sees nothing
+  bool stereo = true;                   // false: the right camera sees nothing
   int board_cols = 12, board_rows = 9;  // inner corners
   double square = 0.04;                 // metres
   int views = 30;
@@ -46,7 +45,6 @@ struct SyntheticRig {
   StereoData data;                // the noisy corners
   std::vector<Pose> left_poses;   // true board -> left camera, per view
   std::vector<Pose> right_poses;  // true board -> right camera, per view
-  std::vector<BoardView> exact_left, exact_right;  // the corners without noise
 };
 
 SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options);

@@ -18,33 +18,42 @@ int main(int argc, char** argv) {
   ws::calib::CalibrationOptions& calib = node.calibration;
   std::string model = "bspline", flow = "joint", loss = "none", state;
   auto& app = cli.app();
-  app.add_option("--model", model, "bspline, poly6, poly12 or all (Table II; the first is published)")
+  app.add_option("--model", model,
+                 "bspline, poly6, poly12 or all (Table II; the first is published)")
       ->check(CLI::IsMember({"bspline", "poly6", "poly12", "all"}))
       ->capture_default_str();
   app.add_option("--knots", calib.knots, "Estimated B-spline coefficients (distinct knots)")
       ->check(CLI::Range(2, 64))
       ->capture_default_str();
-  app.add_option("--smoothness", calib.smoothness, "B-spline smoothness prior weight lambda (0: off)")
+  app.add_option("--smoothness", calib.smoothness,
+                 "B-spline smoothness prior weight lambda (0: off)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--flow", flow, "joint (one solve of everything) or paper (cameras first, then R, T)")
+  app.add_option("--flow", flow,
+                 "joint (one solve of everything) or paper (cameras first, then R, T)")
       ->check(CLI::IsMember({"joint", "paper"}))
       ->capture_default_str();
   app.add_option("--robust-loss", loss, "none, huber or cauchy (scale --robust-scale)")
       ->check(CLI::IsMember({"none", "huber", "cauchy"}))
       ->capture_default_str();
-  app.add_option("--robust-scale", calib.robust_scale_px, "Robust loss scale, pixels")->capture_default_str();
-  app.add_option("--outlier-sigma", calib.outlier_sigma,
-                 "Leave out corners farther than this many sigma from their projection (0: keep all)")
+  app.add_option("--robust-scale", calib.robust_scale_px, "Robust loss scale, pixels")
+      ->capture_default_str();
+  app.add_option(
+         "--outlier-sigma", calib.outlier_sigma,
+         "Leave out corners farther than this many sigma from their projection (0: keep all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--min-views", calib.min_views, "Views each camera needs")->check(CLI::Range(3, 1000))->capture_default_str();
-  app.add_option("--duplicate-px", node.session.duplicate_px,
-                 "A view whose corners are on average this close to a kept view's is a near duplicate "
-                 "(0: 1.5 % of the image diagonal)")
+  app.add_option("--min-views", calib.min_views, "Views each camera needs")
+      ->check(CLI::Range(3, 1000))
+      ->capture_default_str();
+  app.add_option(
+         "--duplicate-px", node.session.duplicate_px,
+         "A view whose corners are on average this close to a kept view's is a near duplicate "
+         "(0: 1.5 % of the image diagonal)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_flag("--once", node.once, "Solve at the end of a file:// input (or at the first solve command) and exit");
+  app.add_flag("--once", node.once,
+               "Solve at the end of a file:// input (or at the first solve command) and exit");
   app.add_option("--out", node.out_yaml,
                  "Calibration file to write (YAML, cv::FileStorage) of the first model; with several "
                  "models also FILE.MODEL.yaml for each (calib.poly6.yaml)");

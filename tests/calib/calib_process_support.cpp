@@ -16,8 +16,9 @@ std::string FileUrl(const std::string& path, const std::string& mode) {
 std::string CaptureAndDetect(const std::string& dir, const std::string& source,
                              const std::string& board, const std::vector<std::string>& extra) {
   const std::string images = dir + "/images.lcmlog", corners = dir + "/corners.lcmlog";
-  std::vector<std::string> capture = {"stereo-capture", "--source", source, "--log-dir", dir,
-                                      "--quiet", "--out-url", FileUrl(images, "mode=w")};
+  std::vector<std::string> capture = {
+      "stereo-capture",         "--source", source, "--log-dir", dir, "--quiet", "--out-url",
+      FileUrl(images, "mode=w")};
   capture.insert(capture.end(), extra.begin(), extra.end());
   const auto captured = ws::test::RunCommand(capture, 120);
   EXPECT_EQ(captured.exit_code, 0) << captured.output;
@@ -31,10 +32,18 @@ std::string CaptureAndDetect(const std::string& dir, const std::string& source,
 
 ws::test::CommandResult CalibrateOnce(const std::string& dir, const std::string& corners,
                                       const std::string& name, std::vector<std::string> extra) {
-  std::vector<std::string> argv = {
-      "stereo-calibrate", "--once", "--log-dir", dir, "--in-url", FileUrl(corners, "speed=0"),
-      "--out-url", FileUrl(dir + "/" + name + ".lcmlog", "mode=w"), "--out",
-      dir + "/" + name + ".yaml", "--report", dir + "/" + name + ".json"};
+  std::vector<std::string> argv = {"stereo-calibrate",
+                                   "--once",
+                                   "--log-dir",
+                                   dir,
+                                   "--in-url",
+                                   FileUrl(corners, "speed=0"),
+                                   "--out-url",
+                                   FileUrl(dir + "/" + name + ".lcmlog", "mode=w"),
+                                   "--out",
+                                   dir + "/" + name + ".yaml",
+                                   "--report",
+                                   dir + "/" + name + ".json"};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return ws::test::RunCommand(argv, 120);
 }

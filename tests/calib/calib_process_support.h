@@ -2,10 +2,9 @@
 // log, for the stereo-calibrate tests.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "calib/calib_data.h"
 #include "test_support.h"

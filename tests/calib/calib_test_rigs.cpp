@@ -1,12 +1,11 @@
 #include "calib_test_rigs.h"
 
+#include <ceres/ceres.h>
+#include <ceres/rotation.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-
-#include <ceres/ceres.h>
-#include <ceres/rotation.h>
 
 namespace ws::calib::test {
 
@@ -94,8 +93,10 @@ ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& 
   const double zero[3] = {0, 0, 0};
   for (const TurnedProjection& point : points) {
     double turned[2], direct[2];
-    error.turned_px = std::max(error.turned_px, point(q, turned) ? std::hypot(turned[0], turned[1]) : INFINITY);
-    error.direct_px = std::max(error.direct_px, point(zero, direct) ? std::hypot(direct[0], direct[1]) : INFINITY);
+    error.turned_px =
+        std::max(error.turned_px, point(q, turned) ? std::hypot(turned[0], turned[1]) : INFINITY);
+    error.direct_px = std::max(error.direct_px,
+                               point(zero, direct) ? std::hypot(direct[0], direct[1]) : INFINITY);
   }
   error.rotation_rad = Eigen::Vector3d(q[0], q[1], q[2]).norm();
   return error;
@@ -110,7 +111,8 @@ void ExpectParametersWithin(const CameraModel& truth, const CameraCalibration& e
   std::vector<double> e(estimated_intrinsics.begin(), estimated_intrinsics.end());
   if (with_coeffs) {
     t.insert(t.end(), truth.distortion.coeffs.begin(), truth.distortion.coeffs.end());
-    e.insert(e.end(), estimate.model.distortion.coeffs.begin(), estimate.model.distortion.coeffs.end());
+    e.insert(e.end(), estimate.model.distortion.coeffs.begin(),
+             estimate.model.distortion.coeffs.end());
   }
   ASSERT_LE(e.size(), estimate.stddev.size());
   for (size_t i = 0; i < e.size(); ++i)

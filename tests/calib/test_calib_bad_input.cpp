@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "calib_test_rigs.h"
 
@@ -143,9 +144,33 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
   EXPECT_EQ(robust.outliers, moved);
   int flagged_moved = 0;
   for (const CornerResidual& r : robust.residuals)
-    flagged_moved += r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
+    flagged_moved +=
+        r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
   EXPECT_EQ(flagged_moved, moved);
   EXPECT_NEAR(robust.rms_px, floor, 0.1 * floor);
+
+  // A robust loss instead: the moved corners pull the camera far less.
+  options.outlier_sigma = 0;
+  options.robust_loss = RobustLoss::kCauchy;
+  options.robust_scale_px = 0.5;
+  const CameraCalibration cauchy = CalibrateCamera(rig.data.left, options);
+  // How far each fit is from the corners that were not moved.
+  auto good_rms = [&](const CameraCalibration& c) {
+    double sum = 0;
+    int n = 0;
+    for (const CornerResidual& r : c.residuals)
+      if (!((r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13))) {
+        sum += r.residual.squaredNorm();
+        ++n;
+      }
+    return std::sqrt(sum / n);
+  };
+  std::printf(
+      "rms over the corners not moved: least squares %.4f px, Cauchy loss %.4f px, "
+      "rejection %.4f px (noise floor %.4f px)\n",
+      good_rms(plain), good_rms(cauchy), good_rms(robust), floor);
+  EXPECT_GT(good_rms(plain), good_rms(cauchy));
+  EXPECT_NEAR(good_rms(cauchy), floor, 0.1 * floor);
 }
 
 TEST(CalibBadInput, ImageSizeChangesAndBadOptionsAreRefused) {

@@ -4,9 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
-
 #include <opencv2/core.hpp>
+#include <sstream>
 
 #include "calib/calib_file.h"
 #include "calib/synthetic_rig.h"
@@ -111,7 +110,8 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
       {"rows: 3\n      cols: 3", "rows: 1\n      cols: 9", "left.camera_matrix", "3x3"},
       {"   model: bspline\n", "   model: fisheye\n", "left.model", "unknown model"},
       {"   degree: 3\n", "   degree: 0\n", "left.degree", "below 1"},
-      {"   knots: [ 0., 0., 0., 0.,", "   knots: [ 0., 0., 0., 1.,", "left.knots", "must not decrease"},
+      {"   knots: [ 0., 0., 0., 0.,", "   knots: [ 0., 0., 0., 1.,", "left.knots",
+       "must not decrease"},
       {"   alpha: [ 0.,", "   alpha: [ .Nan,", "left.alpha[0]", "not finite"},
       {"   alpha: [ 0.,", "   alpha: [", "left.alpha", "coefficients"},
       {"   p1: ", "   p1: abc\n   p1_was: ", "left.p1", "not a number"},
@@ -148,7 +148,8 @@ TEST(CalibFile, RejectsARotationThatIsNot) {
     ReadCalibrationFile(path);
     FAIL() << "accepted a stretched R";
   } catch (const CalibrationFileError& e) {
-    EXPECT_NE(std::string(e.what()).find(": stereo.R: not a rotation"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": stereo.R: not a rotation"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -40,11 +40,12 @@ TEST(CalibSynthetic, MustacheBsplineMatchesTheTruth) {
     const CameraCalibration& camera = *cameras[c];
     const double floor = TruthRms(truth, rig, c);
     const ProjectionError error = MaxProjectionError(*true_models[c], camera.model, *data[c]);
-    std::printf("%s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
-                "(%.4f px without the best rotation of %.1e rad), %d views, largest observed "
-                "radius %.3f\n",
-                camera.name.c_str(), camera.rms_px, floor, error.turned_px, error.direct_px,
-                error.rotation_rad, camera.views, camera.max_observed_radius);
+    std::printf(
+        "%s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
+        "(%.4f px without the best rotation of %.1e rad), %d views, largest observed "
+        "radius %.3f\n",
+        camera.name.c_str(), camera.rms_px, floor, error.turned_px, error.direct_px,
+        error.rotation_rad, camera.views, camera.max_observed_radius);
     EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << camera.name;
     EXPECT_LE(error.turned_px, 0.1) << camera.name;
     EXPECT_EQ(camera.outliers, 0);
@@ -64,7 +65,8 @@ TEST(CalibSynthetic, MustacheTableIIPolynomialsCannotFollow) {
   const auto results =
       CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6", "poly12"});
   std::vector<TableRow> rows = TableRows(results);
-  rows.push_back({"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  rows.push_back(
+      {"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
   std::printf("%s", FormatTableII(rows, "Table II, synthetic mustache rig [px]").c_str());
   const StereoCalibration& bspline = results[0];
   const StereoCalibration& poly6 = results[1];
@@ -75,18 +77,19 @@ TEST(CalibSynthetic, MustacheTableIIPolynomialsCannotFollow) {
 TEST(CalibSynthetic, BarrelLensBothModelsReachTheNoiseFloor) {
   const SyntheticRigOptions truth = BarrelRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
-  const auto results = CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6"});
+  const auto results =
+      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6"});
   std::vector<TableRow> rows = TableRows(results);
-  rows.push_back({"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  rows.push_back(
+      {"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
   std::printf("%s", FormatTableII(rows, "Table II, synthetic barrel rig [px]").c_str());
   for (const StereoCalibration& result : results) {
     for (int c = 0; c < 2; ++c) {
       const CameraCalibration& camera = c == 0 ? result.left : result.right;
       const double floor = TruthRms(truth, rig, c);
       EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << result.model << " " << camera.name;
-      const ProjectionError error = MaxProjectionError(c == 0 ? truth.left : truth.right,
-                                                       camera.model,
-                                                       c == 0 ? rig.data.left : rig.data.right);
+      const ProjectionError error = MaxProjectionError(
+          c == 0 ? truth.left : truth.right, camera.model, c == 0 ? rig.data.left : rig.data.right);
       std::printf("%s %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
                   result.model.c_str(), camera.name.c_str(), error.turned_px, error.direct_px);
     }

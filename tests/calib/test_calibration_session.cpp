@@ -69,7 +69,8 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
     for (int v = 0; v < 5; ++v) session.Add(Message(rig, v, board));
   }
   {  // a process killed while writing the next view leaves half an event
-    std::ofstream(state, std::ios::app | std::ios::binary) << std::string("\xED\xA1\xDA\x01partial", 11);
+    std::ofstream(state, std::ios::app | std::ios::binary)
+        << std::string("\xED\xA1\xDA\x01partial", 11);
   }
   {
     CalibrationSession session(options);

@@ -8,9 +8,8 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
-#include <thread>
-
 #include <lcm/lcm-cpp.hpp>
+#include <thread>
 
 #include "calib_test_rigs.h"
 #include "lcm_io/channels.h"
@@ -33,14 +32,17 @@ struct Bus {
     lcm.subscribe(ws::channel::kStereoCalibration, &Bus::OnCalibration, this);
     lcm.subscribe(ws::channel::kProcessStatus, &Bus::OnHeartbeat, this);
   }
-  void OnStatus(const lcm::ReceiveBuffer*, const std::string&, const widestereo::calibration_status_t* s) {
+  void OnStatus(const lcm::ReceiveBuffer*, const std::string&,
+                const widestereo::calibration_status_t* s) {
     statuses.push_back(*s);
     status_times.push_back(Clock::now());
   }
-  void OnCalibration(const lcm::ReceiveBuffer*, const std::string&, const widestereo::stereo_calibration_t* c) {
+  void OnCalibration(const lcm::ReceiveBuffer*, const std::string&,
+                     const widestereo::stereo_calibration_t* c) {
     calibrations.push_back(*c);
   }
-  void OnHeartbeat(const lcm::ReceiveBuffer*, const std::string&, const widestereo::process_status_t* s) {
+  void OnHeartbeat(const lcm::ReceiveBuffer*, const std::string&,
+                   const widestereo::process_status_t* s) {
     if (s->name == "stereo-calibrate") pid = s->pid;
   }
   // Handles messages until `done` or `seconds` have passed; returns `done`.
@@ -80,9 +82,9 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   SyntheticRigOptions options = BarrelRig();
   options.views = 12;
   const SyntheticRig rig = MakeSyntheticRig(options);
-  const std::vector<std::string> argv = {"stereo-calibrate", "--in-url", url, "--out-url", url,
-                                         "--log-dir", dir, "--state", state, "--model", "poly6",
-                                         "--out", dir + "/calib.yaml"};
+  const std::vector<std::string> argv = {
+      "stereo-calibrate", "--in-url", url,       "--out-url", url,     "--log-dir",        dir,
+      "--state",          state,      "--model", "poly6",     "--out", dir + "/calib.yaml"};
   Bus bus(url);
   ASSERT_TRUE(bus.lcm.good());
   Running first(argv, &bus);
@@ -115,7 +117,8 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
     for (int count : row) covered += count > 0;
   EXPECT_GT(covered, 10);
   for (size_t i = 1; i < bus.status_times.size(); ++i)
-    EXPECT_LE(std::chrono::duration<double>(bus.status_times[i] - bus.status_times[i - 1]).count(), 1.3);
+    EXPECT_LE(std::chrono::duration<double>(bus.status_times[i] - bus.status_times[i - 1]).count(),
+              1.3);
 
   // Killed without warning, then started again: the views are back.
   first.Stop(SIGKILL);

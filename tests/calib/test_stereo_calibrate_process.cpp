@@ -4,18 +4,18 @@
 // replay, and the simulator end to end against its ground truth.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-
-#include <Eigen/Geometry>
 #include <opencv2/calib3d.hpp>
+#include <sstream>
 
 #include "calib/calib_file.h"
 #include "calib_process_support.h"
 #include "calib_test_rigs.h"
 #include "lcm_io/channels.h"
+#include "rectify/stereo_rig.h"
 #include "sim/ground_truth.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
@@ -92,8 +92,11 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
   const auto published = ws::test::Messages<widestereo::stereo_calibration_t>(
       ws::test::ReadLog(dir + "/paper.lcmlog"), channel::kStereoCalibration);
   ASSERT_EQ(published.size(), 1u);
-  EXPECT_EQ(published[0].left.fx, file.left.fx);
-  EXPECT_EQ(published[0].T[0], file.T.x());
+  const StereoRig rig = StereoRigFromMessage(published[0]);  // as stereo-match reads it
+  EXPECT_EQ(rig.left.fx, file.left.fx);
+  EXPECT_EQ(rig.right.distortion.coeffs, file.right.distortion.coeffs);
+  EXPECT_EQ(rig.T, file.T);
+  EXPECT_EQ(rig.R, file.R);
   for (const char* png : {"/distortion_curves.png", "/residual_map.png"})
     EXPECT_GT(std::filesystem::file_size(dir + png), 10000u) << png;
 }
@@ -122,7 +125,8 @@ TEST(StereoCalibrateProcess, OnceOverALogGivesTheSameCalibrationTwice) {
   int n = 0;
   for (const char* name : {"/first.lcmlog", "/second.lcmlog"}) {
     for (const auto& event : ws::test::ReadLog(dir + name))
-      if (event.channel == channel::kStereoCalibration || event.channel == channel::kCalibrationStatus)
+      if (event.channel == channel::kStereoCalibration ||
+          event.channel == channel::kCalibrationStatus)
         messages[n].push_back(event.data);
     ++n;
   }
@@ -135,9 +139,9 @@ TEST(StereoCalibrateProcess, OnceOverALogGivesTheSameCalibrationTwice) {
 TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   const std::string dir = TempDir("calibrate-sim");
   const std::string truth_path = dir + "/truth.yaml";
-  const std::string corners =
-      CaptureAndDetect(dir, "sim:" + ws::test::SourceDir() + "/config/sim/default.yaml?truth=" + truth_path,
-                       "chessboard:9x6:0.05", {"--frame-clock", "--rate", "5"});
+  const std::string corners = CaptureAndDetect(
+      dir, "sim:" + ws::test::SourceDir() + "/config/sim/default.yaml?truth=" + truth_path,
+      "chessboard:9x6:0.05", {"--frame-clock", "--rate", "5"});
   std::filesystem::remove(dir + "/images.lcmlog");  // 86 MB
   const auto run = CalibrateOnce(dir, corners, "sim", {"--model", "all", "--plot-dir", dir});
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -159,9 +163,9 @@ TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   EXPECT_LE(baseline_error, 0.001);
   EXPECT_LE(rotation_error * 180 / M_PI, 0.05);
   for (int c = 0; c < 2; ++c) {
-    const ProjectionError error = MaxProjectionError(c == 0 ? truth.left : truth.right,
-                                                     c == 0 ? file.left : file.right,
-                                                     c == 0 ? data.left : data.right);
+    const ProjectionError error =
+        MaxProjectionError(c == 0 ? truth.left : truth.right, c == 0 ? file.left : file.right,
+                           c == 0 ? data.left : data.right);
     std::printf("bspline %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
                 c == 0 ? "left" : "right", error.turned_px, error.direct_px);
     EXPECT_LE(error.turned_px, 0.1);

@@ -1,0 +1,110 @@
+// Solve time of one camera's calibration against cv::calibrateCamera on
+// identical detections: synthetic board corners (9 x 6, 0.1 px noise)
+// projected through an ordinary barrel lens that OpenCV's 5-coefficient
+// model describes exactly, so both solve the same model (poly6 = k1 k2 k3
+// p1 p2) and must reach the same RMS. Ratios are measured in one run.
+//
+//   build/bench/bench_calib [--repeats N]
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <opencv2/calib3d.hpp>
+#include <vector>
+
+#include "calib/calibrate.h"
+#include "calib/synthetic_rig.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The median wall time of `repeats` runs of `run`.
+double MedianSeconds(int repeats, const std::function<void()>& run) {
+  std::vector<double> seconds;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = Clock::now();
+    run();
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
+  return seconds[repeats / 2];
+}
+
+// A 1280 x 960 camera with fx = 900 and moderate barrel distortion (about
+// 70 degrees across), poly6 with tangential terms: OpenCV's own model.
+ws::CameraModel BenchCamera() {
+  ws::CameraModel camera;
+  camera.image_width = 1280;
+  camera.image_height = 960;
+  camera.fx = 900;
+  camera.fy = 901;
+  camera.cx = 643.2;
+  camera.cy = 478.9;
+  camera.p1 = 3e-4;
+  camera.p2 = -2e-4;
+  camera.distortion = ws::Distortion{"poly6", 0, {}, {-0.12, 0.03, -0.004}};
+  return camera;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("Calibration solve time: widestereo (poly6) against cv::calibrateCamera");
+  int repeats = 5;
+  app.add_option("--repeats", repeats, "Runs per measurement (the median is reported)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  std::printf("%6s %8s %12s %12s %12s %8s %12s %12s\n", "views", "corners", "opencv [s]",
+              "ours [s]", "ours,nocov", "ratio", "opencv rms", "ours rms");
+  for (int views : {15, 30, 60}) {
+    ws::calib::SyntheticRigOptions rig_options;
+    rig_options.left = BenchCamera();
+    rig_options.stereo = false;
+    rig_options.views = views;
+    rig_options.board_cols = 9;
+    rig_options.board_rows = 6;
+    rig_options.square = 0.05;
+    rig_options.target_extent = 0.8;
+    rig_options.min_distance = 0.6;
+    rig_options.max_distance = 1.2;
+    const ws::calib::SyntheticRig rig = ws::calib::MakeSyntheticRig(rig_options);
+    const ws::calib::CameraData& data = rig.data.left;
+
+    std::vector<std::vector<cv::Point3f>> object;
+    std::vector<std::vector<cv::Point2f>> image;
+    int corners = 0;
+    for (const auto& view : data.views) {
+      object.emplace_back();
+      image.emplace_back();
+      for (int i = 0; i < view.size(); ++i) {
+        object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+        image.back().emplace_back(view.image[i].x(), view.image[i].y());
+      }
+      corners += view.size();
+    }
+    double opencv_rms = 0;
+    const double opencv_s = MedianSeconds(repeats, [&] {
+      cv::Mat K, distortion;
+      std::vector<cv::Mat> rvecs, tvecs;
+      opencv_rms = cv::calibrateCamera(object, image, cv::Size(data.image_width, data.image_height),
+                                       K, distortion, rvecs, tvecs);
+    });
+    ws::calib::CalibrationOptions options;
+    options.model = "poly6";
+    double ours_rms = 0;
+    const double ours_s = MedianSeconds(
+        repeats, [&] { ours_rms = ws::calib::CalibrateCamera(data, options).rms_px; });
+    options.covariance = false;
+    const double nocov_s =
+        MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, options); });
+    std::printf("%6d %8d %12.4f %12.4f %12.4f %8.2f %12.5f %12.5f\n", views, corners, opencv_s,
+                ours_s, nocov_s, ours_s / opencv_s, opencv_rms, ours_rms);
+  }
+  std::printf("ratio: ours (with standard deviations) / cv::calibrateCamera, median of %d runs\n",
+              repeats);
+  return 0;
+}
