@@ -143,9 +143,7 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   EXPECT_GT(bus.statuses.back().rms, 0);
   EXPECT_TRUE(std::filesystem::exists(dir + "/calib.yaml"));
   second.Stop(SIGINT);
-  // Ctrl-C ends it by itself: 0, or 1 when the signal interrupts Process::Run's
-  // input wait (as for stereo-detect); never a crash.
-  EXPECT_TRUE(second.result.exit_code == 0 || second.result.exit_code == 1) << second.result.output;
+  EXPECT_EQ(second.result.exit_code, 0) << "Ctrl-C is a clean stop: " << second.result.output;
 }
 
 }  // namespace
