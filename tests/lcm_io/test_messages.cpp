@@ -2,6 +2,8 @@
 // does not decode or validate.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "lcm_io/decode.h"
 #include "test_support.h"
 
@@ -248,6 +250,28 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   calib.ncoeffs++;
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
   EXPECT_NO_THROW(ws::Validate(Calibration("left")));
+}
+
+// Found by the fault-injection test: stereo-match spent minutes building
+// rectification maps for a calibration of a 1048576-pixel-wide camera.
+TEST(Messages, CalibrationsLargerThanAnyImageOrWithoutARotationAreRejected) {
+  camera_calibration_t calib = Calibration("left");
+  calib.image_width = 1 << 20;
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+  calib.image_width = 1 << 16;
+  calib.image_height = 1 << 13;  // each side within the limit, 2^29 pixels in all
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+
+  stereo_calibration_t stereo;
+  stereo.left = stereo.right = Calibration("left");
+  const double turn[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};  // 90 degrees about z
+  std::copy(turn, turn + 9, stereo.R);
+  EXPECT_NO_THROW(ws::Validate(stereo));
+  stereo.R[0] = 0.5;  // rows no longer orthonormal
+  EXPECT_THROW(ws::Validate(stereo), ws::DecodeError);
+  const double mirror[9] = {-1, 0, 0, 0, 1, 0, 0, 0, 1};  // orthonormal, det -1
+  std::copy(mirror, mirror + 9, stereo.R);
+  EXPECT_THROW(ws::Validate(stereo), ws::DecodeError);
 }
 
 }  // namespace
