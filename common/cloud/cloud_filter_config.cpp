@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
 #include <opencv2/core.hpp>
+
+#include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
@@ -87,11 +88,10 @@ class FieldReader {
 };
 
 cv::FileNode OpenRootMap(cv::FileStorage& storage, const std::string& path) {
-  if (!std::ifstream(path)) throw ConfigError("cannot open the file");
   try {
-    storage.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML);
-  } catch (const cv::Exception& e) {
-    throw ConfigError("not YAML that OpenCV reads (the first line must be '%YAML:1.0'): " + e.err);
+    OpenOpenCvYaml(storage, path);
+  } catch (const YamlFileError& e) {
+    throw ConfigError(e.what());
   }
   const cv::FileNode root = storage.root();
   if (!root.isMap()) throw ConfigError("the file must be a YAML map of field: value");

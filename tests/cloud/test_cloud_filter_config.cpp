@@ -127,7 +127,10 @@ INSTANTIATE_TEST_SUITE_P(
                   "field 'outliers_stddev_mul': must be a finite number, got inf"},
         BadConfig{"TooFewForAPlane", WithLine("plane_min_inliers", "plane_min_inliers: 2"),
                   "field 'plane_min_inliers': must be >= 3, got 2"},
-        BadConfig{"NotAMap", "%YAML:1.0\n- 1\n", "the file must be a YAML map of field: value"}),
+        BadConfig{"NotAMap", "%YAML:1.0\n- 1\n", "the file must be a YAML map of field: value"},
+        // OpenCV 4.6's YAML reader would never return on this one.
+        BadConfig{"LessIndentedThanTheFirstLine", "%YAML:1.0\n z_min: 0.3\nabc-\n",
+                  "line 3: indented less than line 2, where the top level starts"}),
     [](const ::testing::TestParamInfo<BadConfig>& info) { return info.param.name; });
 
 TEST(CloudFilterConfig, FileThatIsNotOpenCvYamlIsNamed) {
