@@ -1,11 +1,16 @@
 # widestereo: the whole workflow for a newcomer.
 #   make demo   install what is missing, build, run the whole pipeline
 #   make test   install what is missing, build, run every test with ctest
+#   make test-asan  the same under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
+#   make fuzz   every libFuzzer target for FUZZ_SECONDS each (clang, build-fuzz/)
 
 SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
 LCM_URL ?=
+ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Every Debian package the project uses (build, tests, demo, lcm-spy, plots).
@@ -16,7 +21,7 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml
 
-.PHONY: deps build test demo spy clean
+.PHONY: deps build test test-asan fuzz demo spy clean
 
 deps:
 	@missing=$$(for p in $(DEB_PACKAGES); do \
@@ -34,6 +39,20 @@ build: deps
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
 
+# The whole suite, processes included, built with -fsanitize=address,undefined:
+# any report fails the test that triggered it.
+test-asan: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWS_SANITIZE=ON -DWS_BUILD_BENCH=OFF
+	cmake --build $(ASAN_BUILD) -j$(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j$(JOBS) --timeout 1200
+
+fuzz: deps
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWS_FUZZ=ON \
+	  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+	cmake --build $(FUZZ_BUILD) -j$(JOBS)
+	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 demo: build
 	scripts/demo.sh
 
@@ -44,4 +63,4 @@ spy: build
 	  lcm.spy.Spy $(if $(LCM_URL),--lcm-url=$(LCM_URL))
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD)

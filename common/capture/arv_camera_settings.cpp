@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <initializer_list>
 #include <sstream>
 #include <vector>
@@ -10,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "capture/pixel_format.h"
+#include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
@@ -100,13 +100,12 @@ Enum ParseChoice(const char* name, const std::string& text, std::initializer_lis
 }
 
 cv::FileNode OpenSection(cv::FileStorage& storage, const std::string& path) {
-  if (!std::ifstream(path)) throw RigConfigError("cannot open the file");
   try {
-    storage.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML);
-  } catch (const cv::Exception& e) {
-    throw RigConfigError("not YAML that OpenCV reads (the first line must be '%YAML:1.0'): " +
-                         e.err);
+    OpenOpenCvYaml(storage, path);
+  } catch (const YamlFileError& e) {
+    throw RigConfigError(e.what());
   }
+  if (!storage.root().isMap()) throw RigConfigError("the file must be a YAML map");
   const cv::FileNode section = storage[kSection];
   if (!section.isMap()) throw RigConfigError(std::string("no map '") + kSection + "'");
   return section;

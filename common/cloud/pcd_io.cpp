@@ -53,15 +53,24 @@ void WritePcd(const std::string& path, const widestereo::point_cloud_t& msg) {
 
 widestereo::point_cloud_t ReadPcd(const std::string& path) {
   // PCL 1.13 takes a file without a PCD header for one with no fields, and
-  // its read() then crashes: look at the header first.
+  // its read() then crashes: look at the header first. On some malformed
+  // headers it throws std::out_of_range.
   pcl::PCDReader reader;
   pcl::PCLPointCloud2 blob;
-  if (reader.readHeader(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
-  for (const char* axis : {"x", "y", "z"})
-    if (!HasField(blob, axis)) throw PcdError("PCD '" + path + "' has no field '" + axis + "'");
-  if (reader.read(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
-  const bool with_intensity = HasField(blob, "intensity");
-  const PclCloud cloud = with_intensity ? Widen<pcl::PointXYZI>(blob) : Widen<pcl::PointXYZ>(blob);
+  bool with_intensity;
+  PclCloud cloud;
+  try {
+    if (reader.readHeader(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
+    for (const char* axis : {"x", "y", "z"})
+      if (!HasField(blob, axis)) throw PcdError("PCD '" + path + "' has no field '" + axis + "'");
+    if (reader.read(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
+    with_intensity = HasField(blob, "intensity");
+    cloud = with_intensity ? Widen<pcl::PointXYZI>(blob) : Widen<pcl::PointXYZ>(blob);
+  } catch (const PcdError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw PcdError("cannot read PCD '" + path + "': " + e.what());
+  }
   return FromPcl(cloud, with_intensity, widestereo::point_cloud_t{});
 }
 

@@ -29,13 +29,16 @@ bool IsCompressed(int32_t pixelformat) {
   return pixelformat == image_t::PIXEL_FORMAT_MJPEG || pixelformat == image_t::PIXEL_FORMAT_PNG;
 }
 
-// Largest image we accept: 65536 pixels a side, 2^28 pixels in all.
-constexpr int64_t kMaxSide = 1 << 16;
-constexpr int64_t kMaxPixels = int64_t(1) << 28;
-
 [[noreturn]] void Reject(const std::string& what) { throw DecodeError("image_t: " + what); }
 
 }  // namespace
+
+bool ImageSizeAcceptable(int64_t width, int64_t height) {
+  constexpr int64_t kMaxSide = 1 << 16;
+  constexpr int64_t kMaxPixels = int64_t(1) << 28;
+  return width > 0 && height > 0 && width <= kMaxSide && height <= kMaxSide &&
+         width * height <= kMaxPixels;
+}
 
 Compression ParseCompression(const std::string& name) {
   if (name == "none") return Compression::none;
@@ -45,8 +48,7 @@ Compression ParseCompression(const std::string& name) {
 }
 
 void ValidateImage(const image_t& msg) {
-  if (msg.width <= 0 || msg.height <= 0 || msg.width > kMaxSide || msg.height > kMaxSide ||
-      int64_t(msg.width) * msg.height > kMaxPixels)
+  if (!ImageSizeAcceptable(msg.width, msg.height))
     Reject("bad image size " + std::to_string(msg.width) + "x" + std::to_string(msg.height));
   if (msg.size < 0 || size_t(msg.size) != msg.data.size())
     Reject("size field " + std::to_string(msg.size) + " but payload of " +

@@ -20,6 +20,10 @@ enum class Compression { none, jpeg, png };
 // Parses "none", "jpeg" or "png"; throws std::invalid_argument otherwise.
 Compression ParseCompression(const std::string& name);
 
+// Whether an image (or a camera) of this size is one we accept anywhere: at
+// most 65536 pixels a side and 2^28 pixels in all.
+bool ImageSizeAcceptable(int64_t width, int64_t height);
+
 // Checks that width, height, row_stride, size and the payload agree for the
 // message's pixel format, before any pixel is touched. Throws DecodeError.
 void ValidateImage(const widestereo::image_t& msg);

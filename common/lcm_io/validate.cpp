@@ -22,6 +22,18 @@ bool AllFinite(const Range& values) {
                      [](double v) { return std::isfinite(v); });
 }
 
+// A row-major 3x3 matrix with orthonormal rows and determinant +1, to 1e-6.
+bool IsRotation(const double* R) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double dot = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2];
+      if (!(std::abs(dot - (i == j)) <= 1e-6)) return false;
+    }
+  const double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+                     R[2] * (R[3] * R[7] - R[4] * R[6]);
+  return det > 0;
+}
+
 }  // namespace
 
 void Validate(const widestereo::image_t& msg) { ValidateImage(msg); }
@@ -53,7 +65,8 @@ void Validate(const widestereo::stereo_corners_t& msg) {
 
 void Validate(const widestereo::camera_calibration_t& msg) {
   const char* t = "camera_calibration_t";
-  Require(msg.image_width > 0 && msg.image_height > 0, t, "bad image size");
+  Require(ImageSizeAcceptable(msg.image_width, msg.image_height), t,
+          "bad image size " + std::to_string(msg.image_width) + "x" + std::to_string(msg.image_height));
   Require(msg.model == "bspline" || msg.model == "poly6" || msg.model == "poly12", t,
           "unknown model '" + msg.model + "'");
   Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
@@ -73,9 +86,11 @@ void Validate(const widestereo::camera_calibration_t& msg) {
 }
 
 void Validate(const widestereo::stereo_calibration_t& msg) {
+  const char* t = "stereo_calibration_t";
   Validate(msg.left);
   Validate(msg.right);
-  Require(AllFinite(msg.R) && AllFinite(msg.T), "stereo_calibration_t", "non-finite R or T");
+  Require(AllFinite(msg.R) && AllFinite(msg.T), t, "non-finite R or T");
+  Require(IsRotation(msg.R), t, "R is not a rotation (R R^T = I, det R = 1)");
 }
 
 void Validate(const widestereo::calibration_status_t& msg) {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -67,7 +68,9 @@ Process::Process(const ProcessOptions& options)
             log_.path() + ")");
 }
 
-Process::~Process() = default;
+Process::~Process() {
+  if (!complete_events_copy_.empty()) std::remove(complete_events_copy_.c_str());
+}
 
 lcm::LCM* Process::Input() {
   if (in_opened_) return in_.get();
@@ -77,12 +80,20 @@ lcm::LCM* Process::Input() {
     return in_.get();
   }
   const LcmLogScan scan = ScanLcmLog(input_log_);
+  std::string url = options_.in_url;
   if (!scan.complete()) {
     input_log_problem = input_log_ + " is damaged: " + scan.problem + "; replaying the " +
                         std::to_string(scan.events) + " complete events before it";
     log_.Error(input_log_problem);
+    if (scan.events > 0 && !scan.lcm_replays_exactly) {
+      // LCM would not stop exactly there: it reads a copy of what is complete.
+      complete_events_copy_ = options_.log_dir + "/" + options_.name + "-" +
+                              std::to_string(getpid()) + "-complete-events.lcmlog";
+      CopyCompleteEvents(input_log_, scan, complete_events_copy_);
+      url = LcmFileUrlWithPath(url, complete_events_copy_);
+    }
   }
-  if (scan.events > 0) in_ = OpenLcm(options_.in_url, "input");
+  if (scan.events > 0) in_ = OpenLcm(url, "input");
   return in_.get();
 }
 

@@ -115,6 +115,7 @@ class Process {
   std::unique_ptr<lcm::LCM> out_;
   std::string input_log_;        // path of a file:// input, "" live
   std::string input_log_problem; // where a damaged input log stops
+  std::string complete_events_copy_;  // what LCM reads of a damaged input log, if not the log
   bool file_input_ = false;
   bool message_clock_ = false;
   std::atomic<int64_t> message_utime_{0};

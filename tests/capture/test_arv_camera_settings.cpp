@@ -109,6 +109,20 @@ TEST(ArvCameraSettings, ErrorsNameFileFieldAndReason) {
   }
 }
 
+// Found by tests/fuzz: OpenCV 4.6's YAML reader never returns on the first
+// file (a line indented less than the first one, then "xyz-"), and a file
+// that is a list made it throw its own assertion.
+TEST(ArvCameraSettings, FilesOpenCvCannotReadAreErrorsNotHangs) {
+  EXPECT_NE(LoadError("hang", "%YAML:1.0\n  aravis: 1\nxyz-\n")
+                .find("hang.yaml: line 3: indented less than line 2, where the top level starts"),
+            std::string::npos);
+  EXPECT_NE(LoadError("end", "%YAML:1.0\naravis: 1\n...\n-\n")
+                .find("end.yaml: line 3: '...' (the end of a YAML document) is not supported"),
+            std::string::npos);
+  EXPECT_NE(LoadError("list", "%YAML:1.0\n- 1\n").find("list.yaml: the file must be a YAML map"),
+            std::string::npos);
+}
+
 TEST(ArvCameraSettings, ToleranceMustStayUnderHalfAFramePeriod) {
   const std::string error = LoadError(
       "tolerance", Replace(kValid, "pairing_tolerance_ms: 5", "pairing_tolerance_ms: 40"));

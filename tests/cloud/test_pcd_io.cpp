@@ -66,4 +66,18 @@ TEST(Pcd, ErrorsNameThePath) {
   EXPECT_THROW(ws::ReadPcd(not_pcd.path()), ws::PcdError);
 }
 
+// Found by tests/fuzz: on this header (a NUL after DATA) PCL 1.13 throws
+// std::out_of_range, which ReadPcd let through.
+TEST(Pcd, MalformedHeaderIsAPcdError) {
+  using namespace std::string_literals;
+  const ScratchFile bad("bad.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+                                   "WIDTH 40\nHEIGHT 1\nPOINTS 40\nDATA\0binary_compressed\n"s);
+  try {
+    ws::ReadPcd(bad.path());
+    ADD_FAILURE() << "read a PCD with a broken header";
+  } catch (const ws::PcdError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad.path()), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace

@@ -216,17 +216,6 @@ TEST(StereoDetectCli, BadBoardSpecIsAClearError) {
       << r.output;
 }
 
-// Kilobytes of resident memory of process `pid`: now (VmRSS) or at its peak (VmHWM).
-long ResidentKb(int pid, const std::string& field) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string key;
-  long kb = 0;
-  while (status >> key)
-    if (key == field + ":" && status >> kb) return kb;
-  ADD_FAILURE() << "no " << field << " for pid " << pid;
-  return 0;
-}
-
 // Live over udpm, 1280x960 raw pairs (2.4 MB) arrive at 40 Hz, faster than
 // one worker finds boards in them: frames are dropped and counted, the rest
 // published in order, and memory grows by the frames in flight and the

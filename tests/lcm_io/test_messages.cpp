@@ -2,6 +2,8 @@
 // does not decode or validate.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "lcm_io/decode.h"
 #include "test_support.h"
 
@@ -236,6 +238,41 @@ TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
   }
 }
 
+// Found by tests/fuzz: LCM's string decoder took any length field and any
+// bytes; a NUL inside a string made the message re-encode shorter than it
+// said, and INT32_MIN overflowed. A string is its bytes and one NUL.
+TEST(Messages, StringsAreTheirBytesAndOneNul) {
+  command_t command;
+  command.command = "solve";
+  command.nargs = 0;
+  const auto bytes = Encode(command);
+  const size_t length_at = 8 + 8, text_at = length_at + 4;  // after the hash and utime
+  ASSERT_EQ(bytes[length_at + 3], 6);                       // "solve" and its NUL
+  auto decodes = [](const std::vector<uint8_t>& b) {
+    try {
+      ws::DecodeMessage<command_t>(b.data(), int(b.size()));
+      return true;
+    } catch (const ws::DecodeError&) {
+      return false;
+    }
+  };
+  EXPECT_TRUE(decodes(bytes));
+  auto inner_nul = bytes;
+  inner_nul[text_at + 2] = 0;  // "so" NUL "ve" NUL
+  EXPECT_FALSE(decodes(inner_nul));
+  auto no_nul = bytes;
+  no_nul[text_at + 5] = 'x';  // "solvex" without its NUL
+  EXPECT_FALSE(decodes(no_nul));
+  for (const uint8_t first : {uint8_t(0x80), uint8_t(0xff)}) {  // INT32_MIN, -250
+    auto negative = bytes;
+    negative[length_at] = first;
+    EXPECT_FALSE(decodes(negative));
+  }
+  auto zero = bytes;
+  zero[length_at + 3] = 0;
+  EXPECT_FALSE(decodes(zero));
+}
+
 TEST(Messages, CornersAndCalibrationsAreChecked) {
   camera_corners_t corners = Corners();
   corners.image_points[1][0] = std::nan("");
@@ -248,6 +285,28 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   calib.ncoeffs++;
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
   EXPECT_NO_THROW(ws::Validate(Calibration("left")));
+}
+
+// Found by the fault-injection test: stereo-match spent minutes building
+// rectification maps for a calibration of a 1048576-pixel-wide camera.
+TEST(Messages, CalibrationsLargerThanAnyImageOrWithoutARotationAreRejected) {
+  camera_calibration_t calib = Calibration("left");
+  calib.image_width = 1 << 20;
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+  calib.image_width = 1 << 16;
+  calib.image_height = 1 << 13;  // each side within the limit, 2^29 pixels in all
+  EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+
+  stereo_calibration_t stereo;
+  stereo.left = stereo.right = Calibration("left");
+  const double turn[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};  // 90 degrees about z
+  std::copy(turn, turn + 9, stereo.R);
+  EXPECT_NO_THROW(ws::Validate(stereo));
+  stereo.R[0] = 0.5;  // rows no longer orthonormal
+  EXPECT_THROW(ws::Validate(stereo), ws::DecodeError);
+  const double mirror[9] = {-1, 0, 0, 0, 1, 0, 0, 0, 1};  // orthonormal, det -1
+  std::copy(mirror, mirror + 9, stereo.R);
+  EXPECT_THROW(ws::Validate(stereo), ws::DecodeError);
 }
 
 }  // namespace

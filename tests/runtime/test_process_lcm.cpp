@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "lcm_io/channels.h"
@@ -72,6 +73,31 @@ TEST(ProcessLcm, DamagedInputLogReplaysUpToTheCutAndSaysSo) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("damaged"), std::string::npos) << r.output;
   EXPECT_EQ(LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS").received, 3);
+}
+
+// Garbage after the second of four events: LCM's reader alone would replay
+// only the first (it checks for a sync word after each event).
+TEST(ProcessLcm, LogDamagedInTheMiddleReplaysEveryCompleteEventBeforeIt) {
+  const std::string dir = TempDir("middle");
+  std::vector<LogEvent> events;
+  for (int i = 0; i < 2; ++i) events.push_back(Event("PROCESS_STATUS", Status("peer", 1000000 * i)));
+  WriteLog(dir + "/head.lcmlog", events);
+  WriteLog(dir + "/tail.lcmlog", events);
+  {
+    std::ofstream in(dir + "/in.lcmlog", std::ios::binary);
+    in << std::ifstream(dir + "/head.lcmlog", std::ios::binary).rdbuf() << "garbage"
+       << std::ifstream(dir + "/tail.lcmlog", std::ios::binary).rdbuf();
+  }
+  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
+                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
+                             "file://" + dir + "/out.lcmlog?mode=w"},
+                            30);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("bad sync word at byte"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("replaying the 2 complete events before it"), std::string::npos) << r.output;
+  EXPECT_EQ(LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS").received, 2);
+  for (const auto& entry : std::filesystem::directory_iterator(dir))  // the copy LCM read is gone
+    EXPECT_EQ(entry.path().string().find("complete-events"), std::string::npos) << entry.path();
 }
 
 TEST(ProcessLcm, MissingInputLogIsAClearError) {

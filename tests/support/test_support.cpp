@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -97,6 +98,16 @@ std::string Command::Output() const {
 
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
   return Command(argv).Wait(timeout_s);
+}
+
+long ResidentKb(int pid, const std::string& field) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string key;
+  long kb = 0;
+  while (status >> key)
+    if (key == field + ":" && status >> kb) return kb;
+  ADD_FAILURE() << "no " << field << " for pid " << pid;
+  return 0;
 }
 
 std::string UniqueUdpmUrl(int offset) {

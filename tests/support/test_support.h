@@ -55,6 +55,10 @@ class Command {
 // Runs a Command to its end, with a time limit.
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s = 60);
 
+// Kilobytes of resident memory of process `pid`: now (VmRSS) or at its peak
+// (VmHWM); a test failure, and 0, when /proc does not say.
+long ResidentKb(int pid, const std::string& field);
+
 // A udpm URL on this host (ttl=0) with a port unique to this test process, so
 // tests running at the same time do not hear each other.
 std::string UniqueUdpmUrl(int offset = 0);

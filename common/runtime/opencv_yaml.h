@@ -1,0 +1,31 @@
+// Opening a YAML file with cv::FileStorage without hanging. OpenCV 4.6's YAML
+// parser loops forever when its top-level collection ends before the end of
+// the file and the text three characters on is a '-': after a line indented
+// less than the first one ("%YAML:1.0\n  a: 1\nxyz-\n") or after a "..." line
+// ("%YAML:1.0\na: 1\n...\n-\n"). Such files are rejected before OpenCV
+// parses them.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace ws {
+
+// The file cannot be read, is laid out as above, or OpenCV does not parse it.
+// The message says why, with the line where there is one, but not the path:
+// loaders add it with their own error type.
+struct YamlFileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws YamlFileError "line N: REASON" for a "..." line, or a line (other
+// than a comment or blank) indented less than the first.
+void CheckOpenCvYamlLayout(const std::string& text);
+
+// Reads `path`, checks it (CheckOpenCvYamlLayout) and opens it in `storage`
+// for reading as YAML. Throws YamlFileError.
+void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path);
+
+}  // namespace ws

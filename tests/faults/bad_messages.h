@@ -1,0 +1,42 @@
+// What a faulty or hostile peer sends on a channel: random bytes, messages cut
+// short, messages of another type, and oversized ones (a payload far larger
+// than any real message, and a well-formed message whose sizes exceed the
+// limits). Every one must be rejected by the subscriber's decoder.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ws::test {
+
+class BadMessages {
+ public:
+  // `good`: an encoded message of the channel's type; `other_type`: one of
+  // another type; `too_large`: one of the channel's type claiming sizes
+  // beyond the limits.
+  BadMessages(std::vector<uint8_t> good, std::vector<uint8_t> other_type,
+              std::vector<uint8_t> too_large, uint32_t seed);
+
+  // The next bad payload, cycling through the kinds.
+  std::vector<uint8_t> Next();
+  // "garbage", "truncated", "wrong type", "too large", "oversized payload".
+  static const std::vector<std::string>& Kinds();
+
+ private:
+  std::vector<uint8_t> Random(size_t size);
+
+  std::vector<uint8_t> good_, other_type_, too_large_;
+  std::mt19937 rng_;
+  int next_ = 0;
+};
+
+template <class Msg>
+std::vector<uint8_t> Encoded(const Msg& msg) {
+  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
+  msg.encode(bytes.data(), 0, int(bytes.size()));
+  return bytes;
+}
+
+}  // namespace ws::test

@@ -1,0 +1,49 @@
+// The test's own end of a udpm bus: it publishes raw payloads, and keeps the
+// heartbeats of one process and the payloads published on chosen channels.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "widestereo/process_status_t.hpp"
+
+namespace ws::test {
+
+class BusWatch {
+ public:
+  // Listens on `url` to the heartbeats of the process named `process`.
+  BusWatch(const std::string& url, std::string process);
+
+  void Collect(const std::string& channel);
+  void Publish(const std::string& channel, const std::vector<uint8_t>& payload);
+  template <class Msg>
+  void Publish(const std::string& channel, const Msg& msg) {
+    lcm_.publish(channel, &msg);
+  }
+
+  // Handles messages until `done` holds or `seconds` have passed; returns done().
+  bool ListenUntil(double seconds, const std::function<bool()>& done);
+  // Handles messages for `seconds`.
+  void Listen(double seconds) { ListenUntil(seconds, [] { return false; }); }
+
+  // The latest heartbeat, if any, and its counters of `channel` (zeros if none).
+  const std::optional<widestereo::process_status_t>& status() const { return status_; }
+  widestereo::channel_counters_t Counters(const std::string& channel) const;
+  const std::vector<std::vector<uint8_t>>& Payloads(const std::string& channel) {
+    return payloads_[channel];
+  }
+
+ private:
+  lcm::LCM lcm_;
+  std::string process_;
+  std::optional<widestereo::process_status_t> status_;
+  std::map<std::string, std::vector<std::vector<uint8_t>>> payloads_;
+};
+
+}  // namespace ws::test

@@ -1,0 +1,79 @@
+// The path of a process replaying a file:// log (runtime/process.cpp): the
+// scan of the log's structure (lcm_io/lcm_log.h), then LCM's own file
+// provider delivering the events (from a copy of the complete ones where LCM
+// would not stop exactly at the damage), each decoded as the type of its
+// channel. It must deliver exactly the complete events the scan counted.
+#include <map>
+#include <string>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "fuzz_support.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
+
+namespace {
+
+using Decoder = void (*)(const void* data, int size);
+
+template <class Msg>
+void DecodeAs(const void* data, int size) {
+  try {
+    ws::DecodeMessage<Msg>(data, size);
+  } catch (const ws::DecodeError&) {
+  }
+}
+
+const std::map<std::string, Decoder>& Decoders() {
+  namespace ch = ws::channel;
+  using namespace widestereo;
+  static const std::map<std::string, Decoder> decoders = {
+      {ch::kStereoImages, DecodeAs<stereo_frame_t>},
+      {ch::kStereoCorners, DecodeAs<stereo_corners_t>},
+      {ch::kStereoCommand, DecodeAs<command_t>},
+      {ch::kCalibrationStatus, DecodeAs<calibration_status_t>},
+      {ch::kStereoCalibration, DecodeAs<stereo_calibration_t>},
+      {ch::kStereoDisparity, DecodeAs<disparity_t>},
+      {ch::kStereoCloud, DecodeAs<point_cloud_t>},
+      {ch::kStereoCloudFiltered, DecodeAs<point_cloud_t>},
+      {ch::kCloudStats, DecodeAs<cloud_stats_t>},
+      {ch::kProcessStatus, DecodeAs<process_status_t>},
+  };
+  return decoders;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string path = ws::fuzz::WriteInputFile(data, size, ".lcmlog");
+  const ws::LcmLogScan scan = ws::ScanLcmLog(path);
+  if (scan.file_bytes != int64_t(size) || scan.valid_bytes > scan.file_bytes ||
+      scan.complete() != (scan.valid_bytes == scan.file_bytes))
+    ws::fuzz::Violated("inconsistent scan: " + std::to_string(scan.valid_bytes) + " valid of " +
+                       std::to_string(scan.file_bytes) + " bytes, problem '" + scan.problem + "'");
+  if (scan.events == 0) return 0;  // a process does not open an empty log
+
+  std::string replayed = path;
+  if (!scan.lcm_replays_exactly) {
+    replayed = path + ".complete";
+    ws::CopyCompleteEvents(path, scan, replayed);
+  }
+  lcm::LCM lcm("file://" + replayed + "?speed=0");
+  if (!lcm.good()) ws::fuzz::Violated("LCM cannot open a log the scan read");
+  int64_t delivered = 0;
+  auto* subscription = lcm.subscribeFunction(
+      ".*",
+      +[](const lcm::ReceiveBuffer* rbuf, const std::string& channel, int64_t* count) {
+        ++*count;
+        const auto decoder = Decoders().find(channel);
+        if (decoder != Decoders().end()) decoder->second(rbuf->data, int(rbuf->data_size));
+      },
+      &delivered);
+  while (lcm.handle() == 0) {
+  }
+  lcm.unsubscribe(subscription);
+  if (delivered != scan.events)
+    ws::fuzz::Violated("LCM replayed " + std::to_string(delivered) + " events, the scan found " +
+                       std::to_string(scan.events) + " complete ones");
+  return 0;
+}

@@ -1,0 +1,94 @@
+// One libFuzzer target per LCM message type (the compile definition
+// WS_FUZZ_MESSAGE names it): the decode and Validate every subscriber runs,
+// then what the processes do next with an accepted message of that type.
+// Anything but a DecodeError from decoding, a crash, a sanitizer report or a
+// broken property is a finding; the processes catch std::exception from their
+// handlers, so the steps after decoding may throw those.
+#include <cmath>
+#include <stdexcept>
+
+#include "cloud/cloud_filter.h"
+#include "fuzz_support.h"
+#include "lcm_io/image_codec.h"
+#include "monitor/status_board.h"
+#include "rectify/stereo_rig.h"
+
+// Not in an anonymous namespace: each binary uses only its type's overload.
+namespace ws::fuzz {
+
+using namespace widestereo;
+
+// stereo-detect and stereo-match read every image through ImageToMat.
+void Use(const image_t& image) {
+  const cv::Mat mat = ws::ImageToMat(image);
+  if (mat.cols != image.width || mat.rows != image.height || !mat.isContinuous())
+    Violated("ImageToMat gave " + std::to_string(mat.cols) + "x" + std::to_string(mat.rows) +
+             " for a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+             " image");
+}
+
+void Use(const stereo_frame_t& frame) {
+  Use(frame.left);
+  Use(frame.right);
+}
+
+void Use(const disparity_t& disparity) { Use(disparity.disparity); }
+
+// stereo-match turns a calibration into camera models and unprojects every
+// pixel: a pixel that unprojects must project back onto itself.
+void Use(const camera_calibration_t& calibration) {
+  const ws::Camera camera(ws::CameraModelFromMessage(calibration));
+  const double w = calibration.image_width, h = calibration.image_height;
+  const double scale = std::max(calibration.fx, calibration.fy);
+  for (const Eigen::Vector2d& pixel : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(w / 2, h / 2),
+                                      Eigen::Vector2d(w - 0.5, h - 0.5), Eigen::Vector2d(0, h / 3)}) {
+    const auto ray = camera.Unproject(pixel);
+    if (!ray) continue;
+    const auto back = camera.Project(*ray);
+    const double distorted = std::hypot((pixel.x() - calibration.cx) / calibration.fx,
+                                        (pixel.y() - calibration.cy) / calibration.fy);
+    if (!back || !((*back - pixel).norm() <= 1e-6 * scale * (1 + distorted)))
+      Violated("pixel (" + std::to_string(pixel.x()) + ", " + std::to_string(pixel.y()) +
+               ") unprojects to a ray that does not project back onto it");
+  }
+}
+
+void Use(const stereo_calibration_t& calibration) {
+  Use(calibration.left);
+  Use(calibration.right);
+  ws::StereoRigFromMessage(calibration);
+}
+
+// stereo-status shows every status it hears.
+template <class Status>
+void Show(const Status& status) {
+  ws::StatusBoard board;
+  board.Add(status);
+  board.Add(status);
+  board.Render();
+}
+void Use(const process_status_t& status) { Show(status); }
+void Use(const calibration_status_t& status) { Show(status); }
+
+// stereo-cloud runs its filter chain on every cloud.
+void Use(const point_cloud_t& cloud) {
+  static const ws::CloudFilter filter{ws::CloudFilterConfig{}};
+  filter.Run(cloud);
+}
+
+// Corners, commands and cloud statistics are used as decoded.
+template <class Msg>
+void Use(const Msg&) {}
+
+}  // namespace ws::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const auto msg = ws::fuzz::DecodeAccepted<WS_FUZZ_MESSAGE>(data, size);
+  if (!msg) return 0;
+  try {
+    ws::fuzz::Use(*msg);
+  } catch (const std::exception&) {
+    // A handler's exception: the process counts the message as rejected.
+  }
+  return 0;
+}

@@ -1,0 +1,317 @@
+// fuzz-seeds OUT: writes the seed corpus of every fuzz target to OUT/<target>/
+// from real data: OpenCV's stereo calibration images (Debian opencv-doc) in
+// every pixel format and compression, the corners stereo-detect finds in
+// them, calibrations of the simulator's cameras, the repository's config
+// files, PCD files in each of PCL's encodings and an LCM log of real messages.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include "cloud/pcd_io.h"
+#include "detect/stereo_corner_finder.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "sim/sim_config.h"
+#include "widestereo/calibration_status_t.hpp"
+#include "widestereo/cloud_stats_t.hpp"
+#include "widestereo/command_t.hpp"
+#include "widestereo/disparity_t.hpp"
+#include "widestereo/point_cloud_t.hpp"
+#include "widestereo/process_status_t.hpp"
+#include "widestereo/stereo_calibration_t.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace widestereo;
+
+const std::string kOpenCvData = "/usr/share/doc/opencv-doc/examples/data/";
+
+class Seeds {
+ public:
+  explicit Seeds(fs::path root) : root_(std::move(root)) {}
+
+  void Bytes(const std::string& target, const std::string& name, const std::vector<uint8_t>& bytes) {
+    fs::create_directories(root_ / target);
+    std::ofstream out(root_ / target / name, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    ++count_;
+  }
+  template <class Msg>
+  void Message(const std::string& name, const Msg& msg) {
+    Bytes(std::string("fuzz_") + Msg::getTypeName(), name, Encode(msg));
+  }
+  void Copy(const std::string& target, const fs::path& file) {
+    fs::create_directories(root_ / target);
+    fs::copy_file(file, root_ / target / file.filename(), fs::copy_options::overwrite_existing);
+    ++count_;
+  }
+  fs::path Path(const std::string& target, const std::string& name) {
+    fs::create_directories(root_ / target);
+    ++count_;
+    return root_ / target / name;
+  }
+  int count() const { return count_; }
+
+  template <class Msg>
+  static std::vector<uint8_t> Encode(const Msg& msg) {
+    std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
+    msg.encode(bytes.data(), 0, int(bytes.size()));
+    return bytes;
+  }
+
+ private:
+  fs::path root_;
+  int count_ = 0;
+};
+
+cv::Mat Small(const std::string& file, int flags = cv::IMREAD_COLOR) {
+  const cv::Mat image = cv::imread(kOpenCvData + file, flags);
+  if (image.empty()) throw std::runtime_error("cannot read " + kOpenCvData + file);
+  cv::Mat small;
+  cv::resize(image, small, {32, 24}, 0, 0, cv::INTER_AREA);
+  return small;
+}
+
+void ImageSeeds(Seeds& seeds) {
+  const cv::Mat bgr = Small("left01.jpg"), gray = Small("left01.jpg", cv::IMREAD_GRAYSCALE);
+  cv::Mat gray16, real, bgra;
+  gray.convertTo(gray16, CV_16U, 257);
+  gray.convertTo(real, CV_32F, 1 / 255.0);
+  cv::cvtColor(bgr, bgra, cv::COLOR_BGR2BGRA);
+  seeds.Message("gray", ws::MatToImage(gray, 1));
+  seeds.Message("gray16", ws::MatToImage(gray16, 1));
+  seeds.Message("bgr", ws::MatToImage(bgr, 1));
+  image_t rgb = ws::MatToImage(bgr, 1);
+  rgb.pixelformat = image_t::PIXEL_FORMAT_RGB;
+  seeds.Message("rgb", rgb);
+  seeds.Message("float", ws::MatToImage(real, 1));
+  seeds.Message("gray.jpg", ws::MatToImage(gray, 1, ws::Compression::jpeg, 80));
+  seeds.Message("bgr.jpg", ws::MatToImage(bgr, 1, ws::Compression::jpeg, 80));
+  seeds.Message("gray.png", ws::MatToImage(gray, 1, ws::Compression::png));
+  seeds.Message("gray16.png", ws::MatToImage(gray16, 1, ws::Compression::png));
+  seeds.Message("bgra.png", ws::MatToImage(bgra, 1, ws::Compression::png));
+  // Rows padded to 36 bytes, and a key/value metadata entry.
+  image_t padded = ws::MatToImage(gray, 1);
+  padded.row_stride = 36;
+  padded.data.assign(size_t(36) * 24, 0);
+  for (int y = 0; y < 24; ++y) std::copy(gray.ptr(y), gray.ptr(y) + 32, padded.data.begin() + 36 * y);
+  padded.size = int32_t(padded.data.size());
+  padded.metadata.push_back({"exposure_us", 5, {'1', '0', '0', '0', '0'}});
+  padded.nmetadata = 1;
+  seeds.Message("padded-with-metadata", padded);
+
+  disparity_t disparity{};
+  disparity.utime = disparity.frame_id = 1;
+  disparity.disparity = ws::MatToImage(real * 64, 1);
+  disparity.num_disparities = 64;
+  for (int i = 0; i < 16; ++i) disparity.Q[i] = i % 5 == 0;
+  seeds.Message("disparity", disparity);
+}
+
+stereo_frame_t Frame(const std::string& pair, ws::Compression compression, cv::Size size) {
+  stereo_frame_t frame;
+  frame.utime = frame.frame_id = 1;
+  for (auto [side, image] : {std::pair{"left", &frame.left}, std::pair{"right", &frame.right}}) {
+    cv::Mat gray = cv::imread(kOpenCvData + side + pair + ".jpg", cv::IMREAD_GRAYSCALE);
+    if (gray.size() != size) cv::resize(gray, gray, size, 0, 0, cv::INTER_AREA);
+    *image = ws::MatToImage(gray, 1, compression, 80);
+  }
+  return frame;
+}
+
+void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
+                         std::vector<stereo_corners_t>* log_corners) {
+  const cv::Size small(32, 24);
+  seeds.Message("gray", Frame("01", ws::Compression::none, small));
+  seeds.Message("jpeg", Frame("01", ws::Compression::jpeg, small));
+  seeds.Message("png", Frame("01", ws::Compression::png, small));
+  log_frames->push_back(Frame("01", ws::Compression::none, {16, 12}));
+
+  const ws::StereoCornerFinder finder(ws::ParseBoardSpec("chessboard:9x6:0.025"),
+                                      ws::ChessboardMethod::classic);
+  for (const char* pair : {"01", "02"}) {
+    const stereo_corners_t corners = finder.Find(Frame(pair, ws::Compression::none, {640, 480}));
+    if (corners.left.n == 0 || corners.right.n == 0)
+      throw std::runtime_error(std::string("no corners found in pair ") + pair);
+    seeds.Message(std::string("pair") + pair, corners);
+    seeds.Message(std::string("left") + pair, corners.left);
+    log_corners->push_back(corners);
+  }
+  camera_corners_t none{};
+  none.board_id = "chessboard:9x6:0.025";
+  seeds.Message("no-board", none);
+}
+
+camera_calibration_t CalibrationMessage(const ws::CameraModel& m, const std::string& name) {
+  camera_calibration_t c{};
+  c.name = name;
+  c.image_width = m.image_width;
+  c.image_height = m.image_height;
+  c.model = m.distortion.kind;
+  c.degree = m.distortion.degree;
+  c.knots = m.distortion.knots;
+  c.nknots = int32_t(c.knots.size());
+  c.coeffs = m.distortion.coeffs;
+  c.ncoeffs = int32_t(c.coeffs.size());
+  c.fx = m.fx, c.fy = m.fy, c.cx = m.cx, c.cy = m.cy, c.p1 = m.p1, c.p2 = m.p2;
+  c.rms = 0.05;
+  c.nviews = 2;
+  c.view_rms = {0.04, 0.06};
+  c.nparams = 2;
+  c.param_names = {"fx", "fy"};
+  c.stddev = {0.1, 0.1};
+  return c;
+}
+
+void CalibrationSeeds(Seeds& seeds) {
+  const ws::SimConfig sim = ws::DefaultSimConfig(0.1);
+  ws::CameraModel poly6 = sim.left;
+  poly6.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
+  for (const auto& [name, model] : {std::pair{"bspline", sim.left}, std::pair{"poly6", poly6}}) {
+    stereo_calibration_t stereo{};
+    stereo.utime = 1;
+    stereo.left = CalibrationMessage(model, "left");
+    stereo.right = CalibrationMessage(model, "right");
+    for (int i = 0; i < 9; ++i) stereo.R[i] = i % 4 == 0;
+    stereo.T[0] = -0.3;
+    stereo.rms = 0.06;
+    seeds.Message(name, stereo);
+    seeds.Message(name, stereo.left);
+  }
+}
+
+process_status_t StatusMessage() {
+  process_status_t status{};
+  status.utime = 1000000;
+  status.name = "stereo-detect";
+  status.host = "robot";
+  status.pid = 42;
+  status.uptime_s = 12.5;
+  status.state = "running";
+  for (const char* channel : {ws::channel::kStereoImages, ws::channel::kStereoCorners})
+    status.channels.push_back({channel, 120, 118, 1, 1});
+  status.nchannels = 2;
+  status.last_error = "STEREO_IMAGES: image_t: bad image size 0x0";
+  return status;
+}
+
+void StatusAndCommandSeeds(Seeds& seeds) {
+  seeds.Message("detect", StatusMessage());
+  calibration_status_t calibration{};
+  calibration.utime = 1;
+  calibration.state = "collecting";
+  calibration.views_left = calibration.views_right = calibration.views_stereo = 5;
+  calibration.grid_rows = 3;
+  calibration.grid_cols = 4;
+  calibration.coverage_left = calibration.coverage_right = {{1, 2, 3, 4}, {0, 0, 9, 1}, {5, 5, 0, 0}};
+  calibration.rms = 0.3;
+  calibration.hint = "move the board to the top left";
+  seeds.Message("collecting", calibration);
+  command_t command{};
+  command.command = "solve";
+  command.target = "stereo-calibrate";
+  command.args = {"model=bspline", "path=/tmp/x.yaml"};
+  command.nargs = 2;
+  seeds.Message("solve", command);
+  cloud_stats_t stats{};
+  stats.plane_found = true;
+  stats.plane_normal[2] = -1;
+  stats.plane_offset = 2;
+  stats.stage_names = {"input", "passthrough", "voxel", "outliers", "plane"};
+  stats.stage_points = {100, 90, 60, 55, 40};
+  stats.stage_ms = {0, 0.1, 0.5, 0.7, 1.2};
+  stats.nstages = 5;
+  seeds.Message("five-stages", stats);
+}
+
+point_cloud_t Cloud(bool with_intensity) {
+  point_cloud_t cloud{};
+  cloud.frame = "left_rectified";
+  for (int i = 0; i < 40; ++i) {
+    cloud.xyz.push_back({0.05f * (i % 8), 0.05f * float(i / 8), 2.0f + 0.001f * float(i % 3)});
+    if (with_intensity) cloud.intensity.push_back(float(i * 6));
+  }
+  cloud.npoints = int32_t(cloud.xyz.size());
+  cloud.nintensity = int32_t(cloud.intensity.size());
+  return cloud;
+}
+
+void CloudSeeds(Seeds& seeds) {
+  seeds.Message("with-intensity", Cloud(true));
+  seeds.Message("xyz", Cloud(false));
+  ws::WritePcd(seeds.Path("fuzz_pcd", "binary-xyzi.pcd").string(), Cloud(true));
+  ws::WritePcd(seeds.Path("fuzz_pcd", "binary-xyz.pcd").string(), Cloud(false));
+  pcl::PointCloud<pcl::PointXYZ> pcl_cloud;
+  for (const auto& p : Cloud(false).xyz) pcl_cloud.push_back({p[0], p[1], p[2]});
+  pcl::io::savePCDFileASCII(seeds.Path("fuzz_pcd", "ascii.pcd").string(), pcl_cloud);
+  pcl::io::savePCDFileBinaryCompressed(seeds.Path("fuzz_pcd", "compressed.pcd").string(), pcl_cloud);
+}
+
+// A log of real messages, and the same cut in the middle of its last event.
+void LogSeeds(Seeds& seeds, const std::vector<stereo_frame_t>& frames,
+              const std::vector<stereo_corners_t>& corners) {
+  const fs::path path = seeds.Path("fuzz_lcm_log", "pipeline.lcmlog");
+  {
+    lcm::LogFile log(path.string(), "w");
+    int64_t n = 0;
+    auto write = [&](const std::string& channel, const std::vector<uint8_t>& bytes) {
+      lcm::LogEvent event{n, 1000000 * (n + 1), channel, int32_t(bytes.size()),
+                          const_cast<uint8_t*>(bytes.data())};
+      ++n;
+      log.writeEvent(&event);
+    };
+    write(ws::channel::kProcessStatus, Seeds::Encode(StatusMessage()));
+    for (const auto& frame : frames) write(ws::channel::kStereoImages, Seeds::Encode(frame));
+    write(ws::channel::kStereoCorners, Seeds::Encode(corners.front()));
+  }
+  const fs::path cut = seeds.Path("fuzz_lcm_log", "cut.lcmlog");
+  fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
+  fs::resize_file(cut, fs::file_size(cut) - 100);
+}
+
+void ConfigSeeds(Seeds& seeds, const fs::path& source) {
+  for (const char* process : {"stereo-capture", "stereo-detect", "stereo-match", "stereo-calibrate", "stereo-cloud"})
+    seeds.Copy("fuzz_yaml_config", source / "config" / (std::string(process) + ".yaml"));
+  for (const auto& entry : fs::directory_iterator(source / "config" / "sim"))
+    seeds.Copy("fuzz_sim_config", entry.path());
+  for (const auto& entry : fs::directory_iterator(source / "config" / "rig"))
+    seeds.Copy("fuzz_rig_config", entry.path());
+  for (const auto& entry : fs::directory_iterator(source / "config" / "calib"))
+    seeds.Copy("fuzz_calib_file", entry.path());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2 || std::string(argv[1]) == "--help") {
+    std::printf("usage: fuzz-seeds OUT\nWrites the seed corpus of every fuzz target to OUT/<target>/.\n");
+    return argc == 2 ? 0 : 2;
+  }
+  try {
+    Seeds seeds{fs::path(argv[1])};
+    std::vector<stereo_frame_t> frames;
+    std::vector<stereo_corners_t> corners;
+    ImageSeeds(seeds);
+    FrameAndCornerSeeds(seeds, &frames, &corners);
+    CalibrationSeeds(seeds);
+    StatusAndCommandSeeds(seeds);
+    CloudSeeds(seeds);
+    LogSeeds(seeds, frames, corners);
+    ConfigSeeds(seeds, WS_SOURCE_DIR);
+    std::printf("fuzz-seeds: %d seeds in %s\n", seeds.count(), argv[1]);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fuzz-seeds: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
