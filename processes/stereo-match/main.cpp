@@ -43,8 +43,7 @@ int main(int argc, char** argv) {
     process.Subscribe<widestereo::stereo_calibration_t>(
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(
-        ws::channel::kStereoImages, [&](const auto& msg) { node.OnFrame(msg); },
-        1);  // live, only the newest frame waits: a robot wants fresh depth, not a backlog
+        ws::channel::kStereoImages, [&](const auto& msg) { node.OnFrame(msg); }, 2);
     return process.Run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-match: %s\n", e.what());
