@@ -2,6 +2,9 @@
 // relative to the left, X_right = R X_left + T (OpenCV's convention).
 #pragma once
 
+#include <cstdint>
+#include <string>
+
 #include <Eigen/Core>
 
 #include "models/camera_model.h"
@@ -20,5 +23,12 @@ struct StereoRig {
 // when the message does not describe a usable camera.
 CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg);
 StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg);
+
+// The other way: the message of a camera model named `name` ("left",
+// "right") and of a rig, with no quality figures (rms 0, no views, no
+// parameter deviations), e.g. for a simulator's true cameras.
+widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model,
+                                                        const std::string& name);
+widestereo::stereo_calibration_t MessageFromStereoRig(const StereoRig& rig, int64_t utime);
 
 }  // namespace ws
