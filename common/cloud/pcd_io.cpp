@@ -1,6 +1,7 @@
 #include "cloud/pcd_io.h"
 
 #include <algorithm>
+#include <vector>
 
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
@@ -11,9 +12,32 @@
 namespace ws {
 namespace {
 
-bool HasField(const pcl::PCLPointCloud2& blob, const std::string& name) {
-  return std::any_of(blob.fields.begin(), blob.fields.end(),
-                     [&](const pcl::PCLPointField& field) { return field.name == name; });
+const pcl::PCLPointField* FindField(const pcl::PCLPointCloud2& blob, const std::string& name) {
+  for (const pcl::PCLPointField& field : blob.fields)
+    if (field.name == name) return &field;
+  return nullptr;
+}
+
+// PCL lays the fields out by the header's SIZE but reads them by their TYPE,
+// without checking that the two agree: a lying header makes it read past the
+// data. True when every field, read by its type, ends before the next one
+// (or the end of the point) starts.
+bool FieldsFitTheirPoint(const pcl::PCLPointCloud2& blob) {
+  std::vector<const pcl::PCLPointField*> fields;
+  for (const pcl::PCLPointField& field : blob.fields) fields.push_back(&field);
+  std::sort(fields.begin(), fields.end(), [](auto* a, auto* b) { return a->offset < b->offset; });
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const int size = pcl::getFieldSize(fields[i]->datatype);
+    const uint64_t end = uint64_t(fields[i]->offset) + uint64_t(size) * fields[i]->count;
+    const uint64_t next = i + 1 < fields.size() ? fields[i + 1]->offset : blob.point_step;
+    if (size == 0 || end > next) return false;
+  }
+  return true;
+}
+
+// What PointXYZ(I) reads: one 4-byte float.
+bool IsFloat(const pcl::PCLPointField& field) {
+  return field.datatype == pcl::PCLPointField::FLOAT32 && field.count == 1;
 }
 
 // The cloud with only the fields PointT has: a cloud without intensity is
@@ -61,10 +85,19 @@ widestereo::point_cloud_t ReadPcd(const std::string& path) {
   PclCloud cloud;
   try {
     if (reader.readHeader(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
-    for (const char* axis : {"x", "y", "z"})
-      if (!HasField(blob, axis)) throw PcdError("PCD '" + path + "' has no field '" + axis + "'");
+    for (const char* axis : {"x", "y", "z"}) {
+      const pcl::PCLPointField* field = FindField(blob, axis);
+      if (!field) throw PcdError("PCD '" + path + "' has no field '" + axis + "'");
+      if (!IsFloat(*field)) throw PcdError("PCD '" + path + "': field '" + axis + "' is not one 4-byte float");
+    }
+    if (!FieldsFitTheirPoint(blob))
+      throw PcdError("PCD '" + path + "': the fields' SIZE disagrees with their TYPE and COUNT");
     if (reader.read(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
-    with_intensity = HasField(blob, "intensity");
+    if (blob.data.size() != uint64_t(blob.row_step) * blob.height ||
+        uint64_t(blob.point_step) * blob.width > blob.row_step)
+      throw PcdError("PCD '" + path + "': its data do not hold WIDTH x HEIGHT points");
+    const pcl::PCLPointField* intensity = FindField(blob, "intensity");
+    with_intensity = intensity && IsFloat(*intensity);
     cloud = with_intensity ? Widen<pcl::PointXYZI>(blob) : Widen<pcl::PointXYZ>(blob);
   } catch (const PcdError&) {
     throw;

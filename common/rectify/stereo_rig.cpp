@@ -42,4 +42,35 @@ StereoRig StereoRigFromFile(const std::string& path) {
   return rig;
 }
 
+widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model,
+                                                        const std::string& name) {
+  widestereo::camera_calibration_t msg{};
+  msg.name = name;
+  msg.image_width = model.image_width;
+  msg.image_height = model.image_height;
+  msg.model = model.distortion.kind;
+  msg.degree = model.distortion.degree;
+  msg.knots = model.distortion.knots;
+  msg.nknots = int32_t(msg.knots.size());
+  msg.coeffs = model.distortion.coeffs;
+  msg.ncoeffs = int32_t(msg.coeffs.size());
+  msg.fx = model.fx;
+  msg.fy = model.fy;
+  msg.cx = model.cx;
+  msg.cy = model.cy;
+  msg.p1 = model.p1;
+  msg.p2 = model.p2;
+  return msg;
+}
+
+widestereo::stereo_calibration_t MessageFromStereoRig(const StereoRig& rig, int64_t utime) {
+  widestereo::stereo_calibration_t msg{};
+  msg.utime = utime;
+  msg.left = MessageFromCameraModel(rig.left, "left");
+  msg.right = MessageFromCameraModel(rig.right, "right");
+  for (int i = 0; i < 9; ++i) msg.R[i] = rig.R(i / 3, i % 3);
+  for (int i = 0; i < 3; ++i) msg.T[i] = rig.T(i);
+  return msg;
+}
+
 }  // namespace ws

@@ -2,8 +2,9 @@
 // parser loops forever when its top-level collection ends before the end of
 // the file and the text three characters on is a '-': after a line indented
 // less than the first one ("%YAML:1.0\n  a: 1\nxyz-\n") or after a "..." line
-// ("%YAML:1.0\na: 1\n...\n-\n"). Such files are rejected before OpenCV
-// parses them.
+// ("%YAML:1.0\na: 1\n...\n-\n"). It recurses once per level of nesting and
+// overflows the stack at some 50000 levels ("[[[[..." or "- - - -..." on one
+// line). Such files are rejected before OpenCV parses them.
 #pragma once
 
 #include <stdexcept>
@@ -20,8 +21,10 @@ struct YamlFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws YamlFileError "line N: REASON" for a "..." line, or a line (other
-// than a comment or blank) indented less than the first.
+// Throws YamlFileError "line N: REASON" for a "..." line, a line (other than
+// a comment or blank) indented less than the first, or collections nested
+// more than kMaxYamlNesting deep in flow style ([ {) or within one line (- - -).
+constexpr int kMaxYamlNesting = 64;
 void CheckOpenCvYamlLayout(const std::string& text);
 
 // Reads `path`, checks it (CheckOpenCvYamlLayout) and opens it in `storage`

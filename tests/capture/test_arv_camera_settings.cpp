@@ -110,8 +110,9 @@ TEST(ArvCameraSettings, ErrorsNameFileFieldAndReason) {
 }
 
 // Found by tests/fuzz: OpenCV 4.6's YAML reader never returns on the first
-// file (a line indented less than the first one, then "xyz-"), and a file
-// that is a list made it throw its own assertion.
+// file (a line indented less than the first one, then "xyz-"), throws
+// std::length_error on an empty key at the end of the file, and a file that
+// is a list made it throw its own assertion.
 TEST(ArvCameraSettings, FilesOpenCvCannotReadAreErrorsNotHangs) {
   EXPECT_NE(LoadError("hang", "%YAML:1.0\n  aravis: 1\nxyz-\n")
                 .find("hang.yaml: line 3: indented less than line 2, where the top level starts"),
@@ -120,6 +121,8 @@ TEST(ArvCameraSettings, FilesOpenCvCannotReadAreErrorsNotHangs) {
                 .find("end.yaml: line 3: '...' (the end of a YAML document) is not supported"),
             std::string::npos);
   EXPECT_NE(LoadError("list", "%YAML:1.0\n- 1\n").find("list.yaml: the file must be a YAML map"),
+            std::string::npos);
+  EXPECT_NE(LoadError("key", "%YAML:1.0\n  t: c\n  :").find("key.yaml: not YAML that OpenCV reads"),
             std::string::npos);
 }
 

@@ -80,4 +80,18 @@ TEST(Pcd, MalformedHeaderIsAPcdError) {
   }
 }
 
+// Found by tests/fuzz (AddressSanitizer): PCL takes SIZE from the header and
+// copies 4-byte floats regardless, reading past the data of the last point.
+TEST(Pcd, FieldSizesThatDisagreeWithTheirTypesAreAPcdError) {
+  std::string text = "VERSION 0.7\nFIELDS x y z intensity\nSIZE 3 4 T 1\nPOINTS 40\nDATA binary\n";
+  text += std::string(320, '\x01');
+  const ScratchFile bad("sizes.pcd", text);
+  try {
+    ws::ReadPcd(bad.path());
+    ADD_FAILURE() << "read a PCD whose x is 3 bytes";
+  } catch (const ws::PcdError& e) {
+    EXPECT_NE(std::string(e.what()).find("the fields' SIZE disagrees with their TYPE and COUNT"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace

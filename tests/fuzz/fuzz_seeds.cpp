@@ -20,6 +20,7 @@
 #include "detect/stereo_corner_finder.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "rectify/stereo_rig.h"
 #include "sim/sim_config.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
@@ -152,42 +153,24 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
   seeds.Message("no-board", none);
 }
 
-camera_calibration_t CalibrationMessage(const ws::CameraModel& m, const std::string& name) {
-  camera_calibration_t c{};
-  c.name = name;
-  c.image_width = m.image_width;
-  c.image_height = m.image_height;
-  c.model = m.distortion.kind;
-  c.degree = m.distortion.degree;
-  c.knots = m.distortion.knots;
-  c.nknots = int32_t(c.knots.size());
-  c.coeffs = m.distortion.coeffs;
-  c.ncoeffs = int32_t(c.coeffs.size());
-  c.fx = m.fx, c.fy = m.fy, c.cx = m.cx, c.cy = m.cy, c.p1 = m.p1, c.p2 = m.p2;
-  c.rms = 0.05;
-  c.nviews = 2;
-  c.view_rms = {0.04, 0.06};
-  c.nparams = 2;
-  c.param_names = {"fx", "fy"};
-  c.stddev = {0.1, 0.1};
-  return c;
-}
-
 void CalibrationSeeds(Seeds& seeds) {
   const ws::SimConfig sim = ws::DefaultSimConfig(0.1);
-  ws::CameraModel poly6 = sim.left;
-  poly6.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
-  for (const auto& [name, model] : {std::pair{"bspline", sim.left}, std::pair{"poly6", poly6}}) {
-    stereo_calibration_t stereo{};
-    stereo.utime = 1;
-    stereo.left = CalibrationMessage(model, "left");
-    stereo.right = CalibrationMessage(model, "right");
-    for (int i = 0; i < 9; ++i) stereo.R[i] = i % 4 == 0;
-    stereo.T[0] = -0.3;
-    stereo.rms = 0.06;
-    seeds.Message(name, stereo);
-    seeds.Message(name, stereo.left);
-  }
+  ws::StereoRig rig;
+  rig.left = rig.right = sim.left;
+  rig.T = Eigen::Vector3d(-0.3, 0, 0);
+  seeds.Message("bspline", ws::MessageFromStereoRig(rig, 1));
+  rig.left.distortion = rig.right.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
+  stereo_calibration_t poly6 = ws::MessageFromStereoRig(rig, 1);
+  // With the quality figures a solver fills in.
+  poly6.rms = 0.06;
+  poly6.left.nviews = 2;
+  poly6.left.view_rms = {0.04, 0.06};
+  poly6.left.nparams = 2;
+  poly6.left.param_names = {"fx", "fy"};
+  poly6.left.stddev = {0.1, 0.1};
+  seeds.Message("poly6", poly6);
+  seeds.Message("bspline", ws::MessageFromCameraModel(sim.left, "left"));
+  seeds.Message("poly6", poly6.left);
 }
 
 process_status_t StatusMessage() {

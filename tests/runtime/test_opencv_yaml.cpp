@@ -1,5 +1,6 @@
-// OpenCV-readable YAML files: what OpenCV itself writes opens, and the two
-// layouts on which OpenCV 4.6's reader never returns are refused first.
+// OpenCV-readable YAML files: what OpenCV itself writes opens, and the
+// layouts on which OpenCV 4.6's reader never returns or overflows its stack
+// are refused first.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -36,6 +37,14 @@ TEST(OpenCvYaml, LayoutsOpenCvWouldHangOnAreRefusedWithTheirLine) {
             "line 4: indented less than line 2, where the top level starts");
   EXPECT_EQ(error("%YAML:1.0\na: 1\n...\n-\n"),
             "line 3: '...' (the end of a YAML document) is not supported");
+  // OpenCV recurses per level: some 50000 levels overflow its stack.
+  EXPECT_EQ(error("%YAML:1.0\na: " + std::string(65, '[') + "\n"), "line 2: nested more than 64 deep");
+  EXPECT_EQ(error("%YAML:1.0\na:\n" + std::string(40, '{') + "\n" + std::string(40, '[') + "\n"),
+            "line 4: nested more than 64 deep");
+  std::string dashes = "%YAML:1.0\na: ";
+  for (int i = 0; i < 65; ++i) dashes += "- ";
+  EXPECT_EQ(error(dashes + "x\n"), "line 2: nested more than 64 deep");
+  EXPECT_EQ(error("%YAML:1.0\na: \"[[[[\" # [[[[\nb: [[[1]], {c: [2]}]\nd: - - 3\n"), "");
   EXPECT_THROW(
       {
         cv::FileStorage in;

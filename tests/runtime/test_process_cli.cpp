@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iostream>
+#include <sstream>
 
 #include "runtime/process_cli.h"
 #include "test_support.h"
@@ -13,7 +15,9 @@ struct Parsed {
   std::string board = "default";
   double rate = 0;
   std::vector<int> ids;
+  int workers = 1;
   std::string in_url;
+  std::string errors;  // what ProcessCli said on stderr
 };
 
 Parsed Parse(std::vector<std::string> args, const std::string& yaml = "") {
@@ -30,7 +34,12 @@ Parsed Parse(std::vector<std::string> args, const std::string& yaml = "") {
   cli.app().add_option("--board", p.board);
   cli.app().add_option("--rate", p.rate);
   cli.app().add_option("--ids", p.ids);
+  cli.app().add_option("--workers", p.workers)->check(CLI::Range(1, 256));
+  std::ostringstream errors;
+  std::streambuf* stderr_buffer = std::cerr.rdbuf(errors.rdbuf());
   p.exit_code = cli.Parse(int(argv.size()), argv.data());
+  std::cerr.rdbuf(stderr_buffer);
+  p.errors = errors.str();
   p.in_url = cli.options().in_url;
   return p;
 }
@@ -55,6 +64,22 @@ TEST(ProcessCli, UnknownKeysBadValuesAndBadYamlAreErrors) {
   EXPECT_NE(Parse({}, "rate: [1, 2\n").exit_code.value_or(0), 0);
   EXPECT_NE(Parse({"--no-such-flag"}).exit_code.value_or(0), 0);
   EXPECT_NE(Parse({"--config", "/nonexistent.yaml"}).exit_code.value_or(0), 0);
+}
+
+TEST(ProcessCli, ConfigErrorsNameTheFileTheKeyAndTheReason) {
+  auto said = [](const std::string& yaml) { return Parse({}, yaml).errors; };
+  EXPECT_NE(said("bored: 1\n").find("c.yaml: unknown option 'bored'"), std::string::npos) << said("bored: 1\n");
+  EXPECT_NE(said("rate: fast\n").find("c.yaml: Could not convert: --rate = fast"), std::string::npos)
+      << said("rate: fast\n");
+  EXPECT_NE(said("workers: 0\n").find("c.yaml: --workers: Value 0 not in range 1 to 256"), std::string::npos)
+      << said("workers: 0\n");
+  EXPECT_NE(said("board: {a: 1}\n").find("c.yaml: config key 'board' (line 1) must be a scalar"),
+            std::string::npos)
+      << said("board: {a: 1}\n");
+  EXPECT_NE(said("rate: [1, 2\n").find("c.yaml: config is not valid YAML"), std::string::npos)
+      << said("rate: [1, 2\n");
+  const std::string missing = Parse({"--config", "/nonexistent.yaml"}).errors;
+  EXPECT_NE(missing.find("/nonexistent.yaml"), std::string::npos) << missing;
 }
 
 TEST(ProcessCli, HelpExitsZero) { EXPECT_EQ(Parse({"--help"}).exit_code, 0); }

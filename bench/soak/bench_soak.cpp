@@ -1,0 +1,211 @@
+// Soak run of the simulated pipeline at the camera rate, over udpm:
+// stereo-capture (sim:, --loop) -> stereo-detect -> stereo-match, the last
+// given the simulator's true calibration on STEREO_CALIBRATION. Every
+// --sample seconds it records each process's resident memory
+// (/proc/PID/status) and the counters of its last PROCESS_STATUS in
+// OUT/soak.csv. At the end it prints each process's memory at the first
+// sample and at the end, and per channel the frames received and dropped in
+// each quarter of the run: flat memory and steady drops mean no leak and no
+// backlog building up.
+//
+//   build/bench/bench_soak [--duration 1800] [--rate 10] [--sim config/sim/default.yaml] [--out DIR]
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "lcm_io/channels.h"
+#include "rectify/stereo_rig.h"
+#include "sim/sim_config.h"
+#include "widestereo/process_status_t.hpp"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Child {
+  std::string name;
+  pid_t pid = -1;
+  bool exited = false;
+};
+
+// argv[0] started with its output to `output`.
+pid_t Spawn(const std::vector<std::string>& argv, const std::string& output) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("cannot start " + argv[0]);
+  return pid;
+}
+
+long ResidentKb(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string key;
+  long kb = 0;
+  while (status >> key)
+    if (key == "VmRSS:" && status >> kb) return kb;
+  return -1;
+}
+
+struct Sample {
+  double t_s;
+  std::map<std::string, long> rss_kb;                                     // by process
+  std::map<std::string, widestereo::channel_counters_t> counters;        // by "process channel"
+};
+
+void Summarize(const std::vector<Sample>& samples, const std::vector<Child>& children) {
+  if (samples.size() < 2) {
+    std::printf("soak: fewer than two samples, nothing to compare\n");
+    return;
+  }
+  const Sample &first = samples.front(), &last = samples.back();
+  std::printf("\nresident memory (MB): at %.0f s, at %.0f s, peak\n", first.t_s, last.t_s);
+  for (const Child& child : children) {
+    long peak = 0;
+    for (const auto& s : samples) peak = std::max(peak, s.rss_kb.count(child.name) ? s.rss_kb.at(child.name) : 0);
+    std::printf("  %-16s %8.1f %8.1f %8.1f\n", child.name.c_str(), first.rss_kb.at(child.name) / 1024.0,
+                last.rss_kb.at(child.name) / 1024.0, peak / 1024.0);
+  }
+  std::printf("\nper quarter of the run: received / dropped / rejected\n");
+  const size_t n = samples.size() - 1;
+  for (const auto& [key, end] : last.counters) {
+    if (end.received == 0) continue;
+    std::printf("  %-36s", key.c_str());
+    for (int q = 0; q < 4; ++q) {
+      const auto& a = samples[q * n / 4].counters;
+      const auto& b = samples[(q + 1) * n / 4].counters;
+      const auto from = a.count(key) ? a.at(key) : widestereo::channel_counters_t{};
+      const auto to = b.count(key) ? b.at(key) : widestereo::channel_counters_t{};
+      std::printf("  %5ld/%4ld/%ld", long(to.received - from.received), long(to.dropped - from.dropped),
+                  long(to.rejected - from.rejected));
+    }
+    std::printf("\n");
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("Soak run of capture (simulator) -> detect -> match over udpm; memory and drops over time.");
+  double duration_s = 1800, rate_hz = 10, sample_s = 10;
+  std::string sim_path = "config/sim/default.yaml";
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  std::string out = std::string("logs/soak-") + stamp;
+  std::string bin = (fs::canonical("/proc/self/exe").parent_path().parent_path() / "bin").string();
+  app.add_option("--duration", duration_s, "Seconds to run")->capture_default_str();
+  app.add_option("--rate", rate_hz, "Pairs per second from the simulator (config/rig's frame_rate_hz)")
+      ->capture_default_str();
+  app.add_option("--sample", sample_s, "Seconds between samples")->capture_default_str();
+  app.add_option("--sim", sim_path, "Simulator config")->capture_default_str();
+  app.add_option("--out", out, "Folder for soak.csv and the processes' logs")->capture_default_str();
+  app.add_option("--bin", bin, "Folder of the process executables")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  fs::create_directories(out);
+  const ws::SimConfig sim = ws::LoadSimConfig(sim_path);
+  ws::StereoRig rig;
+  rig.left = sim.left;
+  rig.right = sim.right;
+  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = sim.R.val[i];
+  rig.T = Eigen::Vector3d(sim.T[0], sim.T[1], sim.T[2]);
+  const widestereo::stereo_calibration_t calibration = ws::MessageFromStereoRig(rig, 0);
+
+  const std::string url = "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 10000) +
+                          "?ttl=0&recv_buf_size=8388608";
+  lcm::LCM lcm(url);
+  if (!lcm.good()) return std::fprintf(stderr, "bench_soak: cannot open %s\n", url.c_str()), 1;
+  std::map<std::string, widestereo::process_status_t> statuses;
+  lcm.subscribeFunction(
+      ws::channel::kProcessStatus,
+      +[](const lcm::ReceiveBuffer* rbuf, const std::string&, std::map<std::string, widestereo::process_status_t>* out) {
+        widestereo::process_status_t s;
+        if (s.decode(rbuf->data, 0, int(rbuf->data_size)) > 0) (*out)[s.name] = s;
+      },
+      &statuses);
+
+  const std::vector<std::string> common = {"--in-url", url, "--out-url", url, "--log-dir", out, "--quiet"};
+  auto command = [&](const std::string& name, std::vector<std::string> args) {
+    args.insert(args.begin(), bin + "/" + name);
+    args.insert(args.end(), common.begin(), common.end());
+    return Child{name, Spawn(args, out + "/" + name + ".out")};
+  };
+  std::vector<Child> children = {
+      command("stereo-match", {}),
+      command("stereo-detect", {"--board", sim.board ? sim.board->board.id : "chessboard:9x6:0.05"}),
+  };
+  children.push_back(command("stereo-capture", {"--source", "sim:" + sim_path, "--loop", "--rate",
+                                                std::to_string(rate_hz)}));
+  std::printf("soak: %s at %.1f Hz for %.0f s over %s; logs in %s\n", sim_path.c_str(), rate_hz, duration_s,
+              url.c_str(), out.c_str());
+
+  std::ofstream csv(out + "/soak.csv");
+  csv << "t_s,process,rss_kb,channel,received,published,dropped,rejected\n";
+  std::vector<Sample> samples;
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  double next_sample = sample_s, next_calibration = 0;
+  std::string died;
+  while (elapsed() < duration_s && died.empty()) {
+    lcm.handleTimeout(100);
+    const bool matching = statuses.count("stereo-match") && statuses["stereo-match"].state == "matching";
+    if (!matching && elapsed() >= next_calibration) {
+      lcm.publish(ws::channel::kStereoCalibration, &calibration);
+      next_calibration = elapsed() + 1;
+    }
+    for (Child& child : children)
+      if (waitpid(child.pid, nullptr, WNOHANG) == child.pid) child.exited = true, died = child.name;
+    if (elapsed() < next_sample) continue;
+    next_sample += sample_s;
+    Sample sample{elapsed(), {}, {}};
+    for (const Child& child : children) {
+      sample.rss_kb[child.name] = ResidentKb(child.pid);
+      for (const auto& c : statuses[child.name].channels) {
+        sample.counters[child.name + " " + c.channel] = c;
+        csv << sample.t_s << ',' << child.name << ',' << sample.rss_kb[child.name] << ',' << c.channel << ','
+            << c.received << ',' << c.published << ',' << c.dropped << ',' << c.rejected << '\n';
+      }
+    }
+    csv.flush();
+    samples.push_back(sample);
+  }
+  for (const Child& child : children)
+    if (!child.exited) kill(child.pid, SIGINT);
+  for (Child& child : children) {
+    for (int i = 0; i < 100 && !child.exited; ++i) {
+      child.exited = waitpid(child.pid, nullptr, WNOHANG) == child.pid;
+      if (!child.exited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (!child.exited) kill(child.pid, SIGKILL), waitpid(child.pid, nullptr, 0);
+  }
+  if (!died.empty()) std::printf("soak: %s exited early after %.0f s (see %s)\n", died.c_str(), elapsed(), out.c_str());
+  Summarize(samples, children);
+  std::printf("\nsamples: %s/soak.csv\n", out.c_str());
+  return died.empty() ? 0 : 1;
+}
