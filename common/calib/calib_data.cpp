@@ -15,6 +15,10 @@ void StereoData::Add(const BoardView& left_view, const BoardView& right_view) {
 BoardView ToBoardView(const widestereo::camera_corners_t& msg) {
   BoardView view;
   const int n = std::max(0, msg.n);
+  if (msg.ids.size() != size_t(n) || msg.object_points.size() != size_t(n) || msg.image_points.size() != size_t(n))
+    throw CalibrationError("corners message: n = " + std::to_string(msg.n) + " but " + std::to_string(msg.ids.size()) +
+                           " ids, " + std::to_string(msg.image_points.size()) + " image and " +
+                           std::to_string(msg.object_points.size()) + " object points");
   view.ids.reserve(n);
   view.object.reserve(n);
   view.image.reserve(n);

@@ -174,7 +174,7 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
 }
 
 TEST(CalibBadInput, ImageSizeChangesAndBadOptionsAreRefused) {
-  widestereo::stereo_corners_t msg;
+  widestereo::stereo_corners_t msg{};
   msg.left.n = 1;
   msg.left.ids = {0};
   msg.left.image_points = {{1.0, 2.0}};
@@ -192,6 +192,10 @@ TEST(CalibBadInput, ImageSizeChangesAndBadOptionsAreRefused) {
   options.model = "bspline";
   options.knots = 1;
   ExpectCalibrationError([&] { CalibrateStereo(data, options); }, {"2 to 64 knots"});
+
+  msg.left.image_width = 640;
+  msg.left.n = 5;  // more corners claimed than given: refused, never read past the arrays
+  ExpectCalibrationError([&] { AddStereoCorners(data, msg); }, {"n = 5 but 1 ids"});
 }
 
 }  // namespace
