@@ -3,10 +3,10 @@
 // given the simulator's true calibration on STEREO_CALIBRATION. Every
 // --sample seconds it records each process's resident memory
 // (/proc/PID/status) and the counters of its last PROCESS_STATUS in
-// OUT/soak.csv. At the end it prints each process's memory at the first
-// sample and at the end, and per channel the frames received and dropped in
-// each quarter of the run: flat memory and steady drops mean no leak and no
-// backlog building up.
+// OUT/soak.csv. At the end it prints each process's memory (median of the
+// first and of the last quarter of the run, and peak), and per channel the
+// messages received, dropped and rejected in each quarter: flat memory and
+// steady drops mean no leak and no backlog building up.
 //
 //   build/bench/bench_soak [--duration 1800] [--rate 10] [--sim config/sim/default.yaml] [--out DIR]
 #include <fcntl.h>
@@ -83,17 +83,26 @@ void Summarize(const std::vector<Sample>& samples, const std::vector<Child>& chi
     std::printf("soak: fewer than two samples, nothing to compare\n");
     return;
   }
-  const Sample &first = samples.front(), &last = samples.back();
-  std::printf("\nresident memory (MB): at %.0f s, at %.0f s, peak\n", first.t_s, last.t_s);
+  // A process's memory moves with its work in flight (stereo-match's SGBM
+  // buffers come and go with each frame): compare medians, not two samples.
+  const size_t quarter = std::max<size_t>(1, samples.size() / 4);
+  auto median_mb = [&](const std::string& name, size_t from, size_t to) {
+    std::vector<long> kb;
+    for (size_t i = from; i < to; ++i) kb.push_back(samples[i].rss_kb.at(name));
+    std::nth_element(kb.begin(), kb.begin() + long(kb.size() / 2), kb.end());
+    return kb[kb.size() / 2] / 1024.0;
+  };
+  std::printf("\nresident memory (MB): median of the first and of the last quarter, peak (%zu samples)\n",
+              samples.size());
   for (const Child& child : children) {
     long peak = 0;
-    for (const auto& s : samples) peak = std::max(peak, s.rss_kb.count(child.name) ? s.rss_kb.at(child.name) : 0);
-    std::printf("  %-16s %8.1f %8.1f %8.1f\n", child.name.c_str(), first.rss_kb.at(child.name) / 1024.0,
-                last.rss_kb.at(child.name) / 1024.0, peak / 1024.0);
+    for (const auto& s : samples) peak = std::max(peak, s.rss_kb.at(child.name));
+    std::printf("  %-16s %8.1f %8.1f %8.1f\n", child.name.c_str(), median_mb(child.name, 0, quarter),
+                median_mb(child.name, samples.size() - quarter, samples.size()), peak / 1024.0);
   }
   std::printf("\nper quarter of the run: received / dropped / rejected\n");
   const size_t n = samples.size() - 1;
-  for (const auto& [key, end] : last.counters) {
+  for (const auto& [key, end] : samples.back().counters) {
     if (end.received == 0) continue;
     std::printf("  %-36s", key.c_str());
     for (int q = 0; q < 4; ++q) {

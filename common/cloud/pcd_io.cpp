@@ -1,6 +1,7 @@
 #include "cloud/pcd_io.h"
 
 #include <algorithm>
+#include <fstream>
 #include <vector>
 
 #include <pcl/common/io.h>
@@ -33,6 +34,29 @@ bool FieldsFitTheirPoint(const pcl::PCLPointCloud2& blob) {
     if (size == 0 || end > next) return false;
   }
   return true;
+}
+
+// PCL reads a binary body without checking it against the header: a
+// compressed one announcing 0 bytes made it copy points from nowhere (found
+// by tests/fuzz). Throws PcdError unless the file holds the body the header
+// announces: WIDTH x HEIGHT points raw, or compressed to that size.
+void CheckBinaryBody(const std::string& path, const pcl::PCLPointCloud2& blob, int data_type,
+                     unsigned data_idx) {
+  constexpr int kBinary = 1, kBinaryCompressed = 2;
+  if (data_type != kBinary && data_type != kBinaryCompressed) return;  // ASCII: read as text
+  const uint64_t body_bytes = uint64_t(blob.width) * blob.height * blob.point_step;
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  const uint64_t file_bytes = uint64_t(file.tellg());
+  if (data_type == kBinary && file_bytes < data_idx + body_bytes)
+    throw PcdError("PCD '" + path + "': " + std::to_string(file_bytes - data_idx) +
+                   " bytes of data for " + std::to_string(body_bytes));
+  if (data_type == kBinaryCompressed) {
+    uint32_t sizes[2] = {0, 0};  // compressed, uncompressed; little-endian as PCL writes them
+    file.seekg(data_idx);
+    file.read(reinterpret_cast<char*>(sizes), sizeof sizes);
+    if (!file || sizes[1] != body_bytes || data_idx + 8 + uint64_t(sizes[0]) > file_bytes)
+      throw PcdError("PCD '" + path + "': its compressed data do not hold WIDTH x HEIGHT points");
+  }
 }
 
 // What PointXYZ(I) reads: one 4-byte float.
@@ -84,7 +108,12 @@ widestereo::point_cloud_t ReadPcd(const std::string& path) {
   bool with_intensity;
   PclCloud cloud;
   try {
-    if (reader.readHeader(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
+    Eigen::Vector4f origin;
+    Eigen::Quaternionf orientation;
+    int version, data_type;
+    unsigned data_idx;
+    if (reader.readHeader(path, blob, origin, orientation, version, data_type, data_idx) != 0)
+      throw PcdError("cannot read PCD '" + path + "'");
     for (const char* axis : {"x", "y", "z"}) {
       const pcl::PCLPointField* field = FindField(blob, axis);
       if (!field) throw PcdError("PCD '" + path + "' has no field '" + axis + "'");
@@ -92,6 +121,7 @@ widestereo::point_cloud_t ReadPcd(const std::string& path) {
     }
     if (!FieldsFitTheirPoint(blob))
       throw PcdError("PCD '" + path + "': the fields' SIZE disagrees with their TYPE and COUNT");
+    CheckBinaryBody(path, blob, data_type, data_idx);
     if (reader.read(path, blob) != 0) throw PcdError("cannot read PCD '" + path + "'");
     if (blob.data.size() != uint64_t(blob.row_step) * blob.height ||
         uint64_t(blob.point_step) * blob.width > blob.row_step)

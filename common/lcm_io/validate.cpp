@@ -22,6 +22,8 @@ bool AllFinite(const Range& values) {
                      [](double v) { return std::isfinite(v); });
 }
 
+constexpr double kMaxFocalPx = 1e6;
+
 // A row-major 3x3 matrix with orthonormal rows and determinant +1, to 1e-6.
 bool IsRotation(const double* R) {
   for (int i = 0; i < 3; ++i)
@@ -72,7 +74,15 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
   Require(std::is_sorted(msg.knots.begin(), msg.knots.end()), t, "knots are not non-decreasing");
   const double intrinsics[] = {msg.fx, msg.fy, msg.cx, msg.cy, msg.p1, msg.p2};
-  Require(AllFinite(intrinsics) && msg.fx > 0 && msg.fy > 0, t, "bad intrinsics");
+  Require(AllFinite(intrinsics), t, "non-finite intrinsics");
+  // Bounds no real camera comes near; beyond them the model's arithmetic
+  // loses every digit (a 1e270 px focal length was found by tests/fuzz).
+  Require(msg.fx > 0 && msg.fy > 0 && msg.fx <= kMaxFocalPx && msg.fy <= kMaxFocalPx, t,
+          "fx and fy must be in (0, " + std::to_string(int(kMaxFocalPx)) + "] pixels");
+  Require(msg.cx >= -msg.image_width && msg.cx <= 2.0 * msg.image_width && msg.cy >= -msg.image_height &&
+              msg.cy <= 2.0 * msg.image_height,
+          t, "the principal point (cx, cy) lies more than an image size outside the image");
+  Require(std::abs(msg.p1) <= 1 && std::abs(msg.p2) <= 1, t, "|p1| and |p2| must be at most 1");
   if (msg.model == "bspline") {
     Require(msg.degree >= 1, t, "B-spline degree must be at least 1");
     Require(msg.ncoeffs == msg.nknots - msg.degree - 1, t,

@@ -50,7 +50,11 @@ void CheckOpenCvYamlLayout(const std::string& text) {
       throw YamlFileError(where + "'...' (the end of a YAML document) is not supported");
     if (top_indent == std::string::npos) {
       // Directives and the document start come before the top-level collection.
-      if (line[indent] != '%' && line.compare(indent, 3, "---") != 0) {
+      if (line.compare(indent, 3, "---") == 0) {
+        const size_t rest = line.find_first_not_of(' ', indent + 3);
+        if (rest != std::string::npos && line[rest] != '#')
+          throw YamlFileError(where + "nothing may follow '---' on its line");
+      } else if (line[indent] != '%') {
         top_indent = indent;
         top_line = number;
       }

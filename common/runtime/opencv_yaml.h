@@ -21,8 +21,9 @@ struct YamlFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws YamlFileError "line N: REASON" for a "..." line, a line (other than
-// a comment or blank) indented less than the first, or collections nested
+// Throws YamlFileError "line N: REASON" for a "..." line, text after "---"
+// on its line, a line (other than a comment or blank) indented less than the
+// first, or collections nested
 // more than kMaxYamlNesting deep in flow style ([ {) or within one line (- - -).
 constexpr int kMaxYamlNesting = 64;
 void CheckOpenCvYamlLayout(const std::string& text);

@@ -94,4 +94,22 @@ TEST(Pcd, FieldSizesThatDisagreeWithTheirTypesAreAPcdError) {
   }
 }
 
+// Found by tests/fuzz (a segfault in PCL): a compressed body announcing 0
+// bytes for 40 points; and a raw body shorter than its points.
+TEST(Pcd, BodyThatDoesNotHoldItsPointsIsAPcdError) {
+  using namespace std::string_literals;
+  const std::string header = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 40\n"
+                             "HEIGHT 1\nPOINTS 40\nDATA ";
+  const ScratchFile compressed("compressed.pcd", header + "binary_compressed\n" + "\x04\0\0\0\0\0\0\0abcd"s);
+  const ScratchFile raw("raw.pcd", header + "binary\n" + std::string(100, '\x01'));  // 480 bytes due
+  for (const ScratchFile* file : {&compressed, &raw}) {
+    try {
+      ws::ReadPcd(file->path());
+      ADD_FAILURE() << "read " << file->path();
+    } catch (const ws::PcdError& e) {
+      EXPECT_NE(std::string(e.what()).find(file->path()), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace

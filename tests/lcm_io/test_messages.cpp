@@ -288,7 +288,8 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
 }
 
 // Found by the fault-injection test: stereo-match spent minutes building
-// rectification maps for a calibration of a 1048576-pixel-wide camera.
+// rectification maps for a calibration of a 1048576-pixel-wide camera; and by
+// tests/fuzz: a 1e270 px focal length.
 TEST(Messages, CalibrationsLargerThanAnyImageOrWithoutARotationAreRejected) {
   camera_calibration_t calib = Calibration("left");
   calib.image_width = 1 << 20;
@@ -296,6 +297,17 @@ TEST(Messages, CalibrationsLargerThanAnyImageOrWithoutARotationAreRejected) {
   calib.image_width = 1 << 16;
   calib.image_height = 1 << 13;  // each side within the limit, 2^29 pixels in all
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+
+  // Intrinsics no camera has: the model's arithmetic loses every digit.
+  for (auto bad : {+[](camera_calibration_t& c) { c.fx = 1e270; },
+                   +[](camera_calibration_t& c) { c.fy = 0; },
+                   +[](camera_calibration_t& c) { c.cx = -2000; },  // the image is 1280 wide
+                   +[](camera_calibration_t& c) { c.cy = 3000; },   // and 960 high
+                   +[](camera_calibration_t& c) { c.p2 = 2; }}) {
+    calib = Calibration("left");
+    bad(calib);
+    EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
+  }
 
   stereo_calibration_t stereo;
   stereo.left = stereo.right = Calibration("left");

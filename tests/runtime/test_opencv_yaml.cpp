@@ -35,6 +35,8 @@ TEST(OpenCvYaml, LayoutsOpenCvWouldHangOnAreRefusedWithTheirLine) {
   EXPECT_EQ(error("%YAML:1.0\n---\n# top\na:\n  b: 1\n# back at 0\nc: 2\n"), "");
   EXPECT_EQ(error("%YAML:1.0\n  a: 1\n# comment\nxyz-\n"),
             "line 4: indented less than line 2, where the top level starts");
+  EXPECT_EQ(error("%YAML:1.0\n----n\nx\n"), "line 2: nothing may follow '---' on its line");
+  EXPECT_EQ(error("%YAML:1.0\n--- # start\na: 1\n"), "");
   EXPECT_EQ(error("%YAML:1.0\na: 1\n...\n-\n"),
             "line 3: '...' (the end of a YAML document) is not supported");
   // OpenCV recurses per level: some 50000 levels overflow its stack.
