@@ -1,6 +1,9 @@
-// Soak run of the simulated pipeline at the camera rate, over udpm:
-// stereo-capture (sim:, --loop) -> stereo-detect -> stereo-match, the last
-// given the simulator's true calibration on STEREO_CALIBRATION. Every
+// Soak run of the whole simulated pipeline at the camera rate, over udpm:
+// stereo-capture (sim:, --loop) -> stereo-detect -> stereo-calibrate, and
+// stereo-match (started from the simulator's true calibration) ->
+// stereo-cloud. Every --solve seconds it sends `solve`, so stereo-calibrate
+// solves and publishes STEREO_CALIBRATION and stereo-match rebuilds its maps,
+// as in a session where someone recalibrates now and then. Every
 // --sample seconds it records each process's resident memory
 // (/proc/PID/status) and the counters of its last PROCESS_STATUS in
 // OUT/soak.csv. At the end it prints each process's memory (median of the
@@ -8,7 +11,7 @@
 // messages received, dropped and rejected in each quarter: flat memory and
 // steady drops mean no leak and no backlog building up.
 //
-//   build/bench/bench_soak [--duration 1800] [--rate 10] [--sim config/sim/default.yaml] [--out DIR]
+//   build/bench/bench_soak [--duration 1800] [--rate 10] [--solve 300] [--sim config/sim/default.yaml] [--out DIR]
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -29,9 +32,11 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "calib/calib_file.h"
 #include "lcm_io/channels.h"
-#include "rectify/stereo_rig.h"
-#include "sim/sim_config.h"
+#include "sim/simulator.h"
+#include "sim/truth_calibration.h"
+#include "widestereo/command_t.hpp"
 #include "widestereo/process_status_t.hpp"
 
 extern char** environ;
@@ -100,18 +105,18 @@ void Summarize(const std::vector<Sample>& samples, const std::vector<Child>& chi
     std::printf("  %-16s %8.1f %8.1f %8.1f\n", child.name.c_str(), median_mb(child.name, 0, quarter),
                 median_mb(child.name, samples.size() - quarter, samples.size()), peak / 1024.0);
   }
-  std::printf("\nper quarter of the run: received / dropped / rejected\n");
+  std::printf("\nper quarter of the run: received / published / dropped / rejected\n");
   const size_t n = samples.size() - 1;
   for (const auto& [key, end] : samples.back().counters) {
-    if (end.received == 0) continue;
+    if (end.received == 0 && end.published == 0) continue;
     std::printf("  %-36s", key.c_str());
     for (int q = 0; q < 4; ++q) {
       const auto& a = samples[q * n / 4].counters;
       const auto& b = samples[(q + 1) * n / 4].counters;
       const auto from = a.count(key) ? a.at(key) : widestereo::channel_counters_t{};
       const auto to = b.count(key) ? b.at(key) : widestereo::channel_counters_t{};
-      std::printf("  %5ld/%4ld/%ld", long(to.received - from.received), long(to.dropped - from.dropped),
-                  long(to.rejected - from.rejected));
+      std::printf("  %5ld/%ld/%ld/%ld", long(to.received - from.received), long(to.published - from.published),
+                  long(to.dropped - from.dropped), long(to.rejected - from.rejected));
     }
     std::printf("\n");
   }
@@ -120,8 +125,9 @@ void Summarize(const std::vector<Sample>& samples, const std::vector<Child>& chi
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("Soak run of capture (simulator) -> detect -> match over udpm; memory and drops over time.");
-  double duration_s = 1800, rate_hz = 10, sample_s = 10;
+  CLI::App app("Soak run of capture (simulator) -> detect -> calibrate, match -> cloud over udpm; memory and drops "
+               "over time.");
+  double duration_s = 1800, rate_hz = 10, sample_s = 10, solve_s = 300;
   std::string sim_path = "config/sim/default.yaml";
   char stamp[32];
   const std::time_t now = std::time(nullptr);
@@ -132,6 +138,7 @@ int main(int argc, char** argv) {
   app.add_option("--rate", rate_hz, "Pairs per second from the simulator (config/rig's frame_rate_hz)")
       ->capture_default_str();
   app.add_option("--sample", sample_s, "Seconds between samples")->capture_default_str();
+  app.add_option("--solve", solve_s, "Seconds between 'solve' commands to stereo-calibrate")->capture_default_str();
   app.add_option("--sim", sim_path, "Simulator config")->capture_default_str();
   app.add_option("--out", out, "Folder for soak.csv and the processes' logs")->capture_default_str();
   app.add_option("--bin", bin, "Folder of the process executables")->capture_default_str();
@@ -139,12 +146,8 @@ int main(int argc, char** argv) {
 
   fs::create_directories(out);
   const ws::SimConfig sim = ws::LoadSimConfig(sim_path);
-  ws::StereoRig rig;
-  rig.left = sim.left;
-  rig.right = sim.right;
-  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = sim.R.val[i];
-  rig.T = Eigen::Vector3d(sim.T[0], sim.T[1], sim.T[2]);
-  const widestereo::stereo_calibration_t calibration = ws::MessageFromStereoRig(rig, 0);
+  const std::string true_calibration = out + "/true-calibration.yaml";
+  ws::calib::WriteCalibrationFile(true_calibration, ws::TrueCalibration(ws::Simulator(sim).Truth()));
 
   const std::string url = "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 10000) +
                           "?ttl=0&recv_buf_size=8388608";
@@ -166,7 +169,9 @@ int main(int argc, char** argv) {
     return Child{name, Spawn(args, out + "/" + name + ".out")};
   };
   std::vector<Child> children = {
-      command("stereo-match", {}),
+      command("stereo-cloud", {}),
+      command("stereo-match", {"--calib", true_calibration, "--cloud-step", "2"}),
+      command("stereo-calibrate", {"--out", out + "/calibration.yaml"}),
       command("stereo-detect", {"--board", sim.board ? sim.board->board.id : "chessboard:9x6:0.05"}),
   };
   children.push_back(command("stereo-capture", {"--source", "sim:" + sim_path, "--loop", "--rate",
@@ -179,14 +184,16 @@ int main(int argc, char** argv) {
   std::vector<Sample> samples;
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  double next_sample = sample_s, next_calibration = 0;
+  double next_sample = sample_s, next_solve = solve_s;
   std::string died;
   while (elapsed() < duration_s && died.empty()) {
     lcm.handleTimeout(100);
-    const bool matching = statuses.count("stereo-match") && statuses["stereo-match"].state == "matching";
-    if (!matching && elapsed() >= next_calibration) {
-      lcm.publish(ws::channel::kStereoCalibration, &calibration);
-      next_calibration = elapsed() + 1;
+    if (elapsed() >= next_solve) {
+      widestereo::command_t solve{};
+      solve.command = "solve";
+      solve.target = "stereo-calibrate";
+      lcm.publish(ws::channel::kStereoCommand, &solve);
+      next_solve += solve_s;
     }
     for (Child& child : children)
       if (waitpid(child.pid, nullptr, WNOHANG) == child.pid) child.exited = true, died = child.name;

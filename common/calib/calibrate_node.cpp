@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "calib/calib_file.h"
@@ -20,6 +21,13 @@ namespace {
 std::string ModelFilePath(const std::string& yaml, const std::string& model) {
   const std::filesystem::path path(yaml);
   return (path.parent_path() / (path.stem().string() + "." + model + path.extension().string())).string();
+}
+
+// --knots' range, for a knots=N command argument.
+int KnotCount(const std::string& value) {
+  const int knots = std::stoi(value);
+  if (knots < 2 || knots > 64) throw std::invalid_argument("knots must be in [2, 64]");
+  return knots;
 }
 
 }  // namespace
@@ -83,8 +91,16 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
   }
 }
 
+// A command for this process that it cannot carry out as sent (unknown, bad
+// argument) throws, so that it is counted as rejected on STEREO_COMMAND; an
+// unknown command sent to every process is meant for another one.
 void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
   if (!msg.target.empty() && msg.target != process_.options().name) return;
+  static const std::set<std::string> kKnown = {"solve", "reset", "save"};
+  if (!kKnown.count(msg.command)) {
+    if (msg.target.empty()) return;
+    throw std::invalid_argument("unknown command '" + msg.command + "' (stereo-calibrate knows: solve, reset, save)");
+  }
   std::vector<std::string> models = options_.models;
   CalibrationOptions calibration = options_.calibration;
   std::string yaml = options_.out_yaml, json = options_.report_json;
@@ -96,7 +112,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       if (key == "model")
         models = ParseModelList(value);
       else if (key == "knots")
-        calibration.knots = std::stoi(value);
+        calibration.knots = KnotCount(value);
       else if (key == "path")
         yaml = value;
       else if (key == "report")
@@ -104,9 +120,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       else
         throw std::invalid_argument("unknown argument");
     } catch (const std::exception& e) {
-      process_.ReportError("command '" + msg.command + "': bad argument '" + arg +
-                           "': " + e.what());
-      return;
+      throw std::invalid_argument("command '" + msg.command + "': bad argument '" + arg + "': " + e.what());
     }
   }
   if (msg.command == "solve") {
@@ -116,7 +130,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     session_.Reset();
     SetState("collecting", -1);
     process_.log().Info("reset: every view forgotten");
-  } else if (msg.command == "save") {
+  } else {  // save
     std::vector<StereoCalibration> last;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -128,8 +142,6 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     } catch (const std::exception& e) {
       process_.ReportError(std::string("save: ") + e.what());
     }
-  } else {
-    process_.ReportError("unknown command '" + msg.command + "' (solve, reset, save)");
   }
 }
 

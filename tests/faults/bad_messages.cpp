@@ -8,12 +8,12 @@ constexpr size_t kFingerprintBytes = 8;      // LCM's type hash starts every mes
 }  // namespace
 
 BadMessages::BadMessages(std::vector<uint8_t> good, std::vector<uint8_t> other_type,
-                         std::vector<uint8_t> too_large, uint32_t seed)
-    : good_(std::move(good)), other_type_(std::move(other_type)), too_large_(std::move(too_large)),
+                         std::vector<uint8_t> invalid, uint32_t seed)
+    : good_(std::move(good)), other_type_(std::move(other_type)), invalid_(std::move(invalid)),
       rng_(seed) {}
 
 const std::vector<std::string>& BadMessages::Kinds() {
-  static const std::vector<std::string> kinds = {"garbage", "truncated", "wrong type", "too large",
+  static const std::vector<std::string> kinds = {"garbage", "truncated", "wrong type", "invalid",
                                                  "oversized payload"};
   return kinds;
 }
@@ -37,7 +37,7 @@ std::vector<uint8_t> BadMessages::Next() {
     case 2:
       return other_type_;
     case 3:
-      return too_large_;
+      return invalid_;
     default: {
       std::vector<uint8_t> bytes(good_.begin(), good_.begin() + kFingerprintBytes);
       const auto tail = Random(kOversizedBytes);

@@ -1,7 +1,7 @@
 // What a faulty or hostile peer sends on a channel: random bytes, messages cut
-// short, messages of another type, and oversized ones (a payload far larger
-// than any real message, and a well-formed message whose sizes exceed the
-// limits). Every one must be rejected by the subscriber's decoder.
+// short, messages of another type, well-formed messages the receiver must
+// refuse (sizes beyond the limits, values it cannot use), and payloads far
+// larger than any real message. Every one must be rejected by the subscriber.
 #pragma once
 
 #include <cstdint>
@@ -14,20 +14,20 @@ namespace ws::test {
 class BadMessages {
  public:
   // `good`: an encoded message of the channel's type; `other_type`: one of
-  // another type; `too_large`: one of the channel's type claiming sizes
-  // beyond the limits.
+  // another type; `invalid`: one of the channel's type that decodes but that
+  // the receiver must refuse (e.g. sizes beyond the limits).
   BadMessages(std::vector<uint8_t> good, std::vector<uint8_t> other_type,
-              std::vector<uint8_t> too_large, uint32_t seed);
+              std::vector<uint8_t> invalid, uint32_t seed);
 
   // The next bad payload, cycling through the kinds.
   std::vector<uint8_t> Next();
-  // "garbage", "truncated", "wrong type", "too large", "oversized payload".
+  // "garbage", "truncated", "wrong type", "invalid", "oversized payload".
   static const std::vector<std::string>& Kinds();
 
  private:
   std::vector<uint8_t> Random(size_t size);
 
-  std::vector<uint8_t> good_, other_type_, too_large_;
+  std::vector<uint8_t> good_, other_type_, invalid_;
   std::mt19937 rng_;
   int next_ = 0;
 };
