@@ -12,6 +12,10 @@
 // steady drops mean no leak and no backlog building up.
 //
 //   build/bench/bench_soak [--duration 1800] [--rate 10] [--solve 300] [--sim config/sim/default.yaml] [--out DIR]
+//                          [--source dir:FRAMES --calib FRAMES/calibration.yaml]
+// The simulator renders each pair as it goes, slower than 10 Hz on a busy
+// 2-core machine; bench/soak/run.sh renders the frames once and plays them
+// back from a folder at the camera rate.
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -139,15 +143,22 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--sample", sample_s, "Seconds between samples")->capture_default_str();
   app.add_option("--solve", solve_s, "Seconds between 'solve' commands to stereo-calibrate")->capture_default_str();
-  app.add_option("--sim", sim_path, "Simulator config")->capture_default_str();
+  app.add_option("--sim", sim_path, "Simulator config (its board, and its frames and truth by default)")
+      ->capture_default_str();
+  std::string source, calib;
+  app.add_option("--source", source, "stereo-capture --source (default: sim:SIM)");
+  app.add_option("--calib", calib, "Calibration file stereo-match starts from (default: the simulator's truth)");
   app.add_option("--out", out, "Folder for soak.csv and the processes' logs")->capture_default_str();
   app.add_option("--bin", bin, "Folder of the process executables")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   fs::create_directories(out);
   const ws::SimConfig sim = ws::LoadSimConfig(sim_path);
-  const std::string true_calibration = out + "/true-calibration.yaml";
-  ws::calib::WriteCalibrationFile(true_calibration, ws::TrueCalibration(ws::Simulator(sim).Truth()));
+  if (source.empty()) source = "sim:" + sim_path;
+  if (calib.empty()) {
+    calib = out + "/true-calibration.yaml";
+    ws::calib::WriteCalibrationFile(calib, ws::TrueCalibration(ws::Simulator(sim).Truth()));
+  }
 
   const std::string url = "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 10000) +
                           "?ttl=0&recv_buf_size=8388608";
@@ -170,13 +181,12 @@ int main(int argc, char** argv) {
   };
   std::vector<Child> children = {
       command("stereo-cloud", {}),
-      command("stereo-match", {"--calib", true_calibration, "--cloud-step", "2"}),
+      command("stereo-match", {"--calib", calib, "--cloud-step", "2"}),
       command("stereo-calibrate", {"--out", out + "/calibration.yaml"}),
       command("stereo-detect", {"--board", sim.board ? sim.board->board.id : "chessboard:9x6:0.05"}),
   };
-  children.push_back(command("stereo-capture", {"--source", "sim:" + sim_path, "--loop", "--rate",
-                                                std::to_string(rate_hz)}));
-  std::printf("soak: %s at %.1f Hz for %.0f s over %s; logs in %s\n", sim_path.c_str(), rate_hz, duration_s,
+  children.push_back(command("stereo-capture", {"--source", source, "--loop", "--rate", std::to_string(rate_hz)}));
+  std::printf("soak: %s at %.1f Hz for %.0f s over %s; logs in %s\n", source.c_str(), rate_hz, duration_s,
               url.c_str(), out.c_str());
 
   std::ofstream csv(out + "/soak.csv");
