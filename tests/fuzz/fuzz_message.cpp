@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "calib/calibration_session.h"
 #include "cloud/cloud_filter.h"
 #include "fuzz_support.h"
 #include "lcm_io/image_codec.h"
@@ -76,7 +77,16 @@ void Use(const point_cloud_t& cloud) {
   filter.Run(cloud);
 }
 
-// Corners, commands and cloud statistics are used as decoded.
+// stereo-calibrate adds every corners message to its session (the view, the
+// coverage grids, the near-duplicate check) and publishes the status.
+void Use(const stereo_corners_t& corners) {
+  ws::calib::CalibrationSession session{ws::calib::SessionOptions{}};
+  for (int i = 0; i < 2; ++i) session.Add(corners);  // the second one is a near duplicate
+  session.Status(0, "collecting", -1);
+  if (session.views() > 1) Violated("the same view was accepted twice");
+}
+
+// Single-camera corners, commands and cloud statistics are used as decoded.
 template <class Msg>
 void Use(const Msg&) {}
 
