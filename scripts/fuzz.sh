@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh [BUILD [SECONDS [TARGET...]]]: runs every libFuzzer target of
 # BUILD (default build-fuzz, made by `make fuzz`) for SECONDS each (default
-# 60), one after the other on one core, and prints the executions of each.
+# 60), one after the other on one core, and prints the executions and CPU
+# seconds of each.
 #
 # Seeds: BUILD/fuzz-seeds (real messages, configs and files, written by
 # fuzz-seeds) and tests/fuzz/corpus/<target> (regression inputs). What
@@ -24,7 +25,7 @@ fi
 "$build/fuzz/fuzz-seeds" "$build/fuzz-seeds" || exit 2
 
 failed=0
-printf '%-28s %8s %14s %10s %8s  %s\n' target seconds executions 'exec/s' corpus findings
+printf '%-28s %8s %8s %14s %10s %8s  %s\n' target seconds 'cpu s' executions 'exec/s' corpus findings
 for target in "${targets[@]}"; do
   corpus=$build/fuzz-corpus/$target findings=$build/fuzz-findings/$target log=$build/fuzz-logs/$target.log
   mkdir -p "$corpus" "$findings" "$(dirname "$log")"
@@ -33,14 +34,16 @@ for target in "${targets[@]}"; do
   existing=()
   for dir in "${seeds[@]}"; do [[ -d $dir ]] && existing+=("$dir"); done
   start=$(date +%s)
-  "$build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  /usr/bin/time -o "$log.cpu" -f '%U %S' \
+    "$build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" "${existing[@]}" >"$log" 2>&1
   status=$?
+  cpu=$(awk 'END {printf "%d", $1 + $2}' "$log.cpu")
   elapsed=$(( $(date +%s) - start ))
   executions=$(awk '/stat::number_of_executed_units/ {n = $2} END {print n + 0}' "$log")
   found=$(( $(ls "$findings" | wc -l) - before ))
   (( status != 0 || found > 0 )) && failed=1
-  printf '%-28s %8d %14d %10d %8d  %s\n' "$target" "$elapsed" "$executions" \
+  printf '%-28s %8d %8d %14d %10d %8d  %s\n' "$target" "$elapsed" "$cpu" "$executions" \
     $(( executions / (elapsed > 0 ? elapsed : 1) )) "$(ls "$corpus" | wc -l)" \
     "$( (( found > 0 )) && echo "$found in $findings (log $log)" || echo none)"
 done
