@@ -86,6 +86,10 @@ class Reader {
     const cv::FileNode node = Required(parent, key, field);
     const std::string shape =
         "not a " + std::to_string(rows) + "x" + std::to_string(cols) + " !!opencv-matrix";
+    // The size the file claims is checked first: OpenCV allocates it.
+    if (!node.isMap() || !node["rows"].isInt() || !node["cols"].isInt() || int(node["rows"]) != rows ||
+        int(node["cols"]) != cols)
+      Fail(field, shape);
     cv::Mat mat;
     try {
       node >> mat;
