@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "models/model_registry.h"
+#include "runtime/opencv_yaml.h"
 
 namespace ws::calib {
 namespace {
@@ -215,9 +216,9 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   const Reader in(path);
   cv::FileStorage fs;
   try {
-    if (!fs.open(path, cv::FileStorage::READ)) in.Fail("(file)", "cannot open");
-  } catch (const cv::Exception& e) {
-    in.Fail("(file)", std::string("not YAML that cv::FileStorage reads: ") + e.err);
+    OpenOpenCvYaml(fs, path);  // refuses the layouts OpenCV's reader hangs or crashes on
+  } catch (const YamlFileError& e) {
+    in.Fail("(file)", e.what());
   }
   const cv::FileNode root = fs.root();
   if (!root.isMap()) in.Fail("(file)", "not a map of fields");
