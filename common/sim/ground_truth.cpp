@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "runtime/opencv_yaml.h"
+
 namespace ws {
 namespace {
 
@@ -179,11 +181,10 @@ void WriteSimTruth(const std::string& path, const SimTruth& truth) {
 SimTruth LoadSimTruth(const std::string& path) {
   cv::FileStorage fs;
   try {
-    fs.open(path, cv::FileStorage::READ);
-  } catch (const cv::Exception& e) {
+    OpenOpenCvYaml(fs, path);
+  } catch (const YamlFileError& e) {
     throw std::runtime_error(path + ": not a ground-truth file: " + e.what());
   }
-  if (!fs.isOpened()) throw std::runtime_error(path + ": cannot read the ground-truth file");
   const Reader r(path);
   const cv::FileNode root = fs.root();
   SimTruth truth;
