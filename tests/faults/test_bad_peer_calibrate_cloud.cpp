@@ -83,11 +83,16 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   });
   bus.Publish(ch::kStereoCommand, CommandMsg("solve", "stereo-calibrate"));
   const bool solved = bus.ListenUntil(120, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); });
+  const bool settled = bus.ListenUntil(10, [&] {  // a PROCESS_STATUS that counts the solve command
+    const auto k = bus.Counters(ch::kStereoCommand);
+    return k.received == 1 + k.rejected;
+  });
   process.Signal(SIGINT);
   const auto r = process.Wait(30);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(collected) << "the counters never accounted for everything sent";
   ASSERT_TRUE(solved) << r.output;
+  EXPECT_TRUE(settled) << "no status counted the solve command";
   EXPECT_EQ(FileText(live_file), FileText(clean_file));
   ExpectRejectedAllBad(bus, bad_corners, good_corners);
   ExpectRejectedAllBad(bus, bad_commands, 1);
