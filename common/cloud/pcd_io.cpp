@@ -1,7 +1,9 @@
 #include "cloud/pcd_io.h"
 
 #include <algorithm>
+#include <map>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <pcl/common/io.h>
@@ -34,6 +36,40 @@ bool FieldsFitTheirPoint(const pcl::PCLPointCloud2& blob) {
     if (size == 0 || end > next) return false;
   }
   return true;
+}
+
+// PCL's readHeader allocates WIDTH x HEIGHT points of SIZE x COUNT bytes
+// each before it looks at the data (a COUNT of 10^70 asked for 171 GB; found
+// by tests/fuzz). Throws PcdError when a header value is not a whole number
+// below 10^9 or the points it announces exceed kMaxPcdBytes.
+constexpr uint64_t kMaxPcdBytes = uint64_t(1) << 30;
+
+void CheckAnnouncedSize(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::map<std::string, std::vector<uint64_t>> values;  // SIZE, COUNT, WIDTH, HEIGHT
+  std::string line;
+  while (std::getline(file, line) && line.rfind("DATA", 0) != 0) {
+    std::istringstream words(line);
+    std::string key, word;
+    words >> key;
+    if (key != "SIZE" && key != "COUNT" && key != "WIDTH" && key != "HEIGHT") continue;
+    while (words >> word) {
+      if (word.size() > 9 || word.find_first_not_of("0123456789") != std::string::npos)
+        throw PcdError("PCD '" + path + "': " + key + " '" + word + "' is not a whole number below 10^9");
+      values[key].push_back(std::stoull(word));
+    }
+  }
+  const std::vector<uint64_t>& sizes = values["SIZE"];
+  const std::vector<uint64_t>& counts = values["COUNT"];
+  uint64_t point_bytes = 0, points = 1;  // each value < 10^9: no product of two overflows
+  for (size_t i = 0; i < sizes.size() && point_bytes <= kMaxPcdBytes; ++i)
+    point_bytes += sizes[i] * (i < counts.size() ? counts[i] : 1);
+  for (const char* key : {"WIDTH", "HEIGHT"})
+    if (!values[key].empty()) points *= values[key].front();
+  if (point_bytes > kMaxPcdBytes || (point_bytes > 0 && points > kMaxPcdBytes / point_bytes))
+    throw PcdError("PCD '" + path + "': announces " + std::to_string(points) + " points of " +
+                   std::to_string(point_bytes) + " bytes, more than " + std::to_string(kMaxPcdBytes) +
+                   " bytes");
 }
 
 // PCL reads a binary body without checking it against the header: a
@@ -112,6 +148,7 @@ widestereo::point_cloud_t ReadPcd(const std::string& path) {
     Eigen::Quaternionf orientation;
     int version, data_type;
     unsigned data_idx;
+    CheckAnnouncedSize(path);
     if (reader.readHeader(path, blob, origin, orientation, version, data_type, data_idx) != 0)
       throw PcdError("cannot read PCD '" + path + "'");
     for (const char* axis : {"x", "y", "z"}) {

@@ -83,7 +83,7 @@ TEST(Pcd, MalformedHeaderIsAPcdError) {
 // Found by tests/fuzz (AddressSanitizer): PCL takes SIZE from the header and
 // copies 4-byte floats regardless, reading past the data of the last point.
 TEST(Pcd, FieldSizesThatDisagreeWithTheirTypesAreAPcdError) {
-  std::string text = "VERSION 0.7\nFIELDS x y z intensity\nSIZE 3 4 T 1\nPOINTS 40\nDATA binary\n";
+  std::string text = "VERSION 0.7\nFIELDS x y z intensity\nSIZE 3 4 4 1\nPOINTS 40\nDATA binary\n";
   text += std::string(320, '\x01');
   const ScratchFile bad("sizes.pcd", text);
   try {
@@ -91,6 +91,25 @@ TEST(Pcd, FieldSizesThatDisagreeWithTheirTypesAreAPcdError) {
     ADD_FAILURE() << "read a PCD whose x is 3 bytes";
   } catch (const ws::PcdError& e) {
     EXPECT_NE(std::string(e.what()).find("the fields' SIZE disagrees with their TYPE and COUNT"), std::string::npos) << e.what();
+  }
+}
+
+// Found by tests/fuzz (AddressSanitizer: out of memory): PCL's readHeader
+// allocates what WIDTH, HEIGHT, SIZE and COUNT announce before it reads.
+TEST(Pcd, HeaderAnnouncingTooMuchIsAPcdError) {
+  const std::string header = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
+  for (const auto& [lines, reason] : std::vector<std::pair<std::string, std::string>>{
+           {"COUNT 1 1222222222222222222222222222222222222222222222222222222222222222222222 1\nWIDTH 40\n",
+            "COUNT '1222222222222222222222222222222222222222222222222222222222222222222222' is not a whole number"},
+           {"COUNT 1 1 1\nWIDTH 100000000\nHEIGHT 100\n", "announces 10000000000 points of 12 bytes"},
+           {"COUNT 1 -1 1\nWIDTH 40\n", "COUNT '-1' is not a whole number"}}) {
+    const ScratchFile bad("announces.pcd", header + lines + "DATA binary\n" + std::string(480, '\0'));
+    try {
+      ws::ReadPcd(bad.path());
+      ADD_FAILURE() << "read a PCD with " << lines;
+    } catch (const ws::PcdError& e) {
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
   }
 }
 
