@@ -18,10 +18,12 @@ void CoverageGrid::Add(const BoardView& view, int width, int height) {
   }
   if (image_width <= 0 || image_height <= 0) return;
   for (const auto& p : view.image) {
-    if (!p.allFinite()) continue;
-    const int c = static_cast<int>(std::floor((p.x() + 0.5) * cols / image_width));
-    const int r = static_cast<int>(std::floor((p.y() + 0.5) * rows / image_height));
-    if (c >= 0 && c < cols && r >= 0 && r < rows) ++count[r * cols + c];
+    // Only corners inside the image count; the test is on the doubles, before
+    // any conversion to int (a corner at 1e244 px: a fuzz finding).
+    const double x = std::floor((p.x() + 0.5) * cols / image_width);
+    const double y = std::floor((p.y() + 0.5) * rows / image_height);
+    if (!(x >= 0 && x < cols && y >= 0 && y < rows)) continue;
+    ++count[static_cast<int>(y) * cols + static_cast<int>(x)];
   }
 }
 

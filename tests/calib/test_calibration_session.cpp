@@ -3,9 +3,12 @@
 // the views back after a crash, even one in the middle of a write.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "calib/calibration_session.h"
+#include "calib/coverage.h"
 #include "calib_test_rigs.h"
 #include "test_support.h"
 
@@ -86,6 +89,25 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
   session.Reset();
   EXPECT_EQ(session.views(), 0);
   EXPECT_EQ(CalibrationSession(options).Restore(), 0);
+}
+
+}  // namespace
+
+namespace {
+
+// Found by tests/fuzz (UBSan): a corner at 1e244 px was converted to int.
+TEST(Coverage, OnlyCornersInsideTheImageAreCounted) {
+  ws::calib::CoverageGrid grid(6, 8);
+  ws::calib::BoardView view;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d p : {Eigen::Vector2d(1e244, 10), Eigen::Vector2d(-1e244, 10), Eigen::Vector2d(10, inf),
+                                  Eigen::Vector2d(std::nan(""), 10), Eigen::Vector2d(-0.5, -0.5),
+                                  Eigen::Vector2d(1279.4, 959.4), Eigen::Vector2d(1279.5, 10)})
+    view.image.push_back(p);
+  grid.Add(view, 1280, 960);
+  std::vector<int> expected(48, 0);
+  expected.front() = expected.back() = 1;
+  EXPECT_EQ(grid.count, expected);
 }
 
 }  // namespace
