@@ -3,6 +3,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "lcm_io/compressed_size.h"
+
 namespace ws {
 namespace {
 
@@ -72,6 +74,12 @@ void ValidateImage(const image_t& msg) {
 cv::Mat ImageToMat(const image_t& msg) {
   ValidateImage(msg);
   if (IsCompressed(msg.pixelformat)) {
+    const auto announced = CompressedImageSize(msg.data.data(), msg.data.size());
+    if (!announced) Reject("compressed payload is neither a JPEG nor a PNG with its size");
+    if (announced->width != msg.width || announced->height != msg.height)  // before decoding it
+      Reject("compressed payload is " + std::to_string(announced->width) + "x" +
+             std::to_string(announced->height) + ", header says " + std::to_string(msg.width) + "x" +
+             std::to_string(msg.height));
     cv::Mat decoded;
     try {
       decoded = cv::imdecode(cv::Mat(1, msg.size, CV_8UC1, const_cast<uint8_t*>(msg.data.data())),

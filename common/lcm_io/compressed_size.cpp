@@ -1,0 +1,55 @@
+#include "lcm_io/compressed_size.h"
+
+#include <cstring>
+
+namespace ws {
+namespace {
+
+uint32_t BigEndian(const uint8_t* p, int bytes) {
+  uint32_t value = 0;
+  for (int i = 0; i < bytes; ++i) value = value << 8 | p[i];
+  return value;
+}
+
+std::optional<PixelSize> PngSize(const uint8_t* data, size_t size) {
+  static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 24 || std::memcmp(data, kSignature, 8) != 0 || std::memcmp(data + 12, "IHDR", 4) != 0)
+    return std::nullopt;
+  return PixelSize{BigEndian(data + 16, 4), BigEndian(data + 20, 4)};
+}
+
+// Walks the JPEG's marker segments up to the first frame header (SOF0..SOF15
+// but DHT C4, JPG C8 and DAC CC); a scan (SOS) before it means none.
+std::optional<PixelSize> JpegSize(const uint8_t* data, size_t size) {
+  if (size < 4 || data[0] != 0xff || data[1] != 0xd8) return std::nullopt;
+  size_t i = 2;
+  while (i + 4 <= size) {
+    if (data[i] != 0xff) return std::nullopt;
+    const uint8_t marker = data[i + 1];
+    if (marker == 0xff) {  // fill byte
+      ++i;
+      continue;
+    }
+    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd8)) {  // no length
+      i += 2;
+      continue;
+    }
+    const size_t length = BigEndian(data + i + 2, 2);
+    if (length < 2 || marker == 0xda) return std::nullopt;
+    if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
+      if (length < 7 || i + 9 > size) return std::nullopt;
+      return PixelSize{BigEndian(data + i + 7, 2), BigEndian(data + i + 5, 2)};
+    }
+    i += 2 + length;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<PixelSize> CompressedImageSize(const uint8_t* data, size_t size) {
+  if (auto png = PngSize(data, size)) return png;
+  return JpegSize(data, size);
+}
+
+}  // namespace ws
