@@ -58,6 +58,11 @@ void Validate(const widestereo::camera_corners_t& msg) {
             t, "corner " + std::to_string(i) + " is not finite");
     Require(msg.ids[i] >= 0, t, "corner " + std::to_string(i) + " has a negative id");
   }
+  // Views are paired and compared corner by corner through the ids.
+  std::vector<int32_t> ids(msg.ids.begin(), msg.ids.begin() + msg.n);
+  std::sort(ids.begin(), ids.end());
+  const auto repeated = std::adjacent_find(ids.begin(), ids.end());
+  Require(repeated == ids.end(), t, repeated == ids.end() ? "" : "corner id " + std::to_string(*repeated) + " appears twice");
 }
 
 void Validate(const widestereo::stereo_corners_t& msg) {

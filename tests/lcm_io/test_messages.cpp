@@ -277,6 +277,10 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   camera_corners_t corners = Corners();
   corners.image_points[1][0] = std::nan("");
   EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
+  EXPECT_NO_THROW(ws::Validate(Corners()));
+  corners = Corners();
+  corners.ids = {1, 1};  // tests/fuzz: a view with a repeated id was never a near duplicate of itself
+  EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
   camera_calibration_t calib = Calibration("left");
   calib.model = "fisheye9000";
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
