@@ -1,8 +1,8 @@
 #include "cloud/pcd_io.h"
 
 #include <algorithm>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 

@@ -2,20 +2,16 @@
 
 #include <cstring>
 
+#include "lcm_io/big_endian.h"
+
 namespace ws {
 namespace {
-
-uint32_t BigEndian(const uint8_t* p, int bytes) {
-  uint32_t value = 0;
-  for (int i = 0; i < bytes; ++i) value = value << 8 | p[i];
-  return value;
-}
 
 std::optional<PixelSize> PngSize(const uint8_t* data, size_t size) {
   static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (size < 24 || std::memcmp(data, kSignature, 8) != 0 || std::memcmp(data + 12, "IHDR", 4) != 0)
     return std::nullopt;
-  return PixelSize{BigEndian(data + 16, 4), BigEndian(data + 20, 4)};
+  return PixelSize{int64_t(BigEndian(data + 16, 4)), int64_t(BigEndian(data + 20, 4))};
 }
 
 // Walks the JPEG's marker segments up to the first frame header (SOF0..SOF15
@@ -38,7 +34,7 @@ std::optional<PixelSize> JpegSize(const uint8_t* data, size_t size) {
     if (length < 2 || marker == 0xda) return std::nullopt;
     if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
       if (length < 7 || i + 9 > size) return std::nullopt;
-      return PixelSize{BigEndian(data + i + 7, 2), BigEndian(data + i + 5, 2)};
+      return PixelSize{int64_t(BigEndian(data + i + 7, 2)), int64_t(BigEndian(data + i + 5, 2))};
     }
     i += 2 + length;
   }

@@ -74,12 +74,14 @@ void ValidateImage(const image_t& msg) {
 cv::Mat ImageToMat(const image_t& msg) {
   ValidateImage(msg);
   if (IsCompressed(msg.pixelformat)) {
+    auto require_size = [&](int64_t width, int64_t height) {
+      if (width != msg.width || height != msg.height)
+        Reject("compressed payload is " + std::to_string(width) + "x" + std::to_string(height) +
+               ", header says " + std::to_string(msg.width) + "x" + std::to_string(msg.height));
+    };
     const auto announced = CompressedImageSize(msg.data.data(), msg.data.size());
     if (!announced) Reject("compressed payload is neither a JPEG nor a PNG with its size");
-    if (announced->width != msg.width || announced->height != msg.height)  // before decoding it
-      Reject("compressed payload is " + std::to_string(announced->width) + "x" +
-             std::to_string(announced->height) + ", header says " + std::to_string(msg.width) + "x" +
-             std::to_string(msg.height));
+    require_size(announced->width, announced->height);  // before decoding it
     cv::Mat decoded;
     try {
       decoded = cv::imdecode(cv::Mat(1, msg.size, CV_8UC1, const_cast<uint8_t*>(msg.data.data())),
@@ -88,10 +90,7 @@ cv::Mat ImageToMat(const image_t& msg) {
       Reject(std::string("compressed payload does not decode: ") + e.what());
     }
     if (decoded.empty()) Reject("compressed payload does not decode");
-    if (decoded.cols != msg.width || decoded.rows != msg.height)
-      Reject("compressed payload is " + std::to_string(decoded.cols) + "x" +
-             std::to_string(decoded.rows) + ", header says " + std::to_string(msg.width) + "x" +
-             std::to_string(msg.height));
+    require_size(decoded.cols, decoded.rows);
     if (decoded.type() == CV_8UC4) cv::cvtColor(decoded, decoded, cv::COLOR_BGRA2BGR);
     return decoded;
   }

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "lcm_io/big_endian.h"
+
 namespace ws {
 namespace {
 
@@ -13,12 +15,6 @@ constexpr uint32_t kSyncWord = 0xEDA1DA01;  // LCM's event log sync word
 constexpr int64_t kHeaderBytes = 4 + 8 + 8 + 4 + 4;
 constexpr int64_t kMaxChannelBytes = 256;
 constexpr int64_t kLcmMaxChannelBytes = 1000;  // LCM's eventlog.c refuses this and more
-
-uint64_t BigEndian(const unsigned char* p, int n) {
-  uint64_t v = 0;
-  for (int i = 0; i < n; ++i) v = (v << 8) | p[i];
-  return v;
-}
 
 }  // namespace
 

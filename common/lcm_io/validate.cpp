@@ -62,7 +62,7 @@ void Validate(const widestereo::camera_corners_t& msg) {
   std::vector<int32_t> ids(msg.ids.begin(), msg.ids.begin() + msg.n);
   std::sort(ids.begin(), ids.end());
   const auto repeated = std::adjacent_find(ids.begin(), ids.end());
-  Require(repeated == ids.end(), t, repeated == ids.end() ? "" : "corner id " + std::to_string(*repeated) + " appears twice");
+  if (repeated != ids.end()) Require(false, t, "corner id " + std::to_string(*repeated) + " appears twice");
 }
 
 void Validate(const widestereo::stereo_corners_t& msg) {
