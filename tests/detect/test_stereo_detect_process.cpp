@@ -292,7 +292,9 @@ TEST(StereoDetectLive, DropsAndCountsFramesItCannotKeepUpWith) {
   EXPECT_EQ(in.rejected, 0);
   EXPECT_TRUE(std::is_sorted(published_ids.begin(), published_ids.end()));
   EXPECT_NE(detect.output.find("(peak 2)"), std::string::npos) << detect.output;
-  if (kMemoryBoundsMeaningful) EXPECT_LT(growth_kb, 150 * 1024);
+  if (kMemoryBoundsMeaningful) {
+    EXPECT_LT(growth_kb, 150 * 1024);
+  }
 }
 
 }  // namespace

@@ -87,7 +87,9 @@ TEST(SlowSubscriber, StereoMatchDropsAndCountsWhatItCannotKeepUpWith) {
   EXPECT_EQ(in.rejected, 0);
   EXPECT_GT(in.dropped, 0);  // it could not keep up
   EXPECT_EQ(bus.Counters(ch::kStereoDisparity).published, in.received);
-  if (kMemoryBoundsMeaningful) EXPECT_LT(growth_kb, 100 * 1024);
+  if (kMemoryBoundsMeaningful) {
+    EXPECT_LT(growth_kb, 100 * 1024);
+  }
 }
 
 }  // namespace
