@@ -5,7 +5,6 @@
 
 #include <fstream>
 #include <opencv2/core.hpp>
-#include <sstream>
 
 #include "calib/calib_file.h"
 #include "calib/synthetic_rig.h"
@@ -30,13 +29,6 @@ CalibrationFile SampleFile(const std::string& model) {
   f.rms = 0.1789;
   f.views = 27;
   return f;
-}
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 void Spit(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
@@ -101,7 +93,7 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
   const std::string dir = test::TempDir("calib-file-damage");
   const std::string good = dir + "/good.yaml";
   WriteCalibrationFile(good, SampleFile("bspline"));
-  const std::string text = Slurp(good);
+  const std::string text = test::ReadFileText(good);
   ASSERT_NO_THROW(ReadCalibrationFile(good));
   const std::vector<Damage> damages = {
       {"left:\n   image_width: 1280", "left:\n   image_widht: 1280", "left.image_width", "missing"},

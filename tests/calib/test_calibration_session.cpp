@@ -100,10 +100,9 @@ TEST(Coverage, OnlyCornersInsideTheImageAreCounted) {
   ws::calib::CoverageGrid grid(6, 8);
   ws::calib::BoardView view;
   const double inf = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector2d p : {Eigen::Vector2d(1e244, 10), Eigen::Vector2d(-1e244, 10), Eigen::Vector2d(10, inf),
-                                  Eigen::Vector2d(std::nan(""), 10), Eigen::Vector2d(-0.5, -0.5),
-                                  Eigen::Vector2d(1279.4, 959.4), Eigen::Vector2d(1279.5, 10)})
-    view.image.push_back(p);
+  view.image = {Eigen::Vector2d(1e244, 10),        Eigen::Vector2d(-1e244, 10),     Eigen::Vector2d(10, inf),
+                Eigen::Vector2d(std::nan(""), 10), Eigen::Vector2d(-0.5, -0.5),     Eigen::Vector2d(1279.4, 959.4),
+                Eigen::Vector2d(1279.5, 10)};
   grid.Add(view, 1280, 960);
   std::vector<int> expected(48, 0);
   expected.front() = expected.back() = 1;

@@ -7,9 +7,7 @@
 #include <Eigen/Geometry>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <opencv2/calib3d.hpp>
-#include <sstream>
 
 #include "calib/calib_file.h"
 #include "calib_process_support.h"
@@ -24,6 +22,7 @@ namespace {
 using namespace ws;
 using namespace ws::calib;
 using namespace ws::calib::test;
+using ws::test::ReadFileText;
 using ws::test::TempDir;
 
 // cv::calibrateCamera, its default 5-coefficient model, on one camera's views.
@@ -43,13 +42,6 @@ double OpenCvRms(const CameraData& camera) {
   std::vector<cv::Mat> rvecs, tvecs;
   return cv::calibrateCamera(object, image, cv::Size(camera.image_width, camera.image_height), K,
                              distortion, rvecs, tvecs);
-}
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 void PrintTable(const char* title, const nlohmann::json& report) {
@@ -116,7 +108,7 @@ TEST(StereoCalibrateProcess, OnceOverALogGivesTheSameCalibrationTwice) {
     const auto run = CalibrateOnce(dir, corners, name, {"--model", "all"});
     ASSERT_EQ(run.exit_code, 0) << run.output;
   }
-  EXPECT_EQ(Slurp(dir + "/first.yaml"), Slurp(dir + "/second.yaml"));
+  EXPECT_EQ(ReadFileText(dir + "/first.yaml"), ReadFileText(dir + "/second.yaml"));
   nlohmann::json first = ReadJson(dir + "/first.json"), second = ReadJson(dir + "/second.json");
   DropSolveSeconds(first);
   DropSolveSeconds(second);

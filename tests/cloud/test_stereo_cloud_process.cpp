@@ -14,7 +14,6 @@
 #include "lcm_io/channels.h"
 #include "test_support.h"
 #include "widestereo/cloud_stats_t.hpp"
-#include "widestereo/command_t.hpp"
 #include "widestereo/process_status_t.hpp"
 
 namespace {
@@ -27,17 +26,6 @@ widestereo::point_cloud_t Framed(widestereo::point_cloud_t cloud, int64_t frame_
   cloud.frame_id = frame_id;
   cloud.utime = 1000000 * frame_id;
   return cloud;
-}
-
-widestereo::command_t Command(const std::string& command, const std::string& target,
-                              std::vector<std::string> args, int64_t utime) {
-  widestereo::command_t msg{};
-  msg.utime = utime;
-  msg.command = command;
-  msg.target = target;
-  msg.nargs = int32_t(args.size());
-  msg.args = std::move(args);
-  return msg;
 }
 
 // stereo-cloud from the log `dir`/in.lcmlog to `dir`/out.lcmlog.
@@ -58,7 +46,7 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
   const auto r = RunStereoCloud(
       dir,
       {Event(ws::channel::kStereoCloud, Framed(wall, 1)),
-       Event(ws::channel::kStereoCommand, Command("save", "", {"path=" + saved}, 1500000)),
+       Event(ws::channel::kStereoCommand, CommandMessage("save", "", {"path=" + saved}, 1500000)),
        Event(ws::channel::kStereoCloud, Framed(wall, 2)),
        Event(ws::channel::kStereoCloud, Framed(wall, 3)),
        Event(ws::channel::kStereoCloud, Framed(wall, 4))},
@@ -166,15 +154,15 @@ TEST(StereoCloudProcess, CommandsAreCheckedAndCounted) {
   // A second apart, so that a PROCESS_STATUS with its last_error follows each.
   const auto cloud = Framed(MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}), 2);
   const auto r = RunStereoCloud(
-      dir, {Event(ws::channel::kStereoCommand, Command("save", "", {}, 1000000)),  // no cloud yet
+      dir, {Event(ws::channel::kStereoCommand, CommandMessage("save", "", {}, 1000000)),  // no cloud yet
             Event(ws::channel::kStereoCloud, cloud),
-            Event(ws::channel::kStereoCommand, Command("save", "", {}, 3000000)),  // nowhere
-            Event(ws::channel::kStereoCommand, Command("flush", "stereo-cloud", {}, 4000000)),
-            Event(ws::channel::kStereoCommand, Command("solve", "", {}, 5000000)),
+            Event(ws::channel::kStereoCommand, CommandMessage("save", "", {}, 3000000)),  // nowhere
+            Event(ws::channel::kStereoCommand, CommandMessage("flush", "stereo-cloud", {}, 4000000)),
+            Event(ws::channel::kStereoCommand, CommandMessage("solve", "", {}, 5000000)),
             Event(ws::channel::kStereoCommand,
-                  Command("save", "stereo-calibrate", {"path=" + dir + "/no.pcd"}, 6000000)),
+                  CommandMessage("save", "stereo-calibrate", {"path=" + dir + "/no.pcd"}, 6000000)),
             Event(ws::channel::kStereoCommand,
-                  Command("save", "stereo-cloud", {"path=" + dir + "/yes.pcd"}, 7000000))});
+                  CommandMessage("save", "stereo-cloud", {"path=" + dir + "/yes.pcd"}, 7000000))});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::set<std::string> errors;
   for (const auto& status : Messages<widestereo::process_status_t>(ReadLog(dir + "/out.lcmlog"),

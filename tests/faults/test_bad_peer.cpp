@@ -14,7 +14,6 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "test_support.h"
-#include "widestereo/command_t.hpp"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -39,12 +38,6 @@ stereo_frame_t TooLargeFrame(stereo_frame_t frame) {
   frame.left.width = frame.left.row_stride = 100000;
   frame.left.height = 1000;
   return frame;
-}
-
-widestereo::command_t AnotherType() {
-  widestereo::command_t command{};
-  command.command = "solve";
-  return command;
 }
 
 TEST(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
@@ -72,7 +65,7 @@ TEST(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
 
   BadChannel bad{ch::kStereoImages,
-                 BadMessages(Encoded(frames[0]), Encoded(AnotherType()), Encoded(TooLargeFrame(frames[0])), 7)};
+                 BadMessages(Encoded(frames[0]), Encoded(CommandMessage("solve")), Encoded(TooLargeFrame(frames[0])), 7)};
   for (const auto& frame : frames) {
     Flood(bus, {&bad});
     bus.Publish(ch::kStereoImages, frame);

@@ -8,13 +8,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "bad_peer.h"
 #include "cloud_test_support.h"
 #include "lcm_io/channels.h"
-#include "widestereo/command_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 
@@ -22,20 +19,6 @@ namespace {
 
 using namespace ws::test;
 namespace ch = ws::channel;
-
-widestereo::command_t CommandMsg(const std::string& command, const std::string& target) {
-  widestereo::command_t msg{};
-  msg.command = command;
-  msg.target = target;
-  return msg;
-}
-
-std::string FileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   const std::string dir = TempDir("faults-calibrate");
@@ -58,15 +41,13 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   ASSERT_GT(first.decode(corners[0].data.data(), 0, int(corners[0].data.size())), 0);
   auto not_finite = first;
   not_finite.left.image_points[0][0] = std::nan("");
-  BadChannel bad_corners{ch::kStereoCorners, BadMessages(corners[0].data, Encoded(CommandMsg("solve", "")),
+  BadChannel bad_corners{ch::kStereoCorners, BadMessages(corners[0].data, Encoded(CommandMessage("solve", "")),
                                                          Encoded(not_finite), 10)};
   // Unknown commands and bad arguments sent to stereo-calibrate are refused.
-  auto bad_argument = CommandMsg("solve", "stereo-calibrate");
-  bad_argument.args = {"knots=1000"};
-  bad_argument.nargs = 1;
+  const auto bad_argument = CommandMessage("solve", "stereo-calibrate", {"knots=1000"});
   BadChannel bad_commands{ch::kStereoCommand,
-                          BadMessages(Encoded(CommandMsg("solve", "stereo-calibrate")), corners[0].data,
-                                      Encoded(CommandMsg("frobnicate", "stereo-calibrate")), 11)};
+                          BadMessages(Encoded(CommandMessage("solve", "stereo-calibrate")), corners[0].data,
+                                      Encoded(CommandMessage("frobnicate", "stereo-calibrate")), 11)};
   const std::vector<BadChannel*> both = {&bad_corners, &bad_commands};
   for (size_t i = 0; i < corners.size(); ++i) {
     if (i % 6 == 0) Flood(bus, both);
@@ -81,7 +62,7 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
     const auto k = bus.Counters(ch::kStereoCommand);
     return c.received > 0 && c.received == good_corners + c.rejected && k.received > 0 && k.received == k.rejected;
   });
-  bus.Publish(ch::kStereoCommand, CommandMsg("solve", "stereo-calibrate"));
+  bus.Publish(ch::kStereoCommand, CommandMessage("solve", "stereo-calibrate"));
   const bool solved = bus.ListenUntil(120, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); });
   const bool settled = bus.ListenUntil(10, [&] {  // a PROCESS_STATUS that counts the solve command
     const auto k = bus.Counters(ch::kStereoCommand);
@@ -93,7 +74,7 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   EXPECT_TRUE(collected) << "the counters never accounted for everything sent";
   ASSERT_TRUE(solved) << r.output;
   EXPECT_TRUE(settled) << "no status counted the solve command";
-  EXPECT_EQ(FileText(live_file), FileText(clean_file));
+  EXPECT_EQ(ReadFileText(live_file), ReadFileText(clean_file));
   ExpectRejectedAllBad(bus, bad_corners, good_corners);
   ExpectRejectedAllBad(bus, bad_commands, 1);
 }
@@ -123,11 +104,11 @@ TEST(BadPeer, StereoCloudRejectsItAllAndFiltersTheSame) {
   auto bad_intensity = clouds[0];
   bad_intensity.nintensity = 1;
   bad_intensity.intensity = {1.0f};
-  BadChannel bad_clouds{ch::kStereoCloud, BadMessages(Encoded(clouds[0]), Encoded(CommandMsg("save", "")),
+  BadChannel bad_clouds{ch::kStereoCloud, BadMessages(Encoded(clouds[0]), Encoded(CommandMessage("save", "")),
                                                       Encoded(bad_intensity), 12)};
-  BadChannel bad_commands{ch::kStereoCommand, BadMessages(Encoded(CommandMsg("save", "stereo-cloud")),
+  BadChannel bad_commands{ch::kStereoCommand, BadMessages(Encoded(CommandMessage("save", "stereo-cloud")),
                                                           Encoded(clouds[0]),
-                                                          Encoded(CommandMsg("frobnicate", "stereo-cloud")), 13)};
+                                                          Encoded(CommandMessage("frobnicate", "stereo-cloud")), 13)};
   const std::vector<BadChannel*> both = {&bad_clouds, &bad_commands};
   for (const auto& cloud : clouds) {
     Flood(bus, both);

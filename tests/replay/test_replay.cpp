@@ -5,8 +5,6 @@
 #include <signal.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -18,13 +16,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using namespace ws::test;
-
-std::string FileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The payloads on `channel`, in order (PROCESS_STATUS carries wall-clock
 // uptime, host and pid, so whole logs are compared channel by channel).
@@ -69,8 +60,8 @@ TEST(Replay, TheSameLogGivesTheSameCornersAndCalibrationEveryTime) {
   EXPECT_EQ(calibration, Payloads(second.calibration_log, ws::channel::kStereoCalibration));
   EXPECT_EQ(Payloads(first.calibration_log, ws::channel::kCalibrationStatus),
             Payloads(second.calibration_log, ws::channel::kCalibrationStatus));
-  EXPECT_FALSE(FileText(first.calibration_file).empty());
-  EXPECT_EQ(FileText(first.calibration_file), FileText(second.calibration_file));
+  EXPECT_FALSE(ReadFileText(first.calibration_file).empty());
+  EXPECT_EQ(ReadFileText(first.calibration_file), ReadFileText(second.calibration_file));
 }
 
 TEST(Replay, LiveReplayOfTheCornersGivesTheBatchCalibration) {
@@ -97,7 +88,7 @@ TEST(Replay, LiveReplayOfTheCornersGivesTheBatchCalibration) {
                   FileUrl(dir + "/batch.lcmlog", "mode=w"), "--out", batch_file, "--log-dir", dir, "--quiet"},
                  180);
   ASSERT_EQ(batch.exit_code, 0) << batch.output;
-  EXPECT_EQ(FileText(live_file), FileText(batch_file));
+  EXPECT_EQ(ReadFileText(live_file), ReadFileText(batch_file));
 }
 
 }  // namespace

@@ -27,6 +27,13 @@ process_status_t Status(const std::string& name, int64_t utime) {
   return s;
 }
 
+// stereo-status from the log DIR/in.lcmlog to DIR/out.lcmlog.
+CommandResult ReplayThroughStereoStatus(const std::string& dir) {
+  return RunCommand({"stereo-status", "--log-dir", dir, "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                     "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
+                    30);
+}
+
 TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
   const std::string dir = TempDir("replay");
   std::vector<LogEvent> events;
@@ -39,10 +46,7 @@ TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
   events.push_back(truncated);
   WriteLog(dir + "/in.lcmlog", events);
 
-  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
-                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
-                             "file://" + dir + "/out.lcmlog?mode=w"},
-                            30);
+  const auto r = ReplayThroughStereoStatus(dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("peer@robot"), std::string::npos) << r.output;
   const auto c = LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS");
@@ -53,10 +57,7 @@ TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
 TEST(ProcessLcm, EmptyInputLogEndsAtOnce) {
   const std::string dir = TempDir("empty");
   WriteLog(dir + "/in.lcmlog", {});
-  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
-                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
-                             "file://" + dir + "/out.lcmlog?mode=w"},
-                            30);
+  const auto r = ReplayThroughStereoStatus(dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
@@ -66,10 +67,7 @@ TEST(ProcessLcm, DamagedInputLogReplaysUpToTheCutAndSaysSo) {
   for (int i = 0; i < 4; ++i) events.push_back(Event("PROCESS_STATUS", Status("peer", 1000000 * i)));
   WriteLog(dir + "/in.lcmlog", events);
   std::filesystem::resize_file(dir + "/in.lcmlog", std::filesystem::file_size(dir + "/in.lcmlog") - 5);
-  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
-                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
-                             "file://" + dir + "/out.lcmlog?mode=w"},
-                            30);
+  const auto r = ReplayThroughStereoStatus(dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("damaged"), std::string::npos) << r.output;
   EXPECT_EQ(LastCounters(dir + "/out.lcmlog", "stereo-status", "PROCESS_STATUS").received, 3);
@@ -88,10 +86,7 @@ TEST(ProcessLcm, LogDamagedInTheMiddleReplaysEveryCompleteEventBeforeIt) {
     in << std::ifstream(dir + "/head.lcmlog", std::ios::binary).rdbuf() << "garbage"
        << std::ifstream(dir + "/tail.lcmlog", std::ios::binary).rdbuf();
   }
-  const auto r = RunCommand({"stereo-status", "--log-dir", dir, "--in-url",
-                             "file://" + dir + "/in.lcmlog?speed=0", "--out-url",
-                             "file://" + dir + "/out.lcmlog?mode=w"},
-                            30);
+  const auto r = ReplayThroughStereoStatus(dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("bad sync word at byte"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("replaying the 2 complete events before it"), std::string::npos) << r.output;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -98,6 +99,24 @@ std::string Command::Output() const {
 
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s) {
   return Command(argv).Wait(timeout_s);
+}
+
+std::string ReadFileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+widestereo::command_t CommandMessage(const std::string& command, const std::string& target,
+                                     std::vector<std::string> args, int64_t utime) {
+  widestereo::command_t msg{};
+  msg.utime = utime;
+  msg.command = command;
+  msg.target = target;
+  msg.nargs = int32_t(args.size());
+  msg.args = std::move(args);
+  return msg;
 }
 
 long ResidentKb(int pid, const std::string& field) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "widestereo/channel_counters_t.hpp"
+#include "widestereo/command_t.hpp"
 
 namespace ws::test {
 
@@ -54,6 +55,14 @@ class Command {
 
 // Runs a Command to its end, with a time limit.
 CommandResult RunCommand(const std::vector<std::string>& argv, double timeout_s = 60);
+
+// The whole content of a file ("" when it cannot be read).
+std::string ReadFileText(const std::string& path);
+
+// A STEREO_COMMAND message (stereo-command's): `command` for `target` ("" =
+// every process) with KEY=VALUE arguments.
+widestereo::command_t CommandMessage(const std::string& command, const std::string& target = "",
+                                     std::vector<std::string> args = {}, int64_t utime = 0);
 
 // Kilobytes of resident memory of process `pid`: now (VmRSS) or at its peak
 // (VmHWM); a test failure, and 0, when /proc does not say.
