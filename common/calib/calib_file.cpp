@@ -15,16 +15,23 @@ namespace {
 const char* kHeader[] = {
     "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point "
     "(X,Y,Z):",
-    "  x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2)",
+    "  bspline, poly6, poly12: x = X/Z, y = Y/Z (Z > 0);",
+    "  kb4, bspline_theta: x = theta X/rho, y = theta Y/rho, rho = sqrt(X^2 + Y^2),",
+    "    theta = atan2(rho, Z) (the incidence angle, radians; rays beyond 90 degrees too);",
+    "  r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
     "  u = fx xd + cx,  v = fy yd + cy   (pixel centres at integer coordinates, as in OpenCV)",
     "D(r): bspline: sum_i alpha_i N_{i,degree}(r), the de Boor-Cox B-spline basis on 'knots'",
     "      (clamped; beyond the last knot the last polynomial piece continues);",
-    "      poly6: k1 r^2 + k2 r^4 + k3 r^6; poly12: k1 r^2 + ... + k6 r^12.",
+    "      poly6: k1 r^2 + k2 r^4 + k3 r^6; poly12: k1 r^2 + ... + k6 r^12;",
+    "      bspline_theta: as bspline, over theta; kb4: k1 r^2 + ... + k4 r^8 with p1 = p2 = 0,",
+    "      cv::fisheye's model: camera_matrix is its K and k its D.",
     "Stereo: X_right = R X_left + T (metres)."};
 
-bool IsSpline(const std::string& kind) { return kind == BsplineDistortion::Kind(); }
+bool IsSpline(const std::string& kind) {
+  return kind == BsplineDistortion::Kind() || kind == BsplineThetaDistortion::Kind();
+}
 
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
                  int views) {
@@ -174,6 +181,7 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
 CalibrationFile ToCalibrationFile(const StereoCalibration& c) {
   CalibrationFile f;
   f.model = c.model;
+  f.mono = c.mono;
   f.left = c.left.model;
   f.right = c.right.model;
   f.left_rms = c.left.rms_px;
@@ -195,16 +203,18 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
     for (const char* line : kHeader) fs.writeComment(line);
     fs << "model" << file.model;
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
-    WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
-    cv::Mat R(3, 3, CV_64F), T(3, 1, CV_64F);
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
-      T.at<double>(r) = file.T(r);
+    if (!file.mono) {
+      WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
+      cv::Mat R(3, 3, CV_64F), T(3, 1, CV_64F);
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
+        T.at<double>(r) = file.T(r);
+      }
+      fs << "stereo"
+         << "{"
+         << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
+         << file.views << "}";
     }
-    fs << "stereo"
-       << "{"
-       << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
-       << file.views << "}";
     fs.release();
   }
   std::error_code error;
@@ -225,6 +235,13 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   CalibrationFile f;
   f.model = in.String(root, "model", "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
+  // A one-camera file has neither "right" nor "stereo".
+  f.mono = root["right"].empty() && root["stereo"].empty();
+  if (f.mono) {
+    if (f.left.distortion.kind != f.model)
+      in.Fail("model", "'" + f.model + "', but the camera's model is '" + f.left.distortion.kind + "'");
+    return f;
+  }
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
   for (const auto* camera : {&f.left, &f.right})
     if (camera->distortion.kind != f.model)

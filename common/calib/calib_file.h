@@ -42,6 +42,7 @@ namespace ws::calib {
 
 struct CalibrationFile {
   std::string model;  // the kind of both cameras' models
+  bool mono = false;  // one camera: `left` only, no right, no stereo
   CameraModel left, right;
   double left_rms = 0, right_rms = 0;  // pixels
   int left_views = 0, right_views = 0;

@@ -23,45 +23,63 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
 
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
                               const std::string& png_path) {
-  plot::Figure figure("Recovered radial distortion D(r) = r'/r - 1", 2, 1400, 600);
-  for (int side = 0; side < 2; ++side) {
-    const std::string name = side == 0 ? "left" : "right";
-    plot::Panel& panel =
-        figure.panels.emplace_back(name + " camera", "ideal radius r = |(X/Z, Y/Z)|", "D(r) [%]");
-    panel.zero_line = true;
-    panel.legend = "bottom left";
-    // To the end of the B-spline's knots (which the calibration puts at
-    // the image's corners), else a fifth past the largest observed radius.
-    double r_end = 0, r_seen = 0;
-    for (const auto& c : calibrations) {
-      const Distortion& d = Side(c, side).model.distortion;
-      if (!d.knots.empty()) r_end = std::max(r_end, d.knots.back());
-      r_seen = std::max(r_seen, Side(c, side).max_observed_radius);
-    }
-    if (!(r_end > r_seen)) r_end = 1.2 * r_seen;
-    if (!(r_end > 0)) r_end = 1.0;
-    double lo = 0, hi = 0;
-    auto curve = [&](const CameraModel& model, const std::string& title) {
-      const Camera camera(model);
-      std::vector<double> r, d;
-      for (int k = 0; k <= 300; ++k) {
-        r.push_back(r_end * k / 300.0);
-        d.push_back(100.0 * camera.DistortionCurve(r.back()));
-        lo = std::min(lo, d.back());
-        hi = std::max(hi, d.back());
-      }
-      panel.series.emplace_back(title, r, d);
-    };
+  // One row of panels per radial coordinate: the pinhole models over
+  // r = tan(theta), the angle models over theta in degrees.
+  std::vector<bool> families;
+  for (bool angle : {false, true})
     for (const auto& c : calibrations)
-      curve(Side(c, side).model,
-            c.model + " (RMS " + Format("%.3f", Side(c, side).rms_px) + " px)");
-    if (r_seen > 0) {
-      plot::Series& mark = panel.series.emplace_back(
-          "largest observed radius " + Format("%.2f", r_seen), std::vector<double>{r_seen, r_seen},
-          std::vector<double>{lo, hi}, plot::Style::kLines, "#808080");
-      mark.line_width = 1;
+      if (Camera(c.left.model).IsAngleModel() == angle) {
+        families.push_back(angle);
+        break;
+      }
+  plot::Figure figure("Recovered radial distortion D = r'/r - 1", 2, 1400,
+                      600 * static_cast<int>(families.size()));
+  for (bool angle : families)
+    for (int side = 0; side < 2; ++side) {
+      const std::string name = side == 0 ? "left" : "right";
+      const double unit = angle ? 180 / M_PI : 1.0;  // degrees on the axis
+      plot::Panel& panel = figure.panels.emplace_back(
+          name + " camera, " + (angle ? "angle models" : "pinhole models"),
+          angle ? "incidence angle theta [deg]" : "ideal radius r = |(X/Z, Y/Z)| = tan(theta)",
+          angle ? "D(theta) [%]" : "D(r) [%]");
+      panel.zero_line = true;
+      panel.legend = "bottom left";
+      // To the end of the B-spline's knots (which the calibration puts at
+      // the image's corners), else a fifth past the largest observed radius.
+      double r_end = 0, r_seen = 0;
+      std::vector<const StereoCalibration*> drawn;
+      for (const auto& c : calibrations) {
+        if ((c.mono && side == 1) || Camera(Side(c, side).model).IsAngleModel() != angle) continue;
+        drawn.push_back(&c);
+        const Distortion& d = Side(c, side).model.distortion;
+        if (!d.knots.empty()) r_end = std::max(r_end, d.knots.back());
+        r_seen = std::max(r_seen, Side(c, side).max_observed_radius);
+      }
+      if (!(r_end > r_seen)) r_end = 1.2 * r_seen;
+      if (!(r_end > 0)) r_end = 1.0;
+      double lo = 0, hi = 0;
+      for (const StereoCalibration* c : drawn) {
+        const Camera camera(Side(*c, side).model);
+        std::vector<double> r, d;
+        for (int k = 0; k <= 300; ++k) {
+          const double at = r_end * k / 300.0;
+          r.push_back(unit * at);
+          d.push_back(100.0 * camera.DistortionCurve(at));
+          lo = std::min(lo, d.back());
+          hi = std::max(hi, d.back());
+        }
+        panel.series.emplace_back(
+            c->model + " (RMS " + Format("%.3f", Side(*c, side).rms_px) + " px)", r, d);
+      }
+      if (r_seen > 0) {
+        plot::Series& mark = panel.series.emplace_back(
+            std::string("largest observed ") + (angle ? "angle " : "radius ") +
+                Format(angle ? "%.1f deg" : "%.2f", unit * r_seen),
+            std::vector<double>{unit * r_seen, unit * r_seen}, std::vector<double>{lo, hi},
+            plot::Style::kLines, "#808080");
+        mark.line_width = 1;
+      }
     }
-  }
   plot::WritePng(figure, png_path);
 }
 
@@ -71,7 +89,7 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
   plot::Figure figure("Mean reprojection residual per image cell (arrows scaled)", 2, 1400,
                       std::max(500, 450 * rows));
   for (const auto& c : calibrations)
-    for (int side = 0; side < 2; ++side) {
+    for (int side = 0; side < (c.mono ? 1 : 2); ++side) {
       const CameraCalibration& cam = Side(c, side);
       const ResidualGrid& g = cam.grid;
       double largest = 0;

@@ -35,21 +35,36 @@ CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptio
 StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options) {
   CheckOptions(options);
   const auto start = std::chrono::steady_clock::now();
-  StereoCalibration result = SolveStereo(data, options);
+  const bool mono = std::all_of(data.right.views.begin(), data.right.views.end(),
+                                [](const BoardView& view) { return view.empty(); });
+  StereoCalibration result;
+  if (mono) {
+    result.model = options.model;
+    result.mono = true;
+    result.left = CalibrateCamera(data.left, options);
+  } else {
+    result = SolveStereo(data, options);
+  }
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
-std::vector<StereoCalibration> CalibrateStereoAllModels(const StereoData& data,
-                                                        const CalibrationOptions& options,
-                                                        const std::vector<std::string>& kinds) {
-  std::vector<StereoCalibration> results;
+ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
+                                           const CalibrationOptions& options,
+                                           const std::vector<std::string>& kinds) {
+  ModelCalibrations results;
   for (const auto& kind : kinds) {
     CalibrationOptions o = options;
     o.model = kind;
-    results.push_back(CalibrateStereo(data, o));
+    try {
+      results.solved.push_back(CalibrateStereo(data, o));
+    } catch (const CalibrationError& e) {
+      results.failed.push_back({kind, e.what()});
+    }
   }
+  if (results.solved.empty() && !results.failed.empty())
+    throw CalibrationError(results.failed.front().error);
   return results;
 }
 

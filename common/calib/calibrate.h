@@ -52,12 +52,18 @@ struct CameraCalibration {
 
 struct StereoCalibration {
   std::string model;  // the model kind
+  // A one-camera rig (no right view at all): `right` empty, no R, T.
+  bool mono = false;
   StereoFlow flow = StereoFlow::kJoint;
   CameraCalibration left, right;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
   Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
   double rms_px = 0;             // over both cameras' inlier corners of the stereo views
   int views = 0;                 // stereo views used
+  // Views both cameras saw whose pair fits no rigid rig (a board that moved
+  // between the exposures, a misordered right image): out of R, T, each
+  // camera keeps its view.
+  std::vector<int> inconsistent_views;
   std::vector<double> view_rms;  // per input view; negative: not a stereo view
   std::vector<std::string> extrinsic_names;  // rx ry rz tx ty tz
   // Angle-axis radians, metres. In the paper's flow they are those of R, T
@@ -71,14 +77,26 @@ CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptio
 
 // Calibrates both cameras and R, T. Views seen by one camera only serve that
 // camera's intrinsics. Throws CalibrationError when either camera or the
-// stereo pairs are not enough.
+// stereo pairs are not enough. Data whose right camera saw nothing are a
+// one-camera rig: the left camera alone (mono).
 StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options);
 
+// The outcome of solving the same data with several models.
+struct ModelFailure {
+  std::string model;
+  std::string error;  // CalibrationError's message
+};
+struct ModelCalibrations {
+  std::vector<StereoCalibration> solved;  // in the order asked
+  std::vector<ModelFailure> failed;
+};
+
 // The same data solved with each model kind in turn (Table II and the
-// curves); throws like CalibrateStereo when one fails.
-std::vector<StereoCalibration> CalibrateStereoAllModels(const StereoData& data,
-                                                        const CalibrationOptions& options,
-                                                        const std::vector<std::string>& kinds);
+// curves). A model that fails is reported in `failed` and the others are
+// still solved; throws the first model's CalibrationError when every one fails.
+ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
+                                           const CalibrationOptions& options,
+                                           const std::vector<std::string>& kinds);
 
 // The residuals a known camera and known board poses give on the views
 // (e.g. the RMS of the true model on synthetic data): every corner of every

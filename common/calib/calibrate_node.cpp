@@ -36,7 +36,7 @@ std::vector<std::string> ParseModelList(const std::string& spec) {
   const auto kinds = ModelKinds();
   if (spec == "all") return kinds;
   if (std::find(kinds.begin(), kinds.end(), spec) == kinds.end())
-    throw CalibrationError("unknown model '" + spec + "' (bspline, poly6, poly12 or all)");
+    throw CalibrationError("unknown model '" + spec + "' (bspline, poly6, poly12, kb4, bspline_theta or all)");
   return {spec};
 }
 
@@ -131,12 +131,12 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     SetState("collecting", -1);
     process_.log().Info("reset: every view forgotten");
   } else {  // save
-    std::vector<StereoCalibration> last;
+    ModelCalibrations last;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       last = last_;
     }
-    if (last.empty()) return process_.ReportError("save: nothing solved yet");
+    if (last.solved.empty()) return process_.ReportError("save: nothing solved yet");
     try {
       WriteFiles(last, yaml, json);
     } catch (const std::exception& e) {
@@ -179,21 +179,21 @@ void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions op
   });
 }
 
-void CalibrateNode::WriteFiles(const std::vector<StereoCalibration>& results,
-                               const std::string& yaml, const std::string& json) {
+void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::string& yaml,
+                               const std::string& json) {
+  const bool several = results.solved.size() + results.failed.size() > 1;
   if (!yaml.empty()) {
-    WriteCalibrationFile(yaml, ToCalibrationFile(results.front()));
+    WriteCalibrationFile(yaml, ToCalibrationFile(results.solved.front()));
     process_.log().Info("wrote " + yaml);
-    if (results.size() > 1)
-      for (const StereoCalibration& result : results) {
+    if (several)
+      for (const StereoCalibration& result : results.solved) {
         const std::string path = ModelFilePath(yaml, result.model);
         WriteCalibrationFile(path, ToCalibrationFile(result));
         process_.log().Info("wrote " + path);
       }
   }
   if (!json.empty()) {
-    WriteJsonFile(json,
-                  results.size() == 1 ? StereoReport(results.front()) : ModelsReport(results));
+    WriteJsonFile(json, several ? ModelsReport(results) : StereoReport(results.solved.front()));
     process_.log().Info("wrote " + json);
   }
 }
@@ -208,22 +208,30 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
   try {
-    const auto results = CalibrateStereoAllModels(data, options, models);
-    const StereoCalibration& primary = results.front();
-    process_.Publish(channel::kStereoCalibration, ToMessage(primary, process_.Now()));
-    for (const auto& r : results) {
+    const ModelCalibrations results = CalibrateStereoAllModels(data, options, models);
+    const StereoCalibration& primary = results.solved.front();
+    if (primary.mono)  // STEREO_CALIBRATION is a rig's message
+      process_.log().Info("one-camera rig: nothing to publish on " +
+                          std::string(channel::kStereoCalibration));
+    else
+      process_.Publish(channel::kStereoCalibration, ToMessage(primary, process_.Now()));
+    for (const auto& failure : results.failed)
+      process_.ReportError(failure.model + " failed: " + failure.error);
+    for (const auto& r : results.solved) {
       std::ostringstream line;
       line << r.model << ": left rms " << r.left.rms_px << " px (" << r.left.views << " views, "
-           << r.left.outliers << " outliers), right rms " << r.right.rms_px << " px ("
-           << r.right.views << " views, " << r.right.outliers << " outliers), stereo rms "
-           << r.rms_px << " px (" << r.views << " views), baseline " << r.T.norm() << " m";
+           << r.left.outliers << " outliers)";
+      if (!r.mono)
+        line << ", right rms " << r.right.rms_px << " px (" << r.right.views << " views, "
+             << r.right.outliers << " outliers), stereo rms " << r.rms_px << " px (" << r.views
+             << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right})
         for (const auto& skipped : camera->skipped)
           process_.log().Detail(camera->name + " " + skipped);
     }
-    if (results.size() > 1) {
-      std::istringstream table(FormatTableII(TableRows(results)));
+    if (results.solved.size() > 1) {
+      std::istringstream table(FormatTableII(TableRows(results.solved)));
       for (std::string line; std::getline(table, line);) process_.log().Info(line);
     }
     {
@@ -234,8 +242,8 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
     if (!options_.plot_dir.empty()) {
       try {  // a figure that cannot be drawn (no gnuplot) costs no calibration
         std::filesystem::create_directories(options_.plot_dir);
-        WriteDistortionCurvesPng(results, options_.plot_dir + "/distortion_curves.png");
-        WriteResidualMapPng(results, options_.plot_dir + "/residual_map.png");
+        WriteDistortionCurvesPng(results.solved, options_.plot_dir + "/distortion_curves.png");
+        WriteResidualMapPng(results.solved, options_.plot_dir + "/residual_map.png");
         process_.log().Info("wrote the figures in " + options_.plot_dir);
       } catch (const std::exception& e) {
         process_.ReportError(std::string("figures: ") + e.what());

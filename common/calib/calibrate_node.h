@@ -65,7 +65,7 @@ class CalibrateNode {
   bool SolveNow(const StereoData& data, const std::vector<std::string>& models,
                 const CalibrationOptions& options);
   // The calibration file and report of `results`; throws when one cannot be written.
-  void WriteFiles(const std::vector<StereoCalibration>& results, const std::string& yaml,
+  void WriteFiles(const ModelCalibrations& results, const std::string& yaml,
                   const std::string& json);
   void SetState(const std::string& state, double rms);
 
@@ -75,7 +75,7 @@ class CalibrateNode {
   std::mutex mutex_;  // guards state_, rms_, last_
   std::string state_ = "collecting";
   double rms_ = -1;
-  std::vector<StereoCalibration> last_;
+  ModelCalibrations last_;
   std::atomic<bool> solving_{false};
   std::thread worker_;
 };

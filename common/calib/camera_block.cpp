@@ -19,8 +19,8 @@ CalibrationSetup SetupFor(const CalibrationOptions& options, double r_max) {
 
 // The estimated coefficients of the spline `to` whose D(r) is closest to
 // that of `from` (least squares at 200 radii over [0, r_max]).
-std::vector<double> RefitSpline(const CameraBlock& from, const BsplineDistortion& to,
-                                double r_max) {
+template <class Spline>
+std::vector<double> RefitSpline(const CameraBlock& from, const Spline& to, double r_max) {
   const int samples = 200, n = to.NumCoeffs();
   const int first = to.NumBasis() - n;  // alpha index of coeffs[0]
   Eigen::MatrixXd A(samples, n);
@@ -52,17 +52,27 @@ CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& option
   out.pinhole_only = false;
   out.free_coeffs = -1;
   out.max_radius = kMaxRadiusFactor * r_max;
-  if (Kind(camera) == BsplineDistortion::Kind()) {
-    const BsplineDistortion spline = BsplineDistortion::ForCalibration(SetupFor(options, r_max));
-    out.coeffs = RefitSpline(camera, spline, r_max);
-    out.model = spline;
-    out.prior_weight = SmoothnessWeight(options.smoothness, camera.intrinsics[kFx], r_max);
-  }
+  std::visit(
+      [&](const auto& model) {
+        using Model = std::decay_t<decltype(model)>;
+        if constexpr (kIsBspline<Model>) {
+          const Model spline = Model::ForCalibration(SetupFor(options, r_max));
+          out.coeffs = RefitSpline(camera, spline, r_max);
+          out.model = spline;
+          out.prior_weight = SmoothnessWeight(options.smoothness, camera.intrinsics[kFx], r_max);
+        }
+      },
+      camera.model);
   return out;
 }
 
 std::string Kind(const CameraBlock& camera) {
   return std::visit([](const auto& m) { return m.Kind(); }, camera.model);
+}
+
+bool IsSpline(const CameraBlock& camera) {
+  return std::visit([](const auto& m) { return kIsBspline<std::decay_t<decltype(m)>>; },
+                    camera.model);
 }
 
 std::vector<std::string> ParamNames(const CameraBlock& camera) {
@@ -122,9 +132,27 @@ std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen
   return ideal;
 }
 
+std::optional<Eigen::Vector3d> PixelRay(const CameraBlock& camera, const Eigen::Vector2d& pixel) {
+  Eigen::Vector3d ray;
+  const bool ok = std::visit(
+      [&](const auto& m) {
+        return Unproject(m, camera.intrinsics.data(), camera.coeffs.data(), pixel.data(),
+                         ray.data());
+      },
+      camera.model);
+  if (!ok) return std::nullopt;
+  return ray;
+}
+
 double RadialDistortion(const CameraBlock& camera, double r) {
   return std::visit([&](const auto& m) { return m.RadialDistortion(camera.coeffs.data(), r); },
                     camera.model);
+}
+
+double IdealRadius(const CameraBlock& camera, const Eigen::Vector3d& X) {
+  return std::visit(
+      [&](const auto& m) { return ws::IdealRadius<typename std::decay_t<decltype(m)>::Coordinate>(X.data()); },
+      camera.model);
 }
 
 double ImageCornerRadius(const CameraBlock& camera, int image_width, int image_height,

@@ -33,7 +33,8 @@ struct CameraBlock {
 };
 
 // A pinhole start: the model of `kind` on knots over [0, 1] with zero
-// coefficients, only fx fy cx cy free (pinhole_only).
+// coefficients, only fx fy cx cy free (pinhole_only). For an angle model
+// (D = 0 over theta) that is the equidistant fisheye, r_pixels = f theta.
 CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
                          double fy, double cx, double cy);
 
@@ -44,6 +45,8 @@ CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& opti
 CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
 
 std::string Kind(const CameraBlock& camera);
+// Whether the model is a B-spline (bspline, bspline_theta).
+bool IsSpline(const CameraBlock& camera);
 // fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..).
 std::vector<std::string> ParamNames(const CameraBlock& camera);
 CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_height);
@@ -52,10 +55,15 @@ bool AllFinite(const CameraBlock& camera);
 // The pixel of a camera-frame point; nullopt behind the camera.
 std::optional<Eigen::Vector2d> ProjectPoint(const CameraBlock& camera, const Eigen::Vector3d& X);
 // The ideal normalized point of a pixel; nullopt where the model does not
-// invert (models/pinhole_camera.h, Undistort).
+// invert (models/projection.h, Undistort).
 std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen::Vector2d& pixel);
+// The unit ray of a pixel; nullopt where the model does not invert.
+std::optional<Eigen::Vector3d> PixelRay(const CameraBlock& camera, const Eigen::Vector2d& pixel);
 // D(r).
 double RadialDistortion(const CameraBlock& camera, double r);
+// The ideal radius r of a camera-frame point (tan(theta), or theta for an
+// angle model: models/radial_coordinate.h); infinity where it has none.
+double IdealRadius(const CameraBlock& camera, const Eigen::Vector3d& X);
 
 // The largest ideal radius of the image's four corners, or `fallback` where
 // the model cannot be inverted.

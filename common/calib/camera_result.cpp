@@ -25,8 +25,8 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
     out.board_poses[o.view] = pose;
     for (int i = 0; i < o.corners->size(); ++i) {
       if (!(*o.inliers)[i]) continue;
-      const Eigen::Vector3d X = pose * o.corners->object[i];
-      out.max_observed_radius = std::max(out.max_observed_radius, X.head<2>().norm() / X.z());
+      out.max_observed_radius =
+          std::max(out.max_observed_radius, IdealRadius(camera, pose * o.corners->object[i]));
     }
   }
   if (const auto fold = FoldRadius(camera, out.max_observed_radius))

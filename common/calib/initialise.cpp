@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <sstream>
 
+#include "calib/equidistant_start.h"
 #include "calib/stage_log.h"
-#include "models/pinhole_camera.h"
+#include "models/model_registry.h"
+#include "models/projection.h"
 
 namespace ws::calib {
 
@@ -59,9 +61,52 @@ bool HomographyPose(const Init& init, const Prepared& p, int view, const double*
   return in_front;
 }
 
+namespace {
+
+// The minimum spread of the board normals (Zhang's method, and any planar
+// calibration, needs the planes not all parallel).
+void RequireSpread(const Prepared& p, const std::vector<Pose>& used,
+                   const CalibrationOptions& options) {
+  const double spread = MaxNormalAngleDeg(used);
+  if (spread >= options.min_view_angle_deg) return;
+  std::ostringstream msg;
+  msg << p.name << " camera: the " << used.size()
+      << " views are degenerate, the board planes are all within " << Fixed(spread, 2)
+      << " degrees of parallel (at least " << options.min_view_angle_deg
+      << " needed); tilt the board by 20-40 degrees in different directions";
+  throw CalibrationError(msg.str());
+}
+
+// An angle model's start (equidistant_start.h): every view the equidistant
+// camera can pose keeps its place.
+Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
+  Init init;
+  std::vector<bool> posed;
+  init.pinhole = EquidistantStart(p, options.min_views, &init.poses, &posed);
+  std::vector<Pose> used;
+  for (size_t v = 0; v < p.views.size(); ++v) {
+    if (!p.usable[v]) continue;
+    if (!posed[v]) {
+      p.Skip(int(v), "no board pose fits the rays of its corners");
+      continue;
+    }
+    used.push_back(init.poses[v]);
+  }
+  Say(options, p.name + ": equidistant start from " + std::to_string(used.size()) +
+                   " views: f " + Fixed(init.pinhole.fx, 2) + " cx " + Fixed(init.pinhole.cx, 2) +
+                   " cy " + Fixed(init.pinhole.cy, 2));
+  RequireViews(p, options.min_views);
+  RequireSpread(p, used, options);
+  return init;
+}
+
+}  // namespace
+
 Init Initialize(Prepared& p, const CalibrationOptions& options) {
   if (p.width <= 0 || p.height <= 0)
     throw CalibrationError(p.name + " camera: no image size in the corners");
+  if (IsAngleModel(MakeCalibrationModel(options.model, CalibrationSetup{1.0})))
+    return InitializeAngle(p, options);
   const int n = static_cast<int>(p.views.size());
   Init init;
   init.homographies.resize(n);
@@ -96,15 +141,7 @@ Init Initialize(Prepared& p, const CalibrationOptions& options) {
     used.push_back(init.poses[v]);
   }
   RequireViews(p, options.min_views);
-  const double spread = MaxNormalAngleDeg(used);
-  if (spread < options.min_view_angle_deg) {
-    std::ostringstream msg;
-    msg << p.name << " camera: the " << used.size()
-        << " views are degenerate, the board planes are all within " << Fixed(spread, 2)
-        << " degrees of parallel (at least " << options.min_view_angle_deg
-        << " needed); tilt the board by 20-40 degrees in different directions";
-    throw CalibrationError(msg.str());
-  }
+  RequireSpread(p, used, options);
   return init;
 }
 

@@ -41,7 +41,8 @@ struct Init {
 
 // Homographies, Zhang's intrinsics and each view's pose; views whose
 // homography fails or whose pose puts the board behind the camera are
-// skipped. Throws CalibrationError when too few views remain or when the
+// skipped. For an angle model (kb4, bspline_theta) the equidistant start of
+// equidistant_start.h instead, with no homographies. Throws CalibrationError when too few views remain or when the
 // board planes are all within options.min_view_angle_deg of parallel.
 Init Initialize(Prepared& prepared, const CalibrationOptions& options);
 

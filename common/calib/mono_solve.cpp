@@ -59,8 +59,8 @@ double FieldRadius(const CameraBlock& camera, const Prepared& p, const Inliers& 
   for (size_t v = 0; v < p.views.size(); ++v)
     for (int i = 0; i < p.views[v].size() && p.usable[v]; ++i) {
       if (!mask[v][i]) continue;
-      const Eigen::Vector3d X = poses[v] * p.views[v].object[i];
-      if (X.z() > 0) observed = std::max(observed, X.head<2>().norm() / X.z());
+      const double r = IdealRadius(camera, poses[v] * p.views[v].object[i]);
+      if (std::isfinite(r)) observed = std::max(observed, r);
     }
   const double* in = camera.intrinsics.data();
   double distorted = 0;
@@ -141,7 +141,7 @@ void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoSt
     r_max = needed;
     camera = ForField(camera, options, r_max);
   };
-  const bool global_coeffs = !std::holds_alternative<BsplineDistortion>(camera.model);
+  const bool global_coeffs = !IsSpline(camera);
   for (int stage = 1; !everything; ++stage) {
     fraction *= 1.4;
     MarkDisc(pinhole, p, fraction, min_points, &disc, &everything);

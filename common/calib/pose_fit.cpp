@@ -5,6 +5,7 @@
 #include <limits>
 #include <opencv2/calib3d.hpp>
 
+#include "calib/ray_pose.h"
 #include "calib/stage_log.h"
 
 namespace ws::calib {
@@ -26,8 +27,40 @@ double RefinePose(const CameraBlock& camera, const BoardView& view, const std::v
   return Rms(Residuals(one, 0));
 }
 
+namespace {
+
+// The pose of the view's corners in mask from their rays under the camera.
+std::optional<Pose> RayPose(const CameraBlock& camera, const BoardView& view,
+                            const std::vector<char>& mask) {
+  std::vector<Eigen::Vector3d> object, rays;
+  for (int i = 0; i < view.size(); ++i) {
+    if (!mask[i]) continue;
+    const auto ray = PixelRay(camera, view.image[i]);
+    if (!ray) continue;
+    object.push_back(view.object[i]);
+    rays.push_back(*ray);
+  }
+  return PoseFromRays(object, rays);
+}
+
+// A fresh pose of view v for the camera as it stands: from the homography
+// (pinhole models) or from the rays (angle models, which have none).
+bool StartPose(const CameraBlock& camera, const Init& init, const Prepared& p, int v,
+               const std::vector<char>& mask, Pose* pose) {
+  if (!IsAngleModel(camera.model)) return HomographyPose(init, p, v, camera.intrinsics.data(), pose);
+  const auto from_rays = RayPose(camera, p.views[v], mask);
+  if (from_rays) *pose = *from_rays;
+  return from_rays.has_value();
+}
+
+}  // namespace
+
 std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
                                        const std::vector<char>& mask) {
+  if (IsAngleModel(camera.model)) {  // ideal points are not pinhole ones
+    const auto pose = RayPose(camera, view, mask);
+    return pose ? std::vector<Pose>{*pose} : std::vector<Pose>{};
+  }
   std::vector<cv::Point3d> object;
   std::vector<cv::Point2d> ideal;
   for (int i = 0; i < view.size(); ++i) {
@@ -67,8 +100,7 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
     if (!p.usable[v] || std::count(mask[v].begin(), mask[v].end(), 1) < options.min_points_per_view)
       continue;
     Pose pose;
-    if (from_homography && HomographyPose(init, p, v, camera.intrinsics.data(), &pose))
-      (*poses)[v] = pose;
+    if (from_homography && StartPose(camera, init, p, v, mask[v], &pose)) (*poses)[v] = pose;
     rms[v] = RefinePose(camera, p.views[v], mask[v], &(*poses)[v]);
   }
   std::vector<double> fitted;
@@ -84,7 +116,7 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
     if (!(rms[v] > bad)) continue;
     std::vector<Pose> starts = PlanarPoseCandidates(camera, p.views[v], mask[v]);
     Pose pose;
-    if (HomographyPose(init, p, v, camera.intrinsics.data(), &pose)) starts.push_back(pose);
+    if (StartPose(camera, init, p, v, mask[v], &pose)) starts.push_back(pose);
     for (const Pose& start : starts) {
       pose = start;
       const double r = RefinePose(camera, p.views[v], mask[v], &pose);

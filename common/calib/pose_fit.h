@@ -19,7 +19,9 @@ double RefinePose(const CameraBlock& camera, const BoardView& view, const std::v
                   Pose* pose);
 
 // Both planar PnP solutions (IPPE) of the view's corners in mask, undistorted
-// by the camera; none when fewer than 4 corners can be undistorted.
+// by the camera; none when fewer than 4 corners can be undistorted. For an
+// angle model, whose rays may pass 90 degrees, the pose from the rays
+// (ray_pose.h) instead.
 std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
                                        const std::vector<char>& mask);
 

@@ -71,6 +71,7 @@ struct Built {
   std::vector<double*> poses;        // board poses
   std::vector<double*> free_blocks;  // fully free camera blocks and the extrinsic
   std::vector<int> owner;            // per free block: its camera, -1 for the extrinsic
+  std::vector<std::vector<int>> held;  // per free block: entries a manifold holds constant
 };
 
 // The inlier corners of an observation as cost functions: one for the view,
@@ -142,18 +143,23 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       cp.SetParameterBlockConstant(coeffs);
       cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
     } else {
+      std::vector<int> held_intrinsics, held_coeffs;
+      if (!HasTangential(camera.model)) {  // kb4: p1 = p2 = 0 by definition
+        held_intrinsics = {kP1, kP2};
+        cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
+      }
       AddSmoothnessPrior(cp, camera.model, coeffs, camera.prior_weight);
       const int n = static_cast<int>(camera.coeffs.size());
       if (camera.free_coeffs == 0) {
         cp.SetParameterBlockConstant(coeffs);
       } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {
-        std::vector<int> held;
-        for (int k = camera.free_coeffs; k < n; ++k) held.push_back(k);
-        cp.SetManifold(coeffs, new ceres::SubsetManifold(n, held));
+        for (int k = camera.free_coeffs; k < n; ++k) held_coeffs.push_back(k);
+        cp.SetManifold(coeffs, new ceres::SubsetManifold(n, held_coeffs));
       }
-      for (double* block : {intrinsics, coeffs}) {
+      for (auto [block, held] : {std::pair{intrinsics, held_intrinsics}, {coeffs, held_coeffs}}) {
         built->free_blocks.push_back(block);
         built->owner.push_back(int(c));
+        built->held.push_back(held);
       }
     }
   }
@@ -164,6 +170,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
     } else {
       built->free_blocks.push_back(extrinsic);
       built->owner.push_back(-1);
+      built->held.emplace_back();
     }
   }
 }
@@ -231,7 +238,8 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
   double cost = 0;
   built.ceres.Evaluate(evaluate, &cost, nullptr, nullptr, nullptr);
   int free_parameters = 6 * static_cast<int>(built.poses.size());
-  for (double* block : built.free_blocks) free_parameters += built.ceres.ParameterBlockSize(block);
+  for (double* block : built.free_blocks)
+    free_parameters += built.ceres.ParameterBlockTangentSize(block);
   const int dof = built.data_residuals - free_parameters;
   if (dof <= 0) return;
   const auto covariance =
@@ -240,11 +248,14 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
   int offset = 0;
   for (size_t b = 0; b < built.free_blocks.size(); ++b) {
     const int size = built.ceres.ParameterBlockSize(built.free_blocks[b]);
+    const std::vector<int>& held = built.held[b];
     std::vector<double>& out =
         built.owner[b] < 0 ? outcome->stddev_extrinsic : outcome->stddev_camera[built.owner[b]];
-    for (int k = 0; k < size; ++k)
-      out.push_back(std::sqrt(std::max(0.0, (*covariance)(offset + k, offset + k))));
-    offset += size;
+    for (int k = 0; k < size; ++k) {  // a held entry is exact: sigma 0
+      const bool exact = std::find(held.begin(), held.end(), k) != held.end();
+      out.push_back(exact ? 0.0 : std::sqrt(std::max(0.0, (*covariance)(offset, offset))));
+      offset += !exact;
+    }
   }
 }
 

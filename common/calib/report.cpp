@@ -74,7 +74,11 @@ Json CameraReport(const CameraCalibration& c) {
 Json StereoReport(const StereoCalibration& s) {
   Json j;
   j["model"] = s.model;
-  j["cameras"] = {CameraReport(s.left), CameraReport(s.right)};
+  j["cameras"] = {CameraReport(s.left)};
+  j["flow"] = FlowName(s.flow);
+  j["solve_seconds"] = s.solve_seconds;
+  if (s.mono) return j;  // one camera: no right, no stereo
+  j["cameras"].push_back(CameraReport(s.right));
   Json stereo;
   stereo["rms_px"] = s.rms_px;
   std::vector<double> R, T;
@@ -86,27 +90,28 @@ Json StereoReport(const StereoCalibration& s) {
   stereo["T"] = Numbers(T);
   stereo["baseline_m"] = s.T.norm();
   stereo["views"] = s.views;
+  stereo["inconsistent_views"] = s.inconsistent_views;
   stereo["view_rms"] = ViewRmsJson(s.view_rms);
   Json stddev = Json::object();
   for (size_t i = 0; i < s.extrinsic_stddev.size() && i < s.extrinsic_names.size(); ++i)
     stddev[s.extrinsic_names[i]] = s.extrinsic_stddev[i];
   stereo["stddev"] = stddev;
   j["stereo"] = stereo;
-  j["flow"] = FlowName(s.flow);
-  j["solve_seconds"] = s.solve_seconds;
   return j;
 }
 
-Json ModelsReport(const std::vector<StereoCalibration>& calibrations) {
+Json ModelsReport(const ModelCalibrations& calibrations) {
   Json j;
   j["models"] = Json::array();
   double seconds = 0;
-  for (const auto& c : calibrations) {
+  for (const auto& c : calibrations.solved) {
     j["models"].push_back(StereoReport(c));
     seconds += c.solve_seconds;
   }
+  for (const auto& failure : calibrations.failed)
+    j["models"].push_back({{"model", failure.model}, {"error", failure.error}});
   Json table = Json::array();
-  for (const auto& row : TableRows(calibrations))
+  for (const auto& row : TableRows(calibrations.solved))
     table.push_back({{"model", row.model},
                      {"left_rms_px", row.left_rms},
                      {"right_rms_px", row.right_rms},

@@ -35,7 +35,9 @@ using Json = nlohmann::ordered_json;
 
 Json CameraReport(const CameraCalibration& camera);
 Json StereoReport(const StereoCalibration& calibration);
-Json ModelsReport(const std::vector<StereoCalibration>& calibrations);
+// Every model under "models": a solved one as StereoReport, a failed one as
+// {"model": NAME, "error": "..."}; Table II of the solved ones.
+Json ModelsReport(const ModelCalibrations& calibrations);
 
 // Writes JSON (indented) to a temporary file and renames it; throws
 // std::runtime_error when it cannot.

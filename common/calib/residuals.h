@@ -7,7 +7,7 @@
 // block, since Ceres applies a loss to a whole block.
 //
 // Parameter blocks (all double arrays owned by the caller):
-//   intrinsics[6]  {fx, fy, cx, cy, p1, p2}         (models/pinhole_camera.h)
+//   intrinsics[6]  {fx, fy, cx, cy, p1, p2}         (models/projection.h)
 //   coeffs[N]      the model's estimated coefficients (N = model.NumCoeffs())
 //   pose[6]        board -> camera (pose.h)
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "models/model_registry.h"
-#include "models/pinhole_camera.h"
+#include "models/projection.h"
 #include "models/scalar_part.h"
 
 namespace ws::calib {
@@ -53,8 +53,9 @@ struct ViewPoints {
 };
 
 // Projects the view's corners through `model` after `rotation` (row-major
-// 3x3) and `translation`, writing projected - observed. False if a corner is
-// behind the camera or beyond points.max_radius.
+// 3x3) and `translation`, writing projected - observed. False if a corner
+// has no projection (a pinhole model: behind the camera) or its ideal radius
+// (radial_coordinate.h) exceeds points.max_radius.
 template <class Model, typename T>
 bool ViewResiduals(const Model& model, const ViewPoints& points, const T* intrinsics,
                    const T* coeffs, const T* rotation, const T* translation, T* residuals) {
@@ -65,9 +66,8 @@ bool ViewResiduals(const Model& model, const ViewPoints& points, const T* intrin
     for (int r = 0; r < 3; ++r)
       camera[r] = rotation[3 * r] * X[0] + rotation[3 * r + 1] * X[1] + rotation[3 * r + 2] * X[2] +
                   translation[r];
-    if (!(ScalarPart(camera[2]) > 0.0)) return false;
-    const double x = ScalarPart(camera[0]), y = ScalarPart(camera[1]), z = ScalarPart(camera[2]);
-    if (x * x + y * y > points.max_radius * points.max_radius * z * z) return false;
+    const double point[3] = {ScalarPart(camera[0]), ScalarPart(camera[1]), ScalarPart(camera[2])};
+    if (!(ws::IdealRadius<typename Model::Coordinate>(point) <= points.max_radius)) return false;
     T pixel[2];
     if (!Project(model, intrinsics, coeffs, camera, pixel)) return false;
     residuals[2 * i] = pixel[0] - points.image[2 * i];
@@ -128,8 +128,8 @@ template <class Model>
 struct FixedCoeffRange {
   static constexpr int kMin = 1, kMax = kMaxFixedCoeffs;
 };
-template <int K>
-struct FixedCoeffRange<PolyDistortion<K>> {
+template <int K, class Coordinate>
+struct FixedCoeffRange<PolyDistortion<K, Coordinate>> {
   static constexpr int kMin = K, kMax = K;
 };
 

@@ -6,14 +6,19 @@ namespace ws::calib {
 
 void AddSmoothnessPrior(ceres::Problem& problem, const AnyDistortionModel& model, double* coeffs,
                         double weight) {
-  const auto* spline = std::get_if<BsplineDistortion>(&model);
-  if (!spline || !(weight > 0)) return;
-  const int n = spline->NumBasis();
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<SecondDifferenceResidual>(
-      new SecondDifferenceResidual{n, weight});
-  cost->AddParameterBlock(spline->NumCoeffs());
-  cost->SetNumResiduals(n - 2);
-  problem.AddResidualBlock(cost, nullptr, coeffs);
+  if (!(weight > 0)) return;
+  std::visit(
+      [&](const auto& spline) {
+        if constexpr (kIsBspline<std::decay_t<decltype(spline)>>) {
+          const int n = spline.NumBasis();
+          auto* cost = new ceres::DynamicAutoDiffCostFunction<SecondDifferenceResidual>(
+              new SecondDifferenceResidual{n, weight});
+          cost->AddParameterBlock(spline.NumCoeffs());
+          cost->SetNumResiduals(n - 2);
+          problem.AddResidualBlock(cost, nullptr, coeffs);
+        }
+      },
+      model);
 }
 
 }  // namespace ws::calib

@@ -6,6 +6,7 @@
 #include "calib/camera_result.h"
 #include "calib/mono_solve.h"
 #include "calib/outliers.h"
+#include "calib/pair_consistency.h"
 #include "calib/stage_log.h"
 
 namespace ws::calib {
@@ -86,25 +87,64 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
                                           c == 1 && is_stereo[v]});
     }
   };
-  // R, T with both cameras held: the paper's extrinsic step and the start of
-  // the joint solve (each camera's outliers are already out).
-  observe(false);
-  for (auto& camera : problem.cameras) camera.fixed = true;
   CalibrationOptions extrinsic_options = options;
-  extrinsic_options.outlier_sigma = 0;
-  SolveOutcome outcome = SolveWithRejection(problem, extrinsic_options, "stereo extrinsics");
-  Say(options, "stereo extrinsics from " + std::to_string(out.views) + " views: baseline " +
-                   Fixed(problem.extrinsic.t().norm(), 5) + " m");
-  if (options.flow == StereoFlow::kJoint) {
+  extrinsic_options.outlier_sigma = 0;  // each camera's outliers are already out
+  // R, T with both cameras held at their own solutions: the paper's
+  // extrinsic step, and the start of the joint solve.
+  auto solve_extrinsics = [&] {
+    for (int c = 0; c < 2; ++c) {
+      problem.cameras[c] = mono[c].problem.cameras[0];
+      problem.cameras[c].fixed = true;
+      poses[c] = mono[c].poses;
+      inliers[c] = mono[c].inliers;
+    }
+    observe(false);
+    return SolveWithRejection(problem, extrinsic_options, "stereo extrinsics");
+  };
+  auto solve_joint = [&] {
     for (auto& camera : problem.cameras) camera.fixed = false;
     observe(true);
-    outcome = SolveWithRejection(problem, options, "joint stereo solve");
+    return SolveWithRejection(problem, options, "joint stereo solve");
+  };
+  const bool joint = options.flow == StereoFlow::kJoint;
+  SolveOutcome outcome = solve_extrinsics();
+  if (joint) outcome = solve_joint();
+  // Pairs that no rig explains leave R, T; each camera keeps the view. They
+  // are judged on the joint solve where there is one (its cameras take up
+  // each camera's own small errors), else with the cameras held.
+  out.inconsistent_views = CheckPairs(problem, mono, is_stereo).inconsistent;
+  if (!out.inconsistent_views.empty()) {
+    for (int v : out.inconsistent_views) {
+      is_stereo[v] = false;
+      Say(options, "view " + std::to_string(v) +
+                       ": the pair does not fit one rig (unsynchronised or misordered), left out "
+                       "of R, T");
+    }
+    out.views -= static_cast<int>(out.inconsistent_views.size());
+    if (out.views < options.min_stereo_views)
+      throw CalibrationError("only " + std::to_string(out.views) +
+                             " consistent stereo views, at least " +
+                             std::to_string(options.min_stereo_views) + " needed for R and T");
+    outcome = solve_extrinsics();
+    if (joint) outcome = solve_joint();
+  }
+  // The joint solve is kept only if sharing the board poses costs what it
+  // should; otherwise the pairs were not exposed together closely enough
+  // for it, and each camera keeps its own views' solution (the paper's flow).
+  if (joint && JointFitsAsWellAsAlone(problem, mono, out.views)) {
     Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
                      outcome.message + ")");
     for (int c = 0; c < 2; ++c)
       (c == 0 ? out.left : out.right) = CameraResult(
           problem, c, mono[c].prepared, outcome.stddev_camera[c], mono[c].init_method, options);
+  } else if (joint) {
+    outcome = solve_extrinsics();
+    out.flow = StereoFlow::kPaper;
+    Say(options, "joint solve left out: sharing the board poses worsens the cameras' fit beyond "
+                 "chance (pairs not exposed together?); each camera from its own views");
   }
+  Say(options, "stereo extrinsics from " + std::to_string(out.views) + " views: baseline " +
+                   Fixed(problem.extrinsic.t().norm(), 5) + " m");
   out.R = problem.extrinsic.R();
   out.T = problem.extrinsic.t();
   out.extrinsic_names = {"rx", "ry", "rz", "tx", "ty", "tz"};

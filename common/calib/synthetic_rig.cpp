@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "models/fisheye_lens.h"
 #include "models/theia_lens.h"
 
 namespace ws::calib {
@@ -51,13 +52,14 @@ bool Inside(const Eigen::Vector2d& p, const CameraModel& c, double margin) {
 
 // The corners of the board under `pose` that `camera` sees inside its image.
 BoardView See(const Camera& camera, const Pose& pose, const std::vector<Eigen::Vector3d>& object,
-              double margin) {
+              double margin, double max_theta) {
   BoardView view;
   for (int id = 0; id < static_cast<int>(object.size()); ++id) {
     const Eigen::Vector3d X = pose * object[id];
-    if (X.z() <= 0.05) continue;
-    // Rays more than 85 degrees off axis are never imaged by these lenses.
-    if (X.head<2>().norm() > 11 * X.z()) continue;
+    // Rays more than 85 degrees off axis are never imaged by a pinhole
+    // model's lens; an angle model's reach as far as its image circle.
+    if (!camera.IsAngleModel() && (X.z() <= 0.05 || X.head<2>().norm() > 11 * X.z())) continue;
+    if (std::atan2(X.head<2>().norm(), X.z()) > max_theta) continue;
     const auto pixel = camera.Project(X);
     if (!pixel || !Inside(*pixel, camera.model(), margin)) continue;
     // Past the radius where a model's curve folds back (r (1 + D(r)) stops
@@ -84,6 +86,7 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
   const Eigen::Vector3d centre((options.board_cols - 1) * options.square / 2,
                                (options.board_rows - 1) * options.square / 2, 0);
   const int total = static_cast<int>(object.size());
+  const double max_theta = options.max_theta_deg * M_PI / 180;
 
   SyntheticRig rig;
   rig.data.left.image_width = options.left.image_width;
@@ -119,13 +122,13 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
           Eigen::AngleAxisd(tilt, tilt_axis).toRotationMatrix() * facing *
           Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()).toRotationMatrix();
       const Pose pose = Pose::FromRt(R, distance * z - R * centre);
-      BoardView lv = See(left, pose, object, options.edge_margin_px);
+      BoardView lv = See(left, pose, object, options.edge_margin_px, max_theta);
       if (lv.size() < options.min_visible * total) continue;
       const Pose right_pose =
           Pose::FromRt(extrinsic.R() * pose.R(), extrinsic.R() * pose.t() + extrinsic.t());
       BoardView rv;
       if (options.stereo) {
-        rv = See(right, right_pose, object, options.edge_margin_px);
+        rv = See(right, right_pose, object, options.edge_margin_px, max_theta);
         if (rv.size() < options.min_visible * total) rv = BoardView();
       }
       for (auto* view : {&lv, &rv})
@@ -171,6 +174,15 @@ CameraModel MustacheTestCamera(int variant) {
     camera.p2 = 2.5e-4;
   }
   return GaugeNormalized(camera);
+}
+
+CameraModel FisheyeTestCamera(int variant) {
+  CameraModel camera = FisheyeKneeCamera();
+  if (variant != 0) camera.fx = 297.5;
+  camera.fy = camera.fx * (variant == 0 ? 1.0012 : 0.9991);
+  camera.cx += variant == 0 ? 4.1 : -3.3;
+  camera.cy += variant == 0 ? -2.7 : 3.8;
+  return camera;
 }
 
 CameraModel BarrelTestCamera(int variant) {

@@ -7,7 +7,7 @@ namespace ws::calib {
 std::vector<TableRow> TableRows(const std::vector<StereoCalibration>& calibrations) {
   std::vector<TableRow> rows;
   for (const auto& c : calibrations)
-    rows.push_back({c.model, c.left.rms_px, c.right.rms_px, c.rms_px});
+    rows.push_back({c.model, c.left.rms_px, c.mono ? -1 : c.right.rms_px, c.mono ? -1 : c.rms_px});
   return rows;
 }
 

@@ -5,7 +5,8 @@
 
 namespace ws {
 
-BsplineDistortion::BsplineDistortion(std::vector<double> knots, int degree, Coefficients which)
+template <class C>
+Bspline<C>::Bspline(std::vector<double> knots, int degree, Coefficients which)
     : knots_(std::move(knots)),
       degree_(degree),
       first_estimated_(which == Coefficients::kIdentifiable ? 2 : 0) {
@@ -19,24 +20,28 @@ BsplineDistortion::BsplineDistortion(std::vector<double> knots, int degree, Coef
   }
 }
 
-BsplineDistortion BsplineDistortion::FromData(const Distortion& data, Coefficients which) {
-  return BsplineDistortion(data.knots, data.degree, which);
+template <class C>
+Bspline<C> Bspline<C>::FromData(const Distortion& data, Coefficients which) {
+  return Bspline(data.knots, data.degree, which);
 }
 
-BsplineDistortion BsplineDistortion::ForCalibration(const CalibrationSetup& setup) {
-  return BsplineDistortion(UniformClampedKnots(setup.r_max, setup.knot_intervals, setup.degree),
+template <class C>
+Bspline<C> Bspline<C>::ForCalibration(const CalibrationSetup& setup) {
+  return Bspline(UniformClampedKnots(setup.r_max, setup.knot_intervals, setup.degree),
                            setup.degree, Coefficients::kIdentifiable);
 }
 
-Distortion BsplineDistortion::ToData(const double* coeffs) const {
+template <class C>
+Distortion Bspline<C>::ToData(const double* coeffs) const {
   Distortion data{Kind(), degree_, knots_, std::vector<double>(first_estimated_, 0.0)};
   data.coeffs.insert(data.coeffs.end(), coeffs, coeffs + NumCoeffs());
   return data;
 }
 
-std::vector<double> BsplineDistortion::EstimatedCoeffs(const std::vector<double>& stored) const {
+template <class C>
+std::vector<double> Bspline<C>::EstimatedCoeffs(const std::vector<double>& stored) const {
   if (static_cast<int>(stored.size()) != NumBasis())
-    throw std::invalid_argument("bspline with " + std::to_string(knots_.size()) +
+    throw std::invalid_argument(Kind() + " with " + std::to_string(knots_.size()) +
                                 " knots of degree " + std::to_string(degree_) + " needs " +
                                 std::to_string(NumBasis()) + " coefficients, got " +
                                 std::to_string(stored.size()));
@@ -46,5 +51,8 @@ std::vector<double> BsplineDistortion::EstimatedCoeffs(const std::vector<double>
                                   ", but the identifiable B-spline fixes it at 0");
   return std::vector<double>(stored.begin() + first_estimated_, stored.end());
 }
+
+template class Bspline<TanTheta>;
+template class Bspline<Theta>;
 
 }  // namespace ws

@@ -1,9 +1,14 @@
-// The B-spline radial distortion model, kind "bspline" (paper Eqs. 3-6).
+// The B-spline radial distortion models (paper Eqs. 3-6):
 //
 //   D(r) = B(r) = sum_{i=0}^{n-1} alpha_i N_{i,K}(r)
 //
 // N_{i,K}: B-spline basis of degree K (default 3) on a FIXED knot vector
-// t_0..t_{n+K} (bspline_basis.h), r the ideal normalized radius.
+// t_0..t_{n+K} (bspline_basis.h). Two kinds, by what r is
+// (radial_coordinate.h):
+//   "bspline"        r = tan(theta), the ideal normalized radius (the paper's model)
+//   "bspline_theta"  r = theta, the incidence angle in radians: the same idea
+//                    for fisheye lenses, r_d = theta (1 + B(theta)), rays
+//                    beyond 90 degrees included.
 // Stored data (Distortion): degree K, the whole knot vector, and all n
 // coefficients alpha_0..alpha_{n-1}.
 //
@@ -30,22 +35,26 @@
 
 #include "models/bspline_basis.h"
 #include "models/distortion.h"
+#include "models/radial_coordinate.h"
 #include "models/radial_tangential.h"
 #include "models/scalar_part.h"
 
 namespace ws {
 
-class BsplineDistortion {
+template <class RadialCoordinate>
+class Bspline {
  public:
+  using Coordinate = RadialCoordinate;
+  static constexpr bool kTangential = true;  // p1, p2 apply
   // Validates the knots (and, for kIdentifiable, that they start clamped at
   // 0 with at least three basis functions); throws std::invalid_argument.
-  BsplineDistortion(std::vector<double> knots, int degree, Coefficients which);
+  Bspline(std::vector<double> knots, int degree, Coefficients which);
 
-  static std::string Kind() { return "bspline"; }
-  static BsplineDistortion FromData(const Distortion& data, Coefficients which);
+  static std::string Kind() { return Coordinate::kAngle ? "bspline_theta" : "bspline"; }
+  static Bspline FromData(const Distortion& data, Coefficients which);
   // Uniform clamped knots on [0, r_max] with setup.knot_intervals spans,
   // kIdentifiable.
-  static BsplineDistortion ForCalibration(const CalibrationSetup& setup);
+  static Bspline ForCalibration(const CalibrationSetup& setup);
 
   const std::vector<double>& knots() const { return knots_; }
   int degree() const { return degree_; }
@@ -89,5 +98,13 @@ class BsplineDistortion {
   int degree_;
   int first_estimated_;  // alpha index of coeffs[0]: 2 for kIdentifiable, else 0
 };
+
+using BsplineDistortion = Bspline<TanTheta>;     // "bspline"
+using BsplineThetaDistortion = Bspline<Theta>;   // "bspline_theta"
+
+template <class Model>
+inline constexpr bool kIsBspline = false;
+template <class Coordinate>
+inline constexpr bool kIsBspline<Bspline<Coordinate>> = true;
 
 }  // namespace ws

@@ -25,7 +25,10 @@ CameraModel Validated(CameraModel model) {
 Camera::Camera(CameraModel model)
     : model_(Validated(std::move(model))),
       intrinsics_(model_.Intrinsics()),
-      distortion_(model_.distortion) {}
+      distortion_(model_.distortion) {
+  if (!HasTangential(distortion_.model()) && (model_.p1 != 0 || model_.p2 != 0))
+    throw std::invalid_argument(model_.distortion.kind + " has no tangential terms: p1 = p2 = 0");
+}
 
 std::optional<Eigen::Vector2d> Camera::Project(const Eigen::Vector3d& point) const {
   Eigen::Vector2d pixel;

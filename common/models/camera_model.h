@@ -1,13 +1,17 @@
-// A complete camera: image size, pinhole intrinsics, tangential terms and a
-// radial distortion model, as stored in calibration files and messages
+// A complete camera: image size, intrinsics, tangential terms and a radial
+// distortion model, as stored in calibration files and messages
 // (CameraModel), and ready to use in double (Camera).
 //
-//   x = X/Z, y = Y/Z, r = sqrt(x^2 + y^2)                       (Z > 0)
+//   pinhole models (bspline, poly6, poly12):  x = X/Z, y = Y/Z      (Z > 0)
+//   angle models (kb4, bspline_theta):        (x, y) = theta (X, Y) / rho,
+//       rho = sqrt(X^2 + Y^2), theta = atan2(rho, Z)   (radial_coordinate.h)
+//   r = sqrt(x^2 + y^2)
 //   x_d = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)
 //   y_d = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y
 //   u = fx x_d + cx,  v = fy y_d + cy
 //
-// D(r) is given by distortion.kind: bspline_distortion.h, poly_distortion.h.
+// D(r) is given by distortion.kind: bspline_distortion.h, poly_distortion.h
+// (kb4 has p1 = p2 = 0).
 // Pixel coordinates have (0, 0) at the centre of the top-left pixel.
 #pragma once
 
@@ -18,7 +22,7 @@
 
 #include "models/distortion.h"
 #include "models/distortion_function.h"
-#include "models/pinhole_camera.h"
+#include "models/projection.h"
 
 namespace ws {
 
@@ -29,25 +33,30 @@ struct CameraModel {
   double p1 = 0, p2 = 0;                  // tangential distortion
   Distortion distortion;                  // D(r), with r in normalized coordinates
 
-  // {fx, fy, cx, cy, p1, p2}, indexed by kFx..kP2 (pinhole_camera.h).
+  // {fx, fy, cx, cy, p1, p2}, indexed by kFx..kP2 (projection.h).
   std::array<double, kNumIntrinsics> Intrinsics() const { return {fx, fy, cx, cy, p1, p2}; }
 };
 
 class Camera {
  public:
   // Throws std::invalid_argument unless the image size and focal lengths are
-  // positive, every number is finite and the distortion is consistent.
+  // positive, every number is finite and the distortion is consistent
+  // (a model without tangential terms has p1 = p2 = 0).
   explicit Camera(CameraModel model);
 
   const CameraModel& model() const { return model_; }
 
-  // The pixel of a camera-frame point; nullopt if Z <= 0.
+  // The pixel of a camera-frame point or direction; nullopt where the model
+  // has none (pinhole models: Z <= 0; angle models: straight back).
   std::optional<Eigen::Vector2d> Project(const Eigen::Vector3d& point) const;
-  // The unit ray (Z > 0) seen at a pixel; nullopt when the distortion cannot
-  // be inverted there (see Undistort in pinhole_camera.h).
+  // The unit ray seen at a pixel (Z > 0 for pinhole models; beyond 90
+  // degrees too for angle models); nullopt when the distortion cannot be
+  // inverted there (see Undistort in projection.h).
   std::optional<Eigen::Vector3d> Unproject(const Eigen::Vector2d& pixel) const;
-  // D(r), the radial distortion curve: r'/r - 1 without the tangential terms.
+  // D(r), the radial distortion curve: r'/r - 1 without the tangential terms
+  // (r = tan(theta), or theta for angle models).
   double DistortionCurve(double r) const { return distortion_(r); }
+  bool IsAngleModel() const { return ws::IsAngleModel(distortion_.model()); }
 
  private:
   CameraModel model_;

@@ -1,6 +1,6 @@
 // A radial distortion model as data, and the concept every model class follows.
 //
-// A camera model (see pinhole_camera.h) is a pinhole with a distortion model
+// A camera model (see projection.h) is a pinhole with a distortion model
 //
 //   x_d = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)
 //   y_d = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y        (paper Eqs. 6, 18, 19)

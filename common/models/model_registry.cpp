@@ -48,4 +48,13 @@ AnyDistortionModel MakeCalibrationModel(const std::string& kind, const Calibrati
   });
 }
 
+bool IsAngleModel(const AnyDistortionModel& model) {
+  return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::Coordinate::kAngle; },
+                    model);
+}
+
+bool HasTangential(const AnyDistortionModel& model) {
+  return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::kTangential; }, model);
+}
+
 }  // namespace ws

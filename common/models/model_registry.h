@@ -21,9 +21,11 @@
 
 namespace ws {
 
-using AnyDistortionModel = std::variant<BsplineDistortion, PolyDistortion<3>, PolyDistortion<6>>;
+using AnyDistortionModel = std::variant<BsplineDistortion, PolyDistortion<3>, PolyDistortion<6>,
+                                        Kb4Distortion, BsplineThetaDistortion>;
 
-// The kinds of the models above, in that order: "bspline", "poly6", "poly12".
+// The kinds of the models above, in that order: "bspline", "poly6", "poly12",
+// "kb4", "bspline_theta".
 std::vector<std::string> ModelKinds();
 
 // The model of data.kind built from data's fixed part (degree, knots); the
@@ -33,5 +35,11 @@ AnyDistortionModel MakeModel(const Distortion& data, Coefficients which);
 
 // A fresh model of the given kind for calibration (Model::ForCalibration).
 AnyDistortionModel MakeCalibrationModel(const std::string& kind, const CalibrationSetup& setup);
+
+// Whether the model's r is the incidence angle theta (kb4, bspline_theta)
+// rather than tan(theta) (radial_coordinate.h).
+bool IsAngleModel(const AnyDistortionModel& model);
+// Whether p1, p2 apply (every model but kb4).
+bool HasTangential(const AnyDistortionModel& model);
 
 }  // namespace ws

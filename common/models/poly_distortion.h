@@ -1,8 +1,15 @@
-// The polynomial (Brown) radial distortion models (paper Eqs. 16-19):
+// The polynomial radial distortion models:
 //
 //   D(r) = k_1 r^2 + k_2 r^4 + ... + k_N r^{2N}
 //
-// kind "poly6" (N = 3) and "poly12" (N = 6), r the ideal normalized radius.
+// over the ideal normalized radius r = tan(theta) (Brown; paper Eqs. 16-19):
+//   "poly6" (N = 3) and "poly12" (N = 6), with p1, p2;
+// over the incidence angle r = theta (radial_coordinate.h):
+//   "kb4" (N = 4), Kannala-Brandt exactly as cv::fisheye defines it,
+//   theta_d = theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8),
+//   (u, v) = (fx theta_d X / rho + cx, fy theta_d Y / rho + cy): no
+//   tangential terms (p1 = p2 = 0) and no skew, so that K and D = (k1..k4)
+//   are cv::fisheye's.
 // Stored data (Distortion): degree 0, no knots, coefficients k_1..k_N. All of
 // them are estimated: D(0) = D'(0) = 0 holds for any k, so Coefficients makes
 // no difference. The polynomial is defined for every r, so it needs no
@@ -15,16 +22,22 @@
 #include <vector>
 
 #include "models/distortion.h"
+#include "models/radial_coordinate.h"
 #include "models/radial_tangential.h"
 
 namespace ws {
 
-template <int N>
+template <int N, class RadialCoordinate = TanTheta>
 class PolyDistortion {
  public:
   static_assert(N >= 1, "a polynomial model needs at least k1");
+  using Coordinate = RadialCoordinate;
+  // Kannala-Brandt (over theta) has no tangential terms.
+  static constexpr bool kTangential = !Coordinate::kAngle;
 
-  static std::string Kind() { return "poly" + std::to_string(2 * N); }
+  static std::string Kind() {
+    return Coordinate::kAngle ? "kb" + std::to_string(N) : "poly" + std::to_string(2 * N);
+  }
   static PolyDistortion FromData(const Distortion& data, Coefficients) {
     if (data.degree != 0 || !data.knots.empty())
       throw std::invalid_argument(Kind() + " takes neither a degree nor knots");
@@ -64,5 +77,7 @@ class PolyDistortion {
     return r2 * sum;
   }
 };
+
+using Kb4Distortion = PolyDistortion<4, Theta>;  // "kb4"
 
 }  // namespace ws

@@ -12,7 +12,7 @@
 // pinhole, so this keeps nearly the whole field at the centre's resolution.
 //
 // Maps: for every rectified pixel p, the ray R_i^T K_rect^-1 p is projected
-// through camera i's own model (models/pinhole_camera.h); the float maps are
+// through camera i's own model (models/projection.h); the float maps are
 // converted to OpenCV's fixed-point maps (CV_16SC2 + CV_16UC1) for cv::remap.
 #pragma once
 

@@ -34,6 +34,9 @@ StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg) {
 
 StereoRig StereoRigFromFile(const std::string& path) {
   const calib::CalibrationFile file = calib::ReadCalibrationFile(path);
+  if (file.mono)
+    throw calib::CalibrationFileError(path + ": a one-camera calibration (no right camera, no "
+                                      "stereo): a stereo rig is needed");
   StereoRig rig;
   rig.left = file.left;
   rig.right = file.right;

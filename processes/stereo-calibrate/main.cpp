@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "calib/calibrate_node.h"
+#include "models/model_registry.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-calibrate",
@@ -18,9 +19,12 @@ int main(int argc, char** argv) {
   ws::calib::CalibrationOptions& calib = node.calibration;
   std::string model = "bspline", flow = "joint", loss = "none", state;
   auto& app = cli.app();
+  std::vector<std::string> models = ws::ModelKinds();
+  models.push_back("all");
   app.add_option("--model", model,
-                 "bspline, poly6, poly12 or all (Table II; the first is published)")
-      ->check(CLI::IsMember({"bspline", "poly6", "poly12", "all"}))
+                 "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "
+                 "fisheye lenses beyond 180 degrees) or all (Table II; the first solved is published)")
+      ->check(CLI::IsMember(models))
       ->capture_default_str();
   app.add_option("--knots", calib.knots, "Estimated B-spline coefficients (distinct knots)")
       ->check(CLI::Range(2, 64))

@@ -29,6 +29,15 @@ SyntheticRigOptions BarrelRig() {
   return o;
 }
 
+SyntheticRigOptions FisheyeRig() {
+  SyntheticRigOptions o = MustacheRig();
+  o.left = FisheyeTestCamera(0);
+  o.right = FisheyeTestCamera(1);
+  o.max_theta_deg = 100;
+  o.seed = 3;
+  return o;
+}
+
 double TruthRms(const SyntheticRigOptions& options, const SyntheticRig& rig, int camera) {
   return camera == 0 ? Rms(Reproject(options.left, rig.data.left, rig.left_poses))
                      : Rms(Reproject(options.right, rig.data.right, rig.right_poses));
@@ -67,6 +76,16 @@ ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& 
       if (c >= 0 && c < cols && r >= 0 && r < rows) ++count[r * cols + c];
     }
   const Camera t(truth), e(estimate);
+  // An angle model's image ends at its circle: only rays up to the largest
+  // observed incidence angle count (past it no lens images anything).
+  double observed_theta = INFINITY;
+  if (t.IsAngleModel()) {
+    observed_theta = 0;
+    for (const BoardView& view : observed.views)
+      for (const Eigen::Vector2d& u : view.image)
+        if (const auto ray = t.Unproject(u))
+          observed_theta = std::max(observed_theta, std::acos(std::clamp(ray->z(), -1.0, 1.0)));
+  }
   std::vector<TurnedProjection> points;
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
@@ -74,7 +93,9 @@ ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& 
       for (int dy = 0; dy <= kCell; dy += kStep)
         for (int dx = 0; dx <= kCell; dx += kStep) {
           const Eigen::Vector2d pixel(c * kCell + dx - 0.5, r * kCell + dy - 0.5);
-          if (const auto ray = t.Unproject(pixel)) points.push_back({&e, *ray, pixel});
+          const auto ray = t.Unproject(pixel);
+          if (ray && std::acos(std::clamp(ray->z(), -1.0, 1.0)) <= observed_theta)
+            points.push_back({&e, *ray, pixel});
         }
     }
   // The rotation that brings the estimate's ray bundle closest to the truth's.

@@ -17,13 +17,19 @@ SyntheticRigOptions MustacheRig();
 // another noise draw.
 SyntheticRigOptions BarrelRig();
 
+// ~30 stereo views of the 12 x 9 board through two 200-degree knee-lens
+// fisheye cameras (models/fisheye_lens.h), boards reaching 100 degrees off
+// axis, 0.1 px noise, a 12 cm baseline with a small rotation.
+SyntheticRigOptions FisheyeRig();
+
 // RMS of the true cameras at the true poses on the rig's noisy corners: the
 // noise floor a perfect calibration reaches.
 double TruthRms(const SyntheticRigOptions& options, const SyntheticRig& rig, int camera);
 
 // How far the estimate's projection is from the truth's over the observed
 // field: every point of a 10 px lattice in each 80 x 80 px image cell holding
-// at least 10 of the camera's observed corners.
+// at least 10 of the camera's observed corners (for an angle model, only up to
+// the largest observed incidence angle: its image circle ends there).
 struct ProjectionError {
   // The largest pixel distance between the truth's pixel of a ray and the
   // estimate's pixel of the same ray turned by the rotation that fits best.

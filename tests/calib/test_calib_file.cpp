@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <cmath>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 
 #include "calib/calib_file.h"
@@ -15,11 +17,25 @@ namespace {
 using namespace ws;
 using namespace ws::calib;
 
+// A kb4 fisheye: cv::fisheye's model, no tangential terms.
+CameraModel Kb4TestCamera(int variant) {
+  CameraModel camera = FisheyeTestCamera(variant);
+  camera.distortion = Distortion{"kb4", 0, {}, {-0.021 - 0.001 * variant, 0.0043, -0.0029, 4.2e-4}};
+  return camera;
+}
+
+CameraModel SampleCamera(const std::string& model, int variant) {
+  if (model == "bspline") return MustacheTestCamera(variant);
+  if (model == "bspline_theta") return FisheyeTestCamera(variant);
+  if (model == "kb4") return Kb4TestCamera(variant);
+  return BarrelTestCamera(variant);
+}
+
 CalibrationFile SampleFile(const std::string& model) {
   CalibrationFile f;
   f.model = model;
-  f.left = model == "bspline" ? MustacheTestCamera(0) : BarrelTestCamera(0);
-  f.right = model == "bspline" ? MustacheTestCamera(1) : BarrelTestCamera(1);
+  f.left = SampleCamera(model, 0);
+  f.right = SampleCamera(model, 1);
   f.left_rms = 0.1234;
   f.right_rms = 0.2345;
   f.left_views = 30;
@@ -45,7 +61,7 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
 
 TEST(CalibFile, EveryModelReadsBackBitForBit) {
   const std::string dir = test::TempDir("calib-file-roundtrip");
-  for (const std::string model : {"bspline", "poly6"}) {
+  for (const std::string model : {"bspline", "poly6", "kb4", "bspline_theta"}) {
     const CalibrationFile written = SampleFile(model);
     const std::string path = dir + "/" + model + ".yaml";
     WriteCalibrationFile(path, written);
@@ -82,6 +98,36 @@ TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
   EXPECT_EQ(alpha, f.right.distortion.coeffs);
   EXPECT_EQ(static_cast<std::string>(fs["right"]["model"]), "bspline");
   EXPECT_EQ(static_cast<double>(fs["stereo"]["baseline_m"]), f.T.norm());
+}
+
+// A kb4 file is cv::fisheye's K and D: OpenCV projects with them exactly as
+// the file's model does, rays beyond OpenCV's 90 degrees aside.
+TEST(CalibFile, Kb4LoadsIntoOpenCvFisheye) {
+  const std::string path = test::TempDir("calib-file-kb4") + "/kb4.yaml";
+  const CalibrationFile f = SampleFile("kb4");
+  WriteCalibrationFile(path, f);
+  cv::FileStorage fs(path, cv::FileStorage::READ);
+  ASSERT_TRUE(fs.isOpened());
+  cv::Mat K;
+  std::vector<double> D;
+  fs["left"]["camera_matrix"] >> K;
+  fs["left"]["k"] >> D;
+  ASSERT_EQ(D.size(), 4u);
+  std::vector<cv::Point3d> points;
+  for (double deg = 0; deg < 89; deg += 4)
+    for (double phi = 0; phi < 6.28; phi += 0.7)
+      points.emplace_back(std::sin(deg * M_PI / 180) * std::cos(phi),
+                          std::sin(deg * M_PI / 180) * std::sin(phi), std::cos(deg * M_PI / 180));
+  std::vector<cv::Point2d> opencv;
+  cv::fisheye::projectPoints(points, opencv, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D);
+  const Camera camera(ReadCalibrationFile(path).left);
+  double worst = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const auto pixel = camera.Project({points[i].x, points[i].y, points[i].z});
+    ASSERT_TRUE(pixel);
+    worst = std::max(worst, std::hypot(pixel->x() - opencv[i].x, pixel->y() - opencv[i].y));
+  }
+  EXPECT_LT(worst, 1e-9);
 }
 
 // A valid file's text with `from` replaced by `to` must fail naming `field`.

@@ -68,15 +68,23 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
   PrintTable("Table II, opencv-doc stereo set, paper flow [px]", report);
   std::printf("%-10s %10.4f %10.4f (cv::calibrateCamera, 5 coefficients)\n", "opencv", opencv[0],
               opencv[1]);
-  ASSERT_EQ(report["models"].size(), 3u);
+  ASSERT_EQ(report["models"].size(), 5u);
   for (const auto& model : report["models"]) {
+    ASSERT_FALSE(model.contains("error")) << model["model"] << ": " << model["error"];
+    // kb4 has no tangential terms: calibrateCamera's model is not its equal.
+    const bool pinhole = model["model"] != "kb4" && model["model"] != "bspline_theta";
     for (int c = 0; c < 2; ++c) {
       const auto& camera = model["cameras"][c];
       EXPECT_EQ(camera["views"], 13);
-      EXPECT_LE(camera["rms_px"].get<double>(), opencv[c] * (1 + 1e-4))
-          << model["model"] << " " << camera["name"];
+      if (pinhole) {
+        EXPECT_LE(camera["rms_px"].get<double>(), opencv[c] * (1 + 1e-4))
+            << model["model"] << " " << camera["name"];
+      }
     }
-    EXPECT_EQ(model["stereo"]["views"], 13);
+    // Every pair is in R, T or reported as not fitting one rig (kb4, which has
+    // no tangential terms, leaves one pair of this pinhole lens out).
+    EXPECT_EQ(model["stereo"]["views"].get<int>() + model["stereo"]["inconsistent_views"].size(), 13u);
+    if (pinhole) EXPECT_EQ(model["stereo"]["views"], 13);
   }
   // The file holds the first model; STEREO_CALIBRATION says the same.
   const CalibrationFile file = ReadCalibrationFile(dir + "/paper.yaml");

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "models/pinhole_camera.h"
+#include "models/projection.h"
 #include "test_cameras.h"
 
 namespace ws {

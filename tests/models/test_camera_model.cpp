@@ -155,10 +155,12 @@ TEST(Camera, RejectsInconsistentModels) {
 }
 
 TEST(ModelRegistry, KnowsEveryModelByKind) {
-  EXPECT_EQ(ModelKinds(), (std::vector<std::string>{"bspline", "poly6", "poly12"}));
+  EXPECT_EQ(ModelKinds(),
+            (std::vector<std::string>{"bspline", "poly6", "poly12", "kb4", "bspline_theta"}));
   const CalibrationSetup setup{2.5, 8, 3};
   for (const auto& [kind, num_coeffs] :
-       std::vector<std::pair<std::string, int>>{{"bspline", 9}, {"poly6", 3}, {"poly12", 6}}) {
+       std::vector<std::pair<std::string, int>>{
+           {"bspline", 9}, {"poly6", 3}, {"poly12", 6}, {"kb4", 4}, {"bspline_theta", 9}}) {
     const AnyDistortionModel model = MakeCalibrationModel(kind, setup);
     std::visit(
         [&](const auto& m) {
@@ -179,7 +181,8 @@ TEST(ModelRegistry, KnowsEveryModelByKind) {
     FAIL() << "no error";
   } catch (const std::invalid_argument& error) {
     EXPECT_EQ(std::string(error.what()),
-              "unknown distortion model 'fisheye' (known: bspline, poly6, poly12)");
+              "unknown distortion model 'fisheye' (known: bspline, poly6, poly12, kb4, "
+              "bspline_theta)");
   }
 }
 

@@ -1,7 +1,8 @@
-// Pinhole projection through any distortion model (paper Eqs. 12-15), and its
-// inverse.
+// Projection of a camera-frame direction through any camera model (paper
+// Eqs. 12-15 for the pinhole models), and its inverse, the unit ray of a pixel.
 //
-//   x = X / Z, y = Y / Z                          (Z > 0, else no projection)
+//   (x, y) = Model::Coordinate::Ideal(X, Y, Z)    radial_coordinate.h:
+//                                                 (X, Y) / Z, or theta (X, Y) / rho
 //   (x_d, y_d) = model.Distort(coeffs, p1, p2, x, y)   (distortion.h)
 //   u = fx x_d + cx,  v = fy y_d + cy
 //
@@ -16,6 +17,7 @@
 
 #include <ceres/jet.h>
 
+#include "models/radial_coordinate.h"
 #include "models/scalar_part.h"
 
 namespace ws {
@@ -23,15 +25,15 @@ namespace ws {
 // Indices into the intrinsics array, and its size.
 constexpr int kFx = 0, kFy = 1, kCx = 2, kCy = 3, kP1 = 4, kP2 = 5, kNumIntrinsics = 6;
 
-// Projects the camera-frame point X to the pixel uv; false (uv untouched) if
-// the point is not in front of the camera (Z <= 0).
+// Projects the camera-frame point (or direction) X to the pixel uv; false
+// (uv untouched) where the model's coordinate has no ideal point for it
+// (pinhole models: Z <= 0; angle models: straight back).
 template <typename Model, typename T>
 bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel) {
-  if (!(ScalarPart(point[2]) > 0.0)) return false;
-  const T x = point[0] / point[2];
-  const T y = point[1] / point[2];
+  T ideal[2];
+  if (!Model::Coordinate::Ideal(point, ideal)) return false;
   T xd, yd;
-  model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], x, y, &xd, &yd);
+  model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], ideal[0], ideal[1], &xd, &yd);
   pixel[0] = intrinsics[kFx] * xd + intrinsics[kCx];
   pixel[1] = intrinsics[kFy] * yd + intrinsics[kCy];
   return true;
@@ -47,7 +49,8 @@ bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* 
 // determinant is not positive at an iterate (the map folds there and has no
 // unique inverse), when no step decreases the residual, after 50 iterations,
 // and when the radial map r -> r (1 + D(r)) is not increasing at 16 evenly
-// spaced radii up to the solution's (a solution past a fold).
+// spaced radii up to the solution's (a solution past a fold), and when the
+// solution's radius is not below the coordinate's largest (pi for an angle).
 template <typename Model>
 bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
                const double distorted[2], double ideal[2]) {
@@ -83,6 +86,7 @@ bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
     }
   }
   const double r = std::hypot(it.x, it.y);
+  if (!(r < Model::Coordinate::kMaxRadius)) return false;
   for (int k = 1; k <= 16; ++k) {
     const Jet rk(r * k / 16.0, 0);
     const Jet height = rk * (1.0 + model.RadialDistortion(jet_coeffs.data(), rk));
@@ -93,8 +97,8 @@ bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
   return true;
 }
 
-// The unit ray (X, Y, Z), Z > 0, that projects to the pixel; false when
-// Undistort fails.
+// The unit ray (X, Y, Z) that projects to the pixel (Z > 0 for the pinhole
+// models; any direction for the angle models); false when Undistort fails.
 template <typename Model>
 bool Unproject(const Model& model, const double* intrinsics, const double* coeffs,
                const double pixel[2], double ray[3]) {
@@ -102,11 +106,7 @@ bool Unproject(const Model& model, const double* intrinsics, const double* coeff
                                (pixel[1] - intrinsics[kCy]) / intrinsics[kFy]};
   double ideal[2];
   if (!Undistort(model, coeffs, intrinsics[kP1], intrinsics[kP2], distorted, ideal)) return false;
-  const double norm = std::sqrt(ideal[0] * ideal[0] + ideal[1] * ideal[1] + 1.0);
-  ray[0] = ideal[0] / norm;
-  ray[1] = ideal[1] / norm;
-  ray[2] = 1.0 / norm;
-  return true;
+  return Model::Coordinate::Ray(ideal, ray);
 }
 
 }  // namespace ws

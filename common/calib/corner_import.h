@@ -1,0 +1,46 @@
+// Board corners detected by other tools, read as one camera's views, so that
+// their detections can be calibrated here (and compared on equal terms).
+//
+// BabelCalib (Lochman et al., ICCV 2021; ../shared/data/README.md):
+//   target.dsc   line 1 "board, columns, rows, size"; line 2 the tag family;
+//                then one fiducial a line "id, column, row, X, Y, Z" (id -1:
+//                a chessboard corner), board units;
+//   image.orpc   a header of "key: value" lines (filename, width, height,
+//                num_corners, encoding: ascii), then one corner a line
+//                "board, corner, marker, u, v" (pixels), `corner` the
+//                0-based index of its fiducial in the .dsc list (BabelCalib's
+//                own reader calls the fields camera, corner and marker id;
+//                ../shared/data/README.md's "column, row" for them does not
+//                match its files, whose third field is 1 throughout).
+// mrcal (mrcal-calibrate-cameras --corners-cache):
+//   corners.vnl  "# filename x y level", then one line a corner of every
+//                image, each image's COLS x ROWS corners in row-major board
+//                order; a level of "-" (or x, y of "-") marks a corner not
+//                seen. The board is the chessboard of BoardSpec (square
+//                size in metres); the image size is not in the file.
+// Errors name the file and line: CornerImportError.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "calib/calib_data.h"
+
+namespace ws::calib {
+
+struct CornerImportError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The views of the .orpc files, in the order given, on the .dsc target.
+CameraData ReadBabelCalibViews(const std::string& dsc_path,
+                               const std::vector<std::string>& orpc_paths);
+
+// The views of a corners.vnl, images in the file's order; `names` (if not
+// null) receives each view's file name.
+CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, double square,
+                            int image_width, int image_height,
+                            std::vector<std::string>* names = nullptr);
+
+}  // namespace ws::calib

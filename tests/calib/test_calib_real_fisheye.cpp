@@ -1,0 +1,149 @@
+// Real fisheye data no one here made (../shared/data, see its README): the
+// ~185-degree stereo set of ros-perception/image_pipeline, through the real
+// processes (stereo-capture dir: -> stereo-detect -> stereo-calibrate),
+// against cv::fisheye::calibrate (Kannala-Brandt, 4 coefficients) on the same
+// detections; and BabelCalib's ov_plane set (~190 degrees) under its own
+// train/test protocol. Skips, saying why, where the data are absent (a
+// fresh clone).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/calib3d.hpp>
+
+#include "calib/calibrate.h"
+#include "calib/corner_import.h"
+#include "calib/heldout.h"
+#include "calib_process_support.h"
+
+namespace {
+
+using namespace ws;
+using namespace ws::calib;
+using namespace ws::calib::test;
+
+std::string SharedData(const std::string& set) {
+  return ws::test::SourceDir() + "/../shared/data/" + set;
+}
+
+struct OpenCvFisheye {
+  double rms = 0;
+  int views = 0;
+};
+
+// cv::fisheye::calibrate as OpenCV's own samples call it (recomputed
+// extrinsics, no skew), on one camera's views.
+OpenCvFisheye OpenCvFisheyeRms(const CameraData& camera) {
+  std::vector<std::vector<cv::Point3d>> object;
+  std::vector<std::vector<cv::Point2d>> image;
+  for (const calib::BoardView& view : camera.views) {
+    if (view.empty()) continue;
+    object.emplace_back();
+    image.emplace_back();
+    for (int i = 0; i < view.size(); ++i) {
+      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+      image.back().emplace_back(view.image[i].x(), view.image[i].y());
+    }
+  }
+  cv::Matx33d K;
+  cv::Vec4d D;
+  std::vector<cv::Vec3d> rvecs, tvecs;
+  const double rms = cv::fisheye::calibrate(
+      object, image, cv::Size(camera.image_width, camera.image_height), K, D, rvecs, tvecs,
+      cv::fisheye::CALIB_RECOMPUTE_EXTRINSIC | cv::fisheye::CALIB_FIX_SKEW,
+      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 100, 1e-10));
+  return {rms, static_cast<int>(object.size())};
+}
+
+class RealFisheyeStereo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::filesystem::is_directory(SharedData("fisheye-stereo-ros")))
+      GTEST_SKIP() << SharedData("fisheye-stereo-ros")
+                   << " is absent (real data beside the project, not part of it): skipped";
+  }
+};
+
+TEST_F(RealFisheyeStereo, AngleModelsUseEveryViewAndBsplineThetaFitsNoWorseThanCvFisheye) {
+  const std::string dir = ws::test::TempDir("calibrate-fisheye-ros");
+  const std::string corners =
+      CaptureAndDetect(dir, "dir:" + SharedData("fisheye-stereo-ros"), "chessboard:8x6:0.04");
+  const StereoData data = ReadCorners(corners);
+  const OpenCvFisheye opencv[2] = {OpenCvFisheyeRms(data.left), OpenCvFisheyeRms(data.right)};
+  // The data's README: OpenCV's detector finds 46 left and 45 right boards.
+  EXPECT_EQ(opencv[0].views, 46);
+  EXPECT_EQ(opencv[1].views, 45);
+  // Every image of the set is a view, even the two nearly alike.
+  const auto run = CalibrateOnce(dir, corners, "fisheye",
+                                 {"--model", "all", "--flow", "paper", "--duplicate-px", "0.001",
+                                  "--plot-dir", dir});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = ReadJson(dir + "/fisheye.json");
+  std::printf("fisheye-stereo-ros, paper flow, per camera: RMS px (views, outliers)\n");
+  std::printf("%-14s %24s %24s\n", "model", "left", "right");
+  std::printf("%-14s %15.4f (%2d, %2d) %15.4f (%2d, %2d)\n", "cv::fisheye", opencv[0].rms,
+              opencv[0].views, 0, opencv[1].rms, opencv[1].views, 0);
+  for (const auto& model : report["models"]) {
+    if (model.contains("error")) {
+      std::printf("%-14s failed: %s\n", model["model"].get<std::string>().c_str(),
+                  model["error"].get<std::string>().c_str());
+      continue;
+    }
+    const auto& l = model["cameras"][0];
+    const auto& r = model["cameras"][1];
+    std::printf("%-14s %15.4f (%2d, %2d) %15.4f (%2d, %2d)\n",
+                model["model"].get<std::string>().c_str(), l["rms_px"].get<double>(),
+                l["views"].get<int>(), l["outliers"].get<int>(), r["rms_px"].get<double>(),
+                r["views"].get<int>(), r["outliers"].get<int>());
+    if (model["model"] != "bspline_theta" && model["model"] != "kb4") continue;
+    for (int c = 0; c < 2; ++c) {
+      const auto& camera = model["cameras"][c];
+      EXPECT_EQ(camera["views"].get<int>(), opencv[c].views) << model["model"] << " " << c;
+      if (model["model"] == "bspline_theta") {
+        EXPECT_LE(camera["rms_px"].get<double>(), opencv[c].rms) << camera["name"];
+      }
+    }
+  }
+}
+
+// The .orpc files of a folder, in name order.
+std::vector<std::string> OrpcFiles(const std::string& dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().extension() == ".orpc") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// BabelCalib's protocol: calibrate on train; hold the camera, fit each test
+// pose alone, and report the test RMS.
+TEST(RealBabelCalib, TrainTestProtocolBsplineThetaNoWorseThanKb4) {
+  const std::string dir = SharedData("babelcalib-ov-plane");
+  if (!std::filesystem::is_directory(dir))
+    GTEST_SKIP() << dir << " is absent (real data beside the project, not part of it): skipped";
+  const CameraData train =
+      ReadBabelCalibViews(dir + "/ov_plane.dsc", OrpcFiles(dir + "/corners/train"));
+  const CameraData test =
+      ReadBabelCalibViews(dir + "/ov_plane.dsc", OrpcFiles(dir + "/corners/test"));
+  ASSERT_EQ(train.views.size(), 18u);
+  ASSERT_EQ(test.views.size(), 7u);
+  double test_rms[2] = {0, 0};
+  std::printf("babelcalib ov_plane (BabelCalib's protocol): train RMS (views, outliers), test RMS (views)\n");
+  const char* models[2] = {"kb4", "bspline_theta"};
+  for (int m = 0; m < 2; ++m) {
+    CalibrationOptions options;
+    options.model = models[m];
+    const CameraCalibration calibration = CalibrateCamera(train, options);
+    const HeldOutFit held_out = FitHeldOutViews(calibration.model, test);
+    std::printf("%-14s train %.4f px (%d, %d)   test %.4f px (%d)\n", models[m],
+                calibration.rms_px, calibration.views, calibration.outliers, held_out.rms_px,
+                held_out.views);
+    EXPECT_EQ(calibration.views, 18) << models[m];
+    EXPECT_EQ(held_out.views, 7) << models[m];
+    test_rms[m] = held_out.rms_px;
+  }
+  EXPECT_LE(test_rms[1], test_rms[0]) << "bspline_theta predicts the test views no worse than kb4";
+}
+
+}  // namespace
