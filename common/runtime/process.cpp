@@ -60,12 +60,19 @@ Process::Process(const ProcessOptions& options)
   InstallSignalHandlers();
   input_log_ = LcmFileUrlPath(options.in_url);
   file_input_ = message_clock_ = !input_log_.empty();
+  sender_ = options.name + "@" + HostName() + " pid " + std::to_string(getpid());
+  if (!options.key_file.empty()) auth_.emplace(auth::RigKey::FromFile(options.key_file));
   out_ = OpenLcm(options.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
             (options.out_url.empty() ? "LCM default" : options.out_url) +
             (options.config_file.empty() ? "" : ", config " + options.config_file) + ", log " +
             log_.path() + ")");
+  if (auth_)
+    log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
+              "): commands and calibrations are signed, and refused unless signed with it");
+  else
+    log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
 }
 
 Process::~Process() {
