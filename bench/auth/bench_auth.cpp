@@ -14,6 +14,7 @@
 #include "auth/message_auth.h"
 #include "lcm_io/channels.h"
 #include "rectify/stereo_rig.h"
+#include "runtime/wall_clock.h"
 #include "widestereo/command_t.hpp"
 
 namespace {
@@ -22,11 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 double MicrosPer(Clock::time_point start, int count) {
   return std::chrono::duration<double, std::micro>(Clock::now() - start).count() / count;
-}
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 template <class Msg>
@@ -39,7 +35,7 @@ void Measure(const char* what, const std::string& channel, const Msg& msg, int c
   const double encode_us = MicrosPer(start, count);
 
   std::vector<Msg> signed_msgs(size_t(count), msg);
-  const int64_t now = WallMicros();
+  const int64_t now = ws::WallMicros();
   start = Clock::now();
   for (Msg& m : signed_msgs) ws::auth::Sign(key, channel, "bench_auth", now, m);
   const double sign_us = MicrosPer(start, count);

@@ -1,7 +1,6 @@
 #include "calib/calibrate_node.h"
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -14,6 +13,7 @@
 #include "lcm_io/channels.h"
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"
+#include "runtime/wall_clock.h"
 
 namespace ws::calib {
 
@@ -31,11 +31,6 @@ std::string FolderOf(const std::string& file) {
   if (file.empty()) return "";
   const std::filesystem::path parent = std::filesystem::path(file).parent_path();
   return parent.empty() ? "." : parent.string();
-}
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 // --knots' range, for a knots=N command argument.
@@ -232,6 +227,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   for (const auto& m : models) names += (names.empty() ? "" : ", ") + m;
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
+  double rms = -1;
   try {
     const auto results = CalibrateStereoAllModels(data, options, models);
     const StereoCalibration& primary = results.front();
@@ -266,14 +262,15 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
         process_.ReportError(std::string("figures: ") + e.what());
       }
     }
-    SetState("solved", primary.rms_px);
+    rms = primary.rms_px;
     ok = true;
   } catch (const std::exception& e) {
     process_.ReportError(std::string("solve failed: ") + e.what());
-    SetState("failed", -1);
   }
-  PublishStatus();
+  // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;
+  SetState(ok ? "solved" : "failed", rms);
+  PublishStatus();
   return ok;
 }
 

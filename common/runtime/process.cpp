@@ -5,13 +5,13 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/wall_clock.h"
 
 namespace ws {
 namespace {
@@ -26,12 +26,6 @@ void InstallSignalHandlers() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-}
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 std::string HostName() {

@@ -93,7 +93,7 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
 // first; without a state file the archives are kept in memory.
 TEST_F(CalibSession, ResetArchivesTheViewsAndRestoreBringsThemBack) {
   const std::string dir = ws::test::TempDir("calib-session-archive");
-  for (const std::string state : {dir + "/views.lcmlog", std::string()}) {
+  for (const std::string& state : {dir + "/views.lcmlog", std::string()}) {
     SCOPED_TRACE(state.empty() ? "no state file" : state);
     SessionOptions options;
     options.state_path = state;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "auth/message_auth.h"
+#include "runtime/wall_clock.h"
 
 #include "bad_messages.h"
 #include "bus_watch.h"
@@ -44,7 +45,7 @@ class BadPeer : public ::testing::TestWithParam<bool> {
   // msg as the test sends it on `channel`: signed when there is a key.
   template <class Msg>
   Msg AsSent(const std::string& channel, Msg msg) const {
-    if (key_) ws::auth::Sign(*key_, channel, "bad-peer test", WallMicros(), msg);
+    if (key_) ws::auth::Sign(*key_, channel, "bad-peer test", ws::WallMicros(), msg);
     return msg;
   }
 

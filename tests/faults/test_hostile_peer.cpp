@@ -17,6 +17,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/decode.h"
 #include "match_fixtures.h"
+#include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_calibration_t.hpp"
@@ -199,7 +200,7 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
   SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
 
   std::string error = SendAndCount(bus, ch::kStereoCommand,
-                                   Encoded(CommandMessage("save", "stereo-cloud", {"path=unsigned.pcd"}, WallMicros())));
+                                   Encoded(CommandMessage("save", "stereo-cloud", {"path=unsigned.pcd"}, ws::WallMicros())));
   EXPECT_NE(error.find("STEREO_COMMAND: refused: unsigned"), std::string::npos) << error;
 
   RunStereoCommand(dir, url, {"save", "--target", "stereo-cloud", "--arg", "path=other.pcd", "--key-file", other});
@@ -239,11 +240,11 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << match.Output();
 
   auto forged = IdentityCalibration(320, 240, 300, 0.1);
-  forged.utime = WallMicros();
+  forged.utime = ws::WallMicros();
   std::string error = SendAndCount(bus, ch::kStereoCalibration, Encoded(forged));
   EXPECT_NE(error.find("STEREO_CALIBRATION: refused: unsigned"), std::string::npos) << error;
   ws::auth::Sign(ws::auth::RigKey::FromFile(WriteKeyFile(dir, "other.key")), ch::kStereoCalibration, "forger",
-                 WallMicros(), forged);
+                 ws::WallMicros(), forged);
   error = SendAndCount(bus, ch::kStereoCalibration, Encoded(forged));
   EXPECT_NE(error.find("refused: signed with another rig key"), std::string::npos) << error;
   EXPECT_EQ(bus.status()->state, "waiting for calibration") << "a refused calibration built maps";

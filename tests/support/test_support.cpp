@@ -131,11 +131,6 @@ std::string WriteKeyFile(const std::string& dir, const std::string& name, unsign
   return path;
 }
 
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
 long ResidentKb(int pid, const std::string& field) {
   std::ifstream status("/proc/" + std::to_string(pid) + "/status");
   std::string key;

@@ -68,9 +68,6 @@ widestereo::command_t CommandMessage(const std::string& command, const std::stri
 // (0600: readable by its owner only, as --key-file requires).
 std::string WriteKeyFile(const std::string& dir, const std::string& name, unsigned mode = 0600);
 
-// Microseconds since the epoch: the time a signed message carries.
-int64_t WallMicros();
-
 // Kilobytes of resident memory of process `pid`: now (VmRSS) or at its peak
 // (VmHWM); a test failure, and 0, when /proc does not say.
 long ResidentKb(int pid, const std::string& field);
