@@ -1,9 +1,10 @@
 // What the rig key costs per message (README "Security on the robot
 // network"): for a command and a calibration as the processes send them,
-// the time to encode the message (what every publish pays, the baseline),
+// the time to encode the message (what every publish pays) and to decode
+// and validate it (what every receiver pays), the baselines, beside the time
 // to sign it (auth::Sign: the MAC input encoded, HMAC-SHA512-256) and to
 // check it (auth::AuthCheck::Check: a copy re-encoded, the HMAC, the nonce),
-// in microseconds per message and as a multiple of the encoding, all
+// in microseconds per message and as multiples of the baselines, all
 // measured in the same run.
 #include <chrono>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "auth/message_auth.h"
+#include "lcm_io/decode.h"
 #include "lcm_io/channels.h"
 #include "rectify/stereo_rig.h"
 #include "runtime/wall_clock.h"
@@ -33,6 +35,9 @@ void Measure(const char* what, const std::string& channel, const Msg& msg, int c
   auto start = Clock::now();
   for (int i = 0; i < count; ++i) checksum += msg.encode(bytes.data(), 0, int(bytes.size()));
   const double encode_us = MicrosPer(start, count);
+  start = Clock::now();
+  for (int i = 0; i < count; ++i) checksum += ws::DecodeMessage<Msg>(bytes.data(), int(bytes.size())).utime != 0;
+  const double decode_us = MicrosPer(start, count);
 
   std::vector<Msg> signed_msgs(size_t(count), msg);
   const int64_t now = ws::WallMicros();
@@ -45,9 +50,9 @@ void Measure(const char* what, const std::string& channel, const Msg& msg, int c
   for (const Msg& m : signed_msgs) check.Check(channel, m, now);
   const double check_us = MicrosPer(start, count);
 
-  std::printf("%-12s %6d bytes  encode %7.2f us  sign %7.2f us (%4.1f x encode)  check %7.2f us (%4.1f x encode)%s\n",
-              what, int(bytes.size()), encode_us, sign_us, sign_us / encode_us, check_us, check_us / encode_us,
-              checksum == 0 ? " (nothing encoded?)" : "");
+  std::printf("%-12s %5d bytes  encode %6.2f us, sign %6.2f us (%5.1f x)  decode %6.2f us, check %6.2f us (%5.1f x)%s\n",
+              what, int(bytes.size()), encode_us, sign_us, sign_us / encode_us, decode_us, check_us,
+              check_us / decode_us, checksum == 0 ? " (nothing encoded?)" : "");
 }
 
 }  // namespace
