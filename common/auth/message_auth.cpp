@@ -45,6 +45,9 @@ void AuthCheck::CheckSigned(const std::string& channel, const widestereo::auth_t
     throw AuthError("refused: signed " + Seconds(age < 0 ? -age : age) + (age < 0 ? " after" : " before") +
                     " this process's clock, outside the " + Seconds(kWindowUs) + " window (" +
                     (age < 0 ? "clocks apart?" : "a replay, or clocks apart") + ")");
+  if (auth.utime < not_before_us_)
+    throw AuthError("refused: signed " + Seconds(not_before_us_ - auth.utime) +
+                    " before this process started (a replay, or clocks apart)");
   std::lock_guard<std::mutex> lock(mutex_);
   while (!accepted_.empty() && accepted_.front().first < now_us - kWindowUs) {
     nonces_.erase(accepted_.front().second);

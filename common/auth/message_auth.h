@@ -7,8 +7,8 @@
 // channel name, a NUL and the encoded message with auth.mac zeroed, so that
 // every field is covered and a message cannot be moved to another channel.
 // A receiver with the key refuses what is unsigned, signed with another key,
-// altered, signed more than kWindowUs from its own clock, or a nonce it has
-// accepted before. Process does both for every such type it publishes or
+// altered, signed more than kWindowUs from its own clock or before it started
+// (its nonces start empty), or a nonce it has accepted before. Process does both for every such type it publishes or
 // subscribes to; Sign() is the one call any other publisher needs.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -76,11 +77,15 @@ void ClearAuth(Msg& msg) {
 // Thread-safe.
 class AuthCheck {
  public:
-  explicit AuthCheck(RigKey key) : key_(std::move(key)) {}
+  // `not_before_us`: the receiver's start; what was signed before it could
+  // have been accepted by an earlier run, whose nonces this one does not know.
+  explicit AuthCheck(RigKey key, int64_t not_before_us = std::numeric_limits<int64_t>::min())
+      : key_(std::move(key)), not_before_us_(not_before_us) {}
   const RigKey& key() const { return key_; }
 
   // Throws AuthError unless msg is signed with this key for `channel`, within
-  // kWindowUs of now_us, with a nonce not accepted before.
+  // kWindowUs of now_us and not before not_before_us, with a nonce not
+  // accepted before.
   template <class Msg>
   void Check(const std::string& channel, const Msg& msg, int64_t now_us) {
     if (msg.auth.key_id == 0) throw AuthError("refused: unsigned, and this process requires the rig key's MAC");
@@ -92,6 +97,7 @@ class AuthCheck {
                    int64_t now_us);
 
   RigKey key_;
+  int64_t not_before_us_;
   std::mutex mutex_;  // guards the two below
   std::deque<std::pair<int64_t, int64_t>> accepted_;  // (signing time, nonce), in order of arrival
   std::unordered_set<int64_t> nonces_;                // the nonces of accepted_

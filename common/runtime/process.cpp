@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,7 +56,10 @@ Process::Process(const ProcessOptions& options)
   input_log_ = LcmFileUrlPath(options.in_url);
   file_input_ = message_clock_ = !input_log_.empty();
   sender_ = options.name + "@" + HostName() + " pid " + std::to_string(getpid());
-  if (!options.key_file.empty()) auth_.emplace(auth::RigKey::FromFile(options.key_file));
+  // Live, nothing signed before the start is accepted: an earlier run may have obeyed it.
+  if (!options.key_file.empty())
+    auth_.emplace(auth::RigKey::FromFile(options.key_file),
+                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
   out_ = OpenLcm(options.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +

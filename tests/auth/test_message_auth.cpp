@@ -85,6 +85,15 @@ TEST(MessageAuth, UnsignedForeignStaleAndFutureMessagesAreRefusedWithTheirReason
   EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow - 29000000)), "");
 }
 
+// A receiver that starts afresh knows no nonce: what was signed before its
+// start is refused, so a message an earlier run obeyed cannot be replayed.
+TEST(MessageAuth, WhatWasSignedBeforeTheReceiverStartedIsRefused) {
+  AuthCheck check(Key(), kNow);
+  EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow - 500000)),
+            "refused: signed 0.5 s before this process started (a replay, or clocks apart)");
+  EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow)), "");
+}
+
 // The nonces of messages older than the window are forgotten; such a
 // message is refused by its age, so a replay never gets through.
 TEST(MessageAuth, AReplayIsRefusedAlsoAfterTheWindow) {

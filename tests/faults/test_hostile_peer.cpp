@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 
 #include "auth/message_auth.h"
 #include "bad_messages.h"
@@ -192,11 +193,13 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
   const std::string dir = TempDir("hostile-keyed-commands");
   const std::string key = WriteKeyFile(dir, "rig.key"), other = WriteKeyFile(dir, "other.key");
   const std::string url = UniqueUdpmUrl(19);
-  Command process({"stereo-cloud", "--key-file", key, "--pcd-dir", dir + "/pcd", "--save-every", "0", "--log-dir",
-                   dir, "--in-url", url, "--out-url", url});
+  const std::vector<std::string> argv = {"stereo-cloud", "--key-file", key,  "--pcd-dir", dir + "/pcd", "--save-every",
+                                         "0",            "--log-dir",  dir,  "--in-url",  url,          "--out-url",
+                                         url};
+  auto process = std::make_unique<Command>(argv);
   BusWatch bus(url, "stereo-cloud");
   bus.Collect(ch::kStereoCommand);
-  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process->Output();
   SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
 
   std::string error = SendAndCount(bus, ch::kStereoCommand,
@@ -223,10 +226,20 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
   error = SendAndCount(bus, ch::kStereoCommand, Encoded(altered));
   EXPECT_NE(error.find("refused: its MAC does not match"), std::string::npos) << error;
 
-  process.Signal(SIGINT);
-  EXPECT_EQ(process.Wait(30).exit_code, 0);
+  process->Signal(SIGINT);
+  EXPECT_EQ(process->Wait(30).exit_code, 0);
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 5);
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+
+  // Restarted, it knows none of the nonces it accepted: what was signed before its start is refused.
+  process = std::make_unique<Command>(argv);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->pid == process->pid(); }));
+  SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
+  error = SendAndCount(bus, ch::kStereoCommand, signed_save);
+  EXPECT_NE(error.find("before this process started"), std::string::npos) << error;
+  process->Signal(SIGINT);
+  EXPECT_EQ(process->Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 1);
   EXPECT_TRUE(fs::is_empty(dir + "/pcd")) << "only the signed save wrote, once";
 }
 
