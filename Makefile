@@ -19,7 +19,8 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libopencv-dev libopencv-contrib-dev opencv-doc \
   libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
-  gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml time
+  gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml time \
+  libsodium-dev
 
 .PHONY: deps build test test-asan fuzz demo spy clean
 

@@ -14,6 +14,7 @@ URL=${DEMO_LCM_URL:-udpm://239.255.76.67:7670?ttl=0&recv_buf_size=16777216}
 BOARD=chessboard:9x6:0.05
 MODELS=(bspline poly6 poly12)
 mkdir -p "$OUT"
+echo "demo: no rig key (--key-file): commands and calibrations on the demo's bus are unauthenticated (README, Security)"
 say() { printf '\n== %s\n' "$*"; }
 file_url() { echo "file://$PWD/$1"; }
 root() { [[ $(id -u) == 0 ]]; }

@@ -9,7 +9,6 @@
 // PNG pairs for stereo-capture --source dir:DIR, and the rig's true
 // calibration.yaml for stereo-match.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -18,17 +17,13 @@
 
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/wall_clock.h"
 #include "sim/sim_source.h"
 #include "sim/truth_calibration.h"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
 namespace {
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
 
 int Prepare(const std::string& sim_config, const std::string& dir) {
   auto source = ws::MakeSimSource(sim_config + "?truth=" + dir + "/truth.yaml", false);
@@ -67,18 +62,18 @@ int main(int argc, char** argv) {
   std::vector<double> latency_ms;
   std::map<std::string, widestereo::process_status_t> status;
   process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
-    if (first_id < 0) first_id = f.frame_id, first_utime = WallMicros();
+    if (first_id < 0) first_id = f.frame_id, first_utime = ws::WallMicros();
     last_id = f.frame_id;
     ++pairs;
   });
   process.Subscribe<widestereo::point_cloud_t>(ws::channel::kStereoCloudFiltered,
                                                [&](const widestereo::point_cloud_t& c) {
-                                                 latency_ms.push_back((WallMicros() - c.utime) * 1e-3);
+                                                 latency_ms.push_back((ws::WallMicros() - c.utime) * 1e-3);
                                                });
   process.Subscribe<widestereo::process_status_t>(
       ws::channel::kProcessStatus, [&](const widestereo::process_status_t& s) { status[s.name] = s; });
   process.Every(200000, [&] {
-    if (first_id >= 0 && WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
+    if (first_id >= 0 && ws::WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
   });
   const int rc = process.Run();
 

@@ -12,6 +12,8 @@
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
 #include "models/model_registry.h"
+#include "runtime/output_folder.h"
+#include "runtime/wall_clock.h"
 
 namespace ws::calib {
 
@@ -21,6 +23,14 @@ namespace {
 std::string ModelFilePath(const std::string& yaml, const std::string& model) {
   const std::filesystem::path path(yaml);
   return (path.parent_path() / (path.stem().string() + "." + model + path.extension().string())).string();
+}
+
+// The folder of an output file (--out, --report), where `save` may write; ""
+// when the option was not given.
+std::string FolderOf(const std::string& file) {
+  if (file.empty()) return "";
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  return parent.empty() ? "." : parent.string();
 }
 
 // --knots' range, for a knots=N command argument.
@@ -96,10 +106,11 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
 // unknown command sent to every process is meant for another one.
 void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
   if (!msg.target.empty() && msg.target != process_.options().name) return;
-  static const std::set<std::string> kKnown = {"solve", "reset", "save"};
+  static const std::set<std::string> kKnown = {"solve", "reset", "restore", "save"};
   if (!kKnown.count(msg.command)) {
     if (msg.target.empty()) return;
-    throw std::invalid_argument("unknown command '" + msg.command + "' (stereo-calibrate knows: solve, reset, save)");
+    throw std::invalid_argument("unknown command '" + msg.command +
+                                "' (stereo-calibrate knows: solve, reset, restore, save)");
   }
   std::vector<std::string> models = options_.models;
   CalibrationOptions calibration = options_.calibration;
@@ -114,9 +125,9 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       else if (key == "knots")
         calibration.knots = KnotCount(value);
       else if (key == "path")
-        yaml = value;
+        yaml = FileInFolder(FolderOf(options_.out_yaml), value);
       else if (key == "report")
-        json = value;
+        json = FileInFolder(FolderOf(options_.report_json), value);
       else
         throw std::invalid_argument("unknown argument");
     } catch (const std::exception& e) {
@@ -125,11 +136,20 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
   }
   if (msg.command == "solve") {
     Solve(models, calibration);
-  } else if (msg.command == "reset") {
-    if (solving_) return process_.ReportError("reset ignored: a solve is running");
-    session_.Reset();
+  } else if (msg.command == "reset" || msg.command == "restore") {
+    if (solving_) throw std::runtime_error(msg.command + " refused: a solve is running");
+    const int views = session_.views();
+    if (msg.command == "reset") {
+      const std::string archive = session_.Reset(WallMicros());
+      process_.log().Info(archive.empty() ? "reset: no view to archive"
+                                          : "reset: " + std::to_string(views) + " views archived in " + archive +
+                                                " ('restore' brings them back)");
+    } else {
+      const std::string archive = session_.RestoreLastArchive(WallMicros());
+      process_.log().Info("restore: " + std::to_string(session_.views()) + " views back from " + archive +
+                          (views ? ", the " + std::to_string(views) + " before it archived" : ""));
+    }
     SetState("collecting", -1);
-    process_.log().Info("reset: every view forgotten");
   } else {  // save
     ModelCalibrations last;
     {
@@ -207,6 +227,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   for (const auto& m : models) names += (names.empty() ? "" : ", ") + m;
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
+  double rms = -1;
   try {
     const ModelCalibrations results = CalibrateStereoAllModels(data, options, models);
     const StereoCalibration& primary = results.solved.front();
@@ -249,14 +270,15 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
         process_.ReportError(std::string("figures: ") + e.what());
       }
     }
-    SetState("solved", primary.rms_px);
+    rms = primary.rms_px;
     ok = true;
   } catch (const std::exception& e) {
     process_.ReportError(std::string("solve failed: ") + e.what());
-    SetState("failed", -1);
   }
-  PublishStatus();
+  // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;
+  SetState(ok ? "solved" : "failed", rms);
+  PublishStatus();
   return ok;
 }
 

@@ -4,8 +4,12 @@
 //    duplicate of one it has (CalibrationSession), kept in the state file.
 //  - STEREO_COMMAND (target "" or "stereo-calibrate"):
 //      "solve" [model=bspline|poly6|poly12|all] [knots=N]: solve the views so far
-//      "reset"  forget every view (and empty the state file)
-//      "save"   [path=FILE.yaml] [report=FILE.json]: write the last solution again
+//              (a solve never changes the views)
+//      "reset"  archive every view and start with none (CalibrationSession)
+//      "restore" bring the views of the newest archive back
+//      "save"   [path=NAME.yaml] [report=NAME.json]: write the last solution
+//              again, to --out and --report or to those names in their folders
+//              (plain file names only: runtime/output_folder.h)
 //  - CALIBRATION_STATUS every second of the process clock (the message clock
 //    when replaying a log): state (collecting, solving, solved, failed),
 //    views per camera, coverage grids, RMS of the last solve (-1: none) and

@@ -1,7 +1,9 @@
 #include "calib/calibration_session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <lcm/lcm-cpp.hpp>
 #include <stdexcept>
@@ -11,6 +13,28 @@
 #include "lcm_io/lcm_log.h"
 
 namespace ws::calib {
+namespace {
+
+namespace fs = std::filesystem;
+
+// "20261201T195600.123456Z": the UTC time of `wall_us`, sorting as it runs.
+std::string ArchiveTime(int64_t wall_us) {
+  const std::time_t seconds = std::time_t(wall_us / 1000000);
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  char text[32];
+  const size_t n = std::strftime(text, sizeof text, "%Y%m%dT%H%M%S", &utc);
+  std::snprintf(text + n, sizeof text - n, ".%06lldZ", (long long)(wall_us % 1000000));
+  return text;
+}
+constexpr size_t kArchiveTimeChars = 23;
+
+// views.lcmlog -> views-<time>.lcmlog, beside it.
+fs::path ArchivePath(const fs::path& state, int64_t wall_us) {
+  return state.parent_path() / (state.stem().string() + "-" + ArchiveTime(wall_us) + state.extension().string());
+}
+
+}  // namespace
 
 CalibrationSession::CalibrationSession(SessionOptions options)
     : options_(std::move(options)),
@@ -22,22 +46,27 @@ CalibrationSession::~CalibrationSession() = default;
 int CalibrationSession::Restore() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (options_.state_path.empty()) return 0;
-  const std::string& path = options_.state_path;
-  int restored = 0;
-  if (std::filesystem::exists(path)) {
-    const LcmLogScan scan = ScanLcmLog(path);
-    if (!scan.complete()) std::filesystem::resize_file(path, scan.valid_bytes);
-    lcm::LogFile log(path, "r");
-    if (!log.good()) throw std::runtime_error("cannot read the state file " + path);
-    while (const lcm::LogEvent* event = log.readNextEvent()) {
-      ++state_events_;
-      if (event->channel != channel::kStereoCorners) continue;
-      widestereo::stereo_corners_t msg;
-      if (msg.decode(event->data, 0, event->datalen) != event->datalen) continue;
-      if (AddLocked(msg, nullptr, false) == Outcome::kAccepted) ++restored;
-    }
-  }
+  const int restored = ReadStateLocked();
   OpenStateForAppend();
+  return restored;
+}
+
+int CalibrationSession::ReadStateLocked() {
+  const std::string& path = options_.state_path;
+  state_events_ = 0;
+  if (!fs::exists(path)) return 0;
+  const LcmLogScan scan = ScanLcmLog(path);
+  if (!scan.complete()) fs::resize_file(path, scan.valid_bytes);
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw std::runtime_error("cannot read the state file " + path);
+  int restored = 0;
+  while (const lcm::LogEvent* event = log.readNextEvent()) {
+    ++state_events_;
+    if (event->channel != channel::kStereoCorners) continue;
+    widestereo::stereo_corners_t msg;
+    if (msg.decode(event->data, 0, event->datalen) != event->datalen) continue;
+    if (AddLocked(msg, nullptr, false) == Outcome::kAccepted) ++restored;
+  }
   return restored;
 }
 
@@ -96,6 +125,7 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
     }
   }
   data_ = std::move(probe);
+  accepted_.push_back(msg);
   left_grid_.Add(left, data_.left.image_width, data_.left.image_height);
   right_grid_.Add(right, data_.right.image_width, data_.right.image_height);
   if (save && state_) {
@@ -114,19 +144,77 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
   return Outcome::kAccepted;
 }
 
-void CalibrationSession::Reset() {
+std::string CalibrationSession::Reset(int64_t wall_us) {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (accepted_.empty()) return "";
+  std::string where = "memory";
+  if (options_.state_path.empty()) {
+    memory_archives_.push_back(accepted_);
+  } else {
+    where = ArchiveStateLocked(wall_us);
+    OpenStateForAppend();
+  }
+  ClearLocked();
+  return where;
+}
+
+std::string CalibrationSession::RestoreLastArchive(int64_t wall_us) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (options_.state_path.empty()) {
+    if (memory_archives_.empty()) throw std::runtime_error("no archived views to restore (no reset yet)");
+    const std::vector<widestereo::stereo_corners_t> views = std::move(memory_archives_.back());
+    memory_archives_.pop_back();
+    if (!accepted_.empty()) memory_archives_.push_back(accepted_);
+    ClearLocked();
+    for (const auto& msg : views) AddLocked(msg, nullptr, false);
+    return "memory";
+  }
+  const std::vector<std::string> archives = ArchiveFiles();
+  if (archives.empty()) throw std::runtime_error("no archive of " + options_.state_path + " to restore (no reset yet)");
+  if (!accepted_.empty()) {
+    ArchiveStateLocked(wall_us);
+  } else {
+    state_.reset();
+    fs::remove(options_.state_path);
+  }
+  fs::rename(archives.back(), options_.state_path);
+  ClearLocked();
+  ReadStateLocked();
+  OpenStateForAppend();
+  return archives.back();
+}
+
+void CalibrationSession::ClearLocked() {
   data_ = StereoData();
   board_id_.clear();
   left_grid_ = CoverageGrid(options_.grid_rows, options_.grid_cols);
   right_grid_ = CoverageGrid(options_.grid_rows, options_.grid_cols);
   duplicates_ = 0;
-  if (!options_.state_path.empty()) {
-    state_.reset();
-    state_ = std::make_unique<lcm::LogFile>(options_.state_path, "w");
-    state_events_ = 0;
-    if (!state_->good()) state_.reset();
+  accepted_.clear();
+}
+
+std::string CalibrationSession::ArchiveStateLocked(int64_t wall_us) {
+  state_.reset();
+  fs::path archive = ArchivePath(options_.state_path, wall_us);
+  while (fs::exists(archive)) archive = ArchivePath(options_.state_path, ++wall_us);
+  fs::rename(options_.state_path, archive);
+  state_events_ = 0;
+  return archive.string();
+}
+
+std::vector<std::string> CalibrationSession::ArchiveFiles() const {
+  const fs::path state(options_.state_path);
+  const fs::path folder = state.parent_path().empty() ? fs::path(".") : state.parent_path();
+  const std::string prefix = state.stem().string() + "-", suffix = state.extension().string();
+  std::vector<std::string> archives;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() == prefix.size() + kArchiveTimeChars + suffix.size() && name.rfind(prefix, 0) == 0 &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      archives.push_back((state.parent_path() / name).string());
   }
+  std::sort(archives.begin(), archives.end());
+  return archives;
 }
 
 StereoData CalibrationSession::Data() const {

@@ -7,7 +7,12 @@
 // and flushed as each is accepted, and read back when the session starts, so
 // a process killed halfway loses nothing the person holding the board did.
 // A log cut in the middle of an event (a kill during a write) is truncated
-// to its last complete event before appending. "reset" empties it.
+// to its last complete event before appending.
+//
+// Nothing is ever thrown away: Reset() archives the views (the state file is
+// renamed STATE-<UTC time>.lcmlog beside it; without a state file they are
+// kept in memory) and RestoreLastArchive() brings the newest archive back,
+// archiving the views of the moment first if there are any.
 //
 // Thread-safe: the process's solve thread reads Data() while messages come in.
 #pragma once
@@ -16,6 +21,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "calib/calib_data.h"
 #include "calib/coverage.h"
@@ -52,8 +58,14 @@ class CalibrationSession {
   // an accepted view, no board in either camera, or rejected (*why says why:
   // an image size that changed, a board id that changed).
   Outcome Add(const widestereo::stereo_corners_t& msg, std::string* why = nullptr);
-  // Forgets every view (and empties the state file).
-  void Reset();
+  // Archives every view and starts with none; returns where they went (the
+  // archive file, "memory", or "" when there was no view to archive).
+  // `wall_us` (microseconds since the epoch) names the archive file.
+  std::string Reset(int64_t wall_us);
+  // Replaces the views with those of the newest archive (the current ones,
+  // if any, are archived first); returns the archive it read. Throws
+  // std::runtime_error when there is no archive or a file cannot be moved.
+  std::string RestoreLastArchive(int64_t wall_us);
 
   StereoData Data() const;
   int views() const;
@@ -63,7 +75,14 @@ class CalibrationSession {
 
  private:
   Outcome AddLocked(const widestereo::stereo_corners_t& msg, std::string* why, bool save);
+  // Adds the views of the state file (trimmed to its complete events).
+  int ReadStateLocked();
   void OpenStateForAppend();
+  void ClearLocked();
+  // Renames the state file to a new archive; returns the archive's path.
+  std::string ArchiveStateLocked(int64_t wall_us);
+  // The archives of the state file, oldest first.
+  std::vector<std::string> ArchiveFiles() const;
 
   SessionOptions options_;
   mutable std::mutex mutex_;
@@ -73,6 +92,8 @@ class CalibrationSession {
   int duplicates_ = 0;
   std::unique_ptr<lcm::LogFile> state_;
   int64_t state_events_ = 0;
+  std::vector<widestereo::stereo_corners_t> accepted_;  // the views' messages, in order
+  std::vector<std::vector<widestereo::stereo_corners_t>> memory_archives_;  // without a state file
 };
 
 }  // namespace ws::calib

@@ -6,6 +6,7 @@
 
 #include "cloud/pcd_io.h"
 #include "lcm_io/channels.h"
+#include "runtime/output_folder.h"
 
 namespace ws {
 namespace {
@@ -93,16 +94,18 @@ void CloudNode::OnCommand(const widestereo::command_t& command) {
   if (command.command != "save") {
     if (command.target.empty()) return;  // meant for another process
     throw std::invalid_argument("unknown command '" + command.command +
-                                "' (stereo-cloud knows: save [path=FILE.pcd])");
+                                "' (stereo-cloud knows: save [path=NAME.pcd])");
+  }
+  if (save_.pcd_dir.empty()) throw std::runtime_error("save: stereo-cloud was started without --pcd-dir");
+  const std::string name = Argument(command, "path");
+  std::string path;
+  try {
+    if (!name.empty()) path = FileInFolder(save_.pcd_dir, name);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("save: path=" + name + ": " + e.what());
   }
   if (!newest_) throw std::runtime_error("save: no cloud has been filtered yet");
-  std::string path = Argument(command, "path");
-  if (path.empty()) {
-    if (save_.pcd_dir.empty())
-      throw std::runtime_error("save: give path=FILE.pcd or run stereo-cloud with --pcd-dir");
-    path = PeriodicPath(*newest_);
-  }
-  Save(*newest_, path);
+  Save(*newest_, path.empty() ? PeriodicPath(*newest_) : path);
 }
 
 std::string CloudNode::Progress() const {

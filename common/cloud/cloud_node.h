@@ -5,8 +5,9 @@
 //
 // PCD files: with a pcd_dir, every save_every-th filtered cloud goes to
 // <pcd_dir>/cloud_<frame_id>.pcd. A `save` command on STEREO_COMMAND (target
-// "" or "stereo-cloud") writes the newest filtered cloud to its argument
-// path=FILE.pcd, or else into pcd_dir; with neither it is an error. Commands
+// "" or "stereo-cloud") writes the newest filtered cloud into pcd_dir, as
+// cloud_<frame_id>.pcd or as its argument path=NAME.pcd, a plain file name
+// (runtime/output_folder.h); without pcd_dir it is an error. Commands
 // aimed at other processes, or at all processes but not ours ("solve"), are
 // ignored; an unknown command aimed at stereo-cloud is rejected.
 //

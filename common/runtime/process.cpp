@@ -5,13 +5,14 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/wall_clock.h"
 
 namespace ws {
 namespace {
@@ -26,12 +27,6 @@ void InstallSignalHandlers() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-}
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 std::string HostName() {
@@ -60,12 +55,22 @@ Process::Process(const ProcessOptions& options)
   InstallSignalHandlers();
   input_log_ = LcmFileUrlPath(options.in_url);
   file_input_ = message_clock_ = !input_log_.empty();
+  sender_ = options.name + "@" + HostName() + " pid " + std::to_string(getpid());
+  // Live, nothing signed before the start is accepted: an earlier run may have obeyed it.
+  if (!options.key_file.empty())
+    auth_.emplace(auth::RigKey::FromFile(options.key_file),
+                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
   out_ = OpenLcm(options.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
             (options.out_url.empty() ? "LCM default" : options.out_url) +
             (options.config_file.empty() ? "" : ", config " + options.config_file) + ", log " +
             log_.path() + ")");
+  if (auth_)
+    log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
+              "): commands and calibrations are signed, and refused unless signed with it");
+  else
+    log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
 }
 
 Process::~Process() {

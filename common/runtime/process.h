@@ -4,6 +4,11 @@
 // exit at the end of a file:// input log, so every process is also a
 // log-to-log filter.
 //
+// Authentication. With --key-file, every message type that carries an
+// auth_t (commands, calibrations) is signed by Publish and checked by
+// Subscribe (auth/message_auth.h): one that fails is rejected with the reason.
+// Without a key they go unsigned and unchecked, and the log says so at start.
+//
 // Clock. Live, the process clock is the wall clock. With a file:// input it is
 // the utime of the newest input message, so that timers and heartbeats fall at
 // the same places in the output on every replay of the same log.
@@ -15,12 +20,14 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "auth/message_auth.h"
 #include "lcm_io/decode.h"
 #include "runtime/process_cli.h"
 #include "runtime/text_log.h"
@@ -37,8 +44,8 @@ struct ChannelCounters {
 
 class Process {
  public:
-  // Opens the text log and both LCM URLs; throws std::runtime_error with the
-  // reason when one cannot be opened.
+  // Opens the text log, the rig key (if any) and both LCM URLs; throws
+  // std::runtime_error with the reason when one cannot be opened.
   explicit Process(const ProcessOptions& options);
   ~Process();
 
@@ -52,7 +59,8 @@ class Process {
   void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
                  int queue_capacity = 0);
 
-  // Encodes and publishes; thread-safe. A failed publish is counted as dropped.
+  // Encodes and publishes; thread-safe. A failed publish is counted as
+  // dropped. A command or calibration is signed first (with a rig key).
   template <class Msg>
   void Publish(const std::string& channel, const Msg& msg);
 
@@ -100,6 +108,8 @@ class Process {
 
   // The input LCM, opened on first use; null for an empty input log.
   lcm::LCM* Input();
+  template <class Msg>
+  void PublishEncoded(const std::string& channel, const Msg& msg);
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
   void PublishStatus();
   void ShowProgress();
@@ -110,6 +120,8 @@ class Process {
 
   ProcessOptions options_;
   TextLog log_;
+  std::optional<auth::AuthCheck> auth_;  // with --key-file
+  std::string sender_;                   // "stereo-command@robot pid 4242"
   std::unique_ptr<lcm::LCM> in_;
   bool in_opened_ = false;
   std::unique_ptr<lcm::LCM> out_;
@@ -160,6 +172,8 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
         try {
           const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
+          if constexpr (auth::IsAuthenticated<Msg>::value)
+            if (self->auth_) self->auth_->Check(ch, msg, self->Now());
           if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
           ctx->second(msg);
         } catch (const std::exception& e) {
@@ -172,6 +186,20 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
 
 template <class Msg>
 void Process::Publish(const std::string& channel, const Msg& msg) {
+  if constexpr (auth::IsAuthenticated<Msg>::value) {
+    Msg stamped = msg;
+    if (auth_)
+      auth::Sign(auth_->key(), channel, sender_, Now(), stamped);
+    else
+      auth::ClearAuth(stamped);
+    PublishEncoded(channel, stamped);
+  } else {
+    PublishEncoded(channel, msg);
+  }
+}
+
+template <class Msg>
+void Process::PublishEncoded(const std::string& channel, const Msg& msg) {
   std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
   if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0) {
     Counters(channel).dropped++;

@@ -20,6 +20,9 @@ ProcessCli::ProcessCli(std::string name, std::string description)
                   "LCM URL to publish to (default: LCM's default); 'file://LOG?mode=w' writes a log");
   app_.add_option("--log-dir", options_.log_dir, "Folder of the text log <name>.log")
       ->capture_default_str();
+  app_.add_option("--key-file", options_.key_file,
+                  "The rig key (a secret only its owner may read): commands and calibrations are then "
+                  "signed, and refused unless signed with it (README, Security)");
   app_.add_flag("--quiet", options_.quiet, "Only errors on the terminal (the log file gets all)");
 }
 

@@ -1,6 +1,6 @@
 // The command line every widestereo executable shares (DESIGN.md,
 // "Command-line contract"): --help, --config FILE.yaml, --in-url, --out-url,
-// --log-dir, --quiet; each process adds its own options to app().
+// --log-dir, --quiet, --key-file; each process adds its own options to app().
 #pragma once
 
 #include <optional>
@@ -16,6 +16,7 @@ struct ProcessOptions {
   std::string in_url;   // "" = LCM's default (LCM_DEFAULT_URL or udpm multicast)
   std::string out_url;
   std::string log_dir = "logs";
+  std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
   bool quiet = false;
 };
 

@@ -5,16 +5,11 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/wall_clock.h"
 #include "widestereo/stereo_frame_t.hpp"
 
 namespace ws {
 namespace {
-
-int64_t WallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
 
 void MirrorSourceCounters(Process& process, const StereoSource& source) {
   for (const auto& [input, counts] : source.Counters()) {

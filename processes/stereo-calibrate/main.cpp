@@ -60,12 +60,15 @@ int main(int argc, char** argv) {
                "Solve at the end of a file:// input (or at the first solve command) and exit");
   app.add_option("--out", node.out_yaml,
                  "Calibration file to write (YAML, cv::FileStorage) of the first model; with several "
-                 "models also FILE.MODEL.yaml for each (calib.poly6.yaml)");
-  app.add_option("--report", node.report_json, "Report to write (JSON)");
+                 "models also FILE.MODEL.yaml for each (calib.poly6.yaml); a 'save path=NAME' command writes "
+                 "only NAME in its folder");
+  app.add_option("--report", node.report_json,
+                 "Report to write (JSON); a 'save report=NAME' command writes only NAME in its folder");
   app.add_option("--plot-dir", node.plot_dir,
                  "Folder for distortion_curves.png and residual_map.png (needs gnuplot)");
   app.add_option("--state", state,
-                 "File keeping the accepted views across restarts; 'none' for none. Default: "
+                 "File keeping the accepted views across restarts ('reset' archives it beside itself as "
+                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back); 'none' for none. Default: "
                  "LOG_DIR/stereo-calibrate-views.lcmlog live, none when replaying a log");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 

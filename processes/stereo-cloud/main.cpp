@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
                      "Filters the point clouds on STEREO_CLOUD with PCL (depth pass-through, voxel "
                      "grid, statistical outlier removal, RANSAC plane) and publishes "
                      "STEREO_CLOUD_FILTERED and CLOUD_STATS. Writes PCD files every --save-every "
-                     "clouds into --pcd-dir, and on a 'save [path=FILE.pcd]' command on "
+                     "clouds into --pcd-dir, and there on a 'save [path=NAME.pcd]' command on "
                      "STEREO_COMMAND.");
   ws::CloudFilterConfig filter;
   ws::CloudSaveConfig save;

@@ -86,9 +86,46 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
   const StereoData data = session.Data();
   ASSERT_EQ(data.size(), 6);
   EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
-  session.Reset();
-  EXPECT_EQ(session.views(), 0);
-  EXPECT_EQ(CalibrationSession(options).Restore(), 0);
+}
+
+// reset archives the state file under a timestamp (never truncates it) and
+// restore brings the newest archive back, archiving the views of the moment
+// first; without a state file the archives are kept in memory.
+TEST_F(CalibSession, ResetArchivesTheViewsAndRestoreBringsThemBack) {
+  const std::string dir = ws::test::TempDir("calib-session-archive");
+  for (const std::string& state : {dir + "/views.lcmlog", std::string()}) {
+    SCOPED_TRACE(state.empty() ? "no state file" : state);
+    SessionOptions options;
+    options.state_path = state;
+    CalibrationSession session(options);
+    session.Restore();
+    EXPECT_THROW(session.RestoreLastArchive(1), std::runtime_error);  // nothing archived yet
+    for (int v = 0; v < 5; ++v) session.Add(Message(rig, v, board));
+    const std::string kept = ws::test::ReadFileText(state);
+    const StereoData before = session.Data();
+
+    const std::string archive = session.Reset(1764619200123456);  // 2025-12-01 20:00:00.123456 UTC
+    EXPECT_EQ(session.views(), 0);
+    if (!state.empty()) {
+      EXPECT_EQ(archive, dir + "/views-20251201T200000.123456Z.lcmlog");
+      EXPECT_EQ(ws::test::ReadFileText(archive), kept);
+      EXPECT_EQ(CalibrationSession(options).Restore(), 0);  // the state file starts empty
+    }
+    EXPECT_EQ(session.Reset(1764619201000000), "");  // no view: nothing archived
+
+    session.Add(Message(rig, 7, board));
+    EXPECT_EQ(session.RestoreLastArchive(1764619202000000), state.empty() ? "memory" : archive);
+    const StereoData after = session.Data();
+    ASSERT_EQ(after.size(), 5);
+    for (int v = 0; v < 5; ++v) EXPECT_EQ(after.left.views[v].image, before.left.views[v].image);
+    if (!state.empty()) {
+      EXPECT_EQ(ws::test::ReadFileText(state), kept);
+      EXPECT_EQ(CalibrationSession(options).Restore(), 5);
+    }
+    // The one view collected after the reset was archived, not lost.
+    session.RestoreLastArchive(1764619203000000);
+    EXPECT_EQ(session.views(), 1);
+  }
 }
 
 }  // namespace

@@ -135,7 +135,7 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   ASSERT_TRUE(bus.Until(10, [&] { return bus.pid != 0 && !bus.statuses.empty(); }));
   EXPECT_EQ(bus.statuses.front().views_left, views);
 
-  widestereo::command_t solve;
+  widestereo::command_t solve{};
   solve.utime = 0;
   solve.command = "solve";
   solve.target = "";

@@ -41,12 +41,12 @@ CommandResult RunStereoCloud(const std::string& dir, const std::vector<LogEvent>
 
 TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
   const std::string dir = TempDir("cloud-wall");
-  const std::string saved = dir + "/asked.pcd";
+  const std::string saved = dir + "/pcd/asked.pcd";
   const auto wall = ws::testing::NoisyWallScene();
   const auto r = RunStereoCloud(
       dir,
       {Event(ws::channel::kStereoCloud, Framed(wall, 1)),
-       Event(ws::channel::kStereoCommand, CommandMessage("save", "", {"path=" + saved}, 1500000)),
+       Event(ws::channel::kStereoCommand, CommandMessage("save", "", {"path=asked.pcd"}, 1500000)),
        Event(ws::channel::kStereoCloud, Framed(wall, 2)),
        Event(ws::channel::kStereoCloud, Framed(wall, 3)),
        Event(ws::channel::kStereoCloud, Framed(wall, 4))},
@@ -81,7 +81,7 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
   for (const auto& entry : std::filesystem::directory_iterator(dir + "/pcd"))
     files.push_back(entry.path().filename().string());
   std::sort(files.begin(), files.end());
-  EXPECT_EQ(files, (std::vector<std::string>{"cloud_000002.pcd", "cloud_000004.pcd"}));
+  EXPECT_EQ(files, (std::vector<std::string>{"asked.pcd", "cloud_000002.pcd", "cloud_000004.pcd"}));
   EXPECT_EQ(ws::ReadPcd(dir + "/pcd/cloud_000004.pcd").npoints, clouds[3].npoints);
 
   // A line per cloud in the log file, with its plane.
@@ -147,37 +147,49 @@ TEST(StereoCloudProcess, BadCloudsGiveEmptyResultsCountedWithoutStalling) {
             std::string::npos);
 }
 
-// `save` with nowhere to write, before any cloud, or an unknown command for
-// stereo-cloud are rejected and counted; commands for others are ignored.
+// `save` before any cloud, to a path outside --pcd-dir or without one, or an
+// unknown command for stereo-cloud are rejected and counted; commands for
+// others are ignored.
 TEST(StereoCloudProcess, CommandsAreCheckedAndCounted) {
   const std::string dir = TempDir("cloud-commands");
   // A second apart, so that a PROCESS_STATUS with its last_error follows each.
   const auto cloud = Framed(MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}), 2);
-  const auto r = RunStereoCloud(
-      dir, {Event(ws::channel::kStereoCommand, CommandMessage("save", "", {}, 1000000)),  // no cloud yet
-            Event(ws::channel::kStereoCloud, cloud),
-            Event(ws::channel::kStereoCommand, CommandMessage("save", "", {}, 3000000)),  // nowhere
-            Event(ws::channel::kStereoCommand, CommandMessage("flush", "stereo-cloud", {}, 4000000)),
-            Event(ws::channel::kStereoCommand, CommandMessage("solve", "", {}, 5000000)),
-            Event(ws::channel::kStereoCommand,
-                  CommandMessage("save", "stereo-calibrate", {"path=" + dir + "/no.pcd"}, 6000000)),
-            Event(ws::channel::kStereoCommand,
-                  CommandMessage("save", "stereo-cloud", {"path=" + dir + "/yes.pcd"}, 7000000))});
+  const std::vector<LogEvent> input = {
+      Event(ws::channel::kStereoCommand, CommandMessage("save", "", {}, 1000000)),  // no cloud yet
+      Event(ws::channel::kStereoCloud, cloud),
+      Event(ws::channel::kStereoCommand, CommandMessage("save", "", {"path=../no.pcd"}, 3000000)),
+      Event(ws::channel::kStereoCommand, CommandMessage("flush", "stereo-cloud", {}, 4000000)),
+      Event(ws::channel::kStereoCommand, CommandMessage("solve", "", {}, 5000000)),
+      Event(ws::channel::kStereoCommand, CommandMessage("save", "stereo-calibrate", {"path=no.pcd"}, 6000000)),
+      Event(ws::channel::kStereoCommand, CommandMessage("save", "stereo-cloud", {"path=yes.pcd"}, 7000000))};
+  auto errors = [&] {
+    std::set<std::string> errors;
+    for (const auto& status : Messages<widestereo::process_status_t>(ReadLog(dir + "/out.lcmlog"),
+                                                                    ws::channel::kProcessStatus))
+      errors.insert(status.last_error);
+    return errors;
+  };
+  auto r = RunStereoCloud(dir, input, {"--pcd-dir", dir + "/pcd", "--save-every", "0"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::set<std::string> errors;
-  for (const auto& status : Messages<widestereo::process_status_t>(ReadLog(dir + "/out.lcmlog"),
-                                                                  ws::channel::kProcessStatus))
-    errors.insert(status.last_error);
-  EXPECT_EQ(errors, (std::set<std::string>{
-                        "STEREO_COMMAND: save: no cloud has been filtered yet",
-                        "STEREO_COMMAND: save: give path=FILE.pcd or run stereo-cloud with --pcd-dir",
-                        "STEREO_COMMAND: unknown command 'flush' (stereo-cloud knows: save "
-                        "[path=FILE.pcd])"}));
+  EXPECT_EQ(errors(), (std::set<std::string>{
+                          "STEREO_COMMAND: save: no cloud has been filtered yet",
+                          "STEREO_COMMAND: save: path=../no.pcd: '../no.pcd' is not a plain file name (no '/', "
+                          "no '..'); files go only into " + dir + "/pcd",
+                          "STEREO_COMMAND: unknown command 'flush' (stereo-cloud knows: save "
+                          "[path=NAME.pcd])"}));
   EXPECT_FALSE(std::filesystem::exists(dir + "/no.pcd"));
-  EXPECT_EQ(ws::ReadPcd(dir + "/yes.pcd").npoints, 3);
-  const auto c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCommand);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/pcd/no.pcd"));
+  EXPECT_EQ(ws::ReadPcd(dir + "/pcd/yes.pcd").npoints, 3);
+  auto c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCommand);
   EXPECT_EQ(c.received, 6);
   EXPECT_EQ(c.rejected, 3);
+
+  // Without --pcd-dir a save has nowhere to write.
+  r = RunStereoCloud(dir, {input[1], input.back()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(errors(), (std::set<std::string>{"", "STEREO_COMMAND: save: stereo-cloud was started without --pcd-dir"}));
+  c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCommand);
+  EXPECT_EQ(c.rejected, 1);
 }
 
 TEST(StereoCloudProcess, BadSettingsAreRefusedWithTheirReason) {

@@ -19,6 +19,13 @@ std::vector<std::vector<uint8_t>> CleanRun(const std::string& dir, const std::ve
   return payloads;
 }
 
+std::vector<std::string> BadPeer::KeyArgs(const std::string& dir) {
+  if (!keyed()) return {};
+  const std::string file = WriteKeyFile(dir, "rig.key");
+  key_ = ws::auth::RigKey::FromFile(file);
+  return {"--key-file", file};
+}
+
 void Flood(BusWatch& bus, const std::vector<BadChannel*>& channels) {
   for (int i = 0; i < kBadPerGoodFrame; ++i)
     for (BadChannel* c : channels) {
@@ -37,5 +44,8 @@ void ExpectRejectedAllBad(const BusWatch& bus, const BadChannel& bad, int good) 
   EXPECT_GE(c.rejected, bad.sent / 2) << bad.channel;
   EXPECT_LE(c.rejected, bad.sent) << bad.channel;
 }
+
+INSTANTIATE_TEST_SUITE_P(RigKey, BadPeer, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Keyed" : "Keyless"; });
 
 }  // namespace ws::test

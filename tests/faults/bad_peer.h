@@ -3,8 +3,14 @@
 // the process's counters; and the clean run its output is compared with.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "auth/message_auth.h"
+#include "runtime/wall_clock.h"
 
 #include "bad_messages.h"
 #include "bus_watch.h"
@@ -28,6 +34,24 @@ struct BadChannel {
 
 // Sends kBadPerGoodFrame bad messages on each channel, interleaved and paced.
 void Flood(BusWatch& bus, const std::vector<BadChannel*>& channels);
+
+// The bad-peer tests run without a rig key and with one: then the process
+// gets --key-file and the test signs the good commands and calibrations.
+class BadPeer : public ::testing::TestWithParam<bool> {
+ protected:
+  bool keyed() const { return GetParam(); }
+  // The key's arguments for the process (none without a key); makes the key in `dir`.
+  std::vector<std::string> KeyArgs(const std::string& dir);
+  // msg as the test sends it on `channel`: signed when there is a key.
+  template <class Msg>
+  Msg AsSent(const std::string& channel, Msg msg) const {
+    if (key_) ws::auth::Sign(*key_, channel, "bad-peer test", ws::WallMicros(), msg);
+    return msg;
+  }
+
+ private:
+  std::optional<ws::auth::RigKey> key_;
+};
 
 // Every message the process received on the channel was one of the `good`
 // ones or is counted as rejected; most of what was sent arrived (udpm on one

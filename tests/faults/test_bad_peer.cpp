@@ -2,7 +2,7 @@
 // wrong-type, invalid and oversized messages while good frames flow, over real udpm:
 // the process keeps running, counts every bad message it receives as rejected
 // in PROCESS_STATUS, and its output for the good frames is byte for byte what
-// a clean replay of the same frames gives.
+// a clean replay of the same frames gives; with a rig key and without.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -40,7 +40,7 @@ stereo_frame_t TooLargeFrame(stereo_frame_t frame) {
   return frame;
 }
 
-TEST(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
+TEST_P(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
   const std::string dir = TempDir("faults-detect");
   std::vector<stereo_frame_t> frames;
   std::vector<LogEvent> clean_in;
@@ -59,6 +59,7 @@ TEST(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
   const std::string url = UniqueUdpmUrl(11) + "&recv_buf_size=8388608";
   std::vector<std::string> argv = detect;
   argv.insert(argv.end(), {"--log-dir", dir, "--in-url", url, "--out-url", url});
+  for (const std::string& arg : KeyArgs(dir)) argv.push_back(arg);
   Command process(argv);
   BusWatch bus(url, "stereo-detect");
   bus.Collect(ch::kStereoCorners);
@@ -84,7 +85,7 @@ TEST(BadPeer, StereoDetectRejectsItAllAndFindsTheSameCorners) {
   ExpectRejectedAllBad(bus, bad, good);
 }
 
-TEST(BadPeer, StereoMatchRejectsItAllAndMatchesTheSame) {
+TEST_P(BadPeer, StereoMatchRejectsItAllAndMatchesTheSame) {
   const std::string dir = TempDir("faults-match");
   const auto image = [](const char* name) {
     cv::Mat gray = cv::imread(std::string(kOpenCvDataDir) + "/" + name, cv::IMREAD_GRAYSCALE);
@@ -112,6 +113,7 @@ TEST(BadPeer, StereoMatchRejectsItAllAndMatchesTheSame) {
   const std::string url = UniqueUdpmUrl(12) + "&recv_buf_size=8388608";
   std::vector<std::string> argv = match;
   argv.insert(argv.end(), {"--log-dir", dir, "--in-url", url, "--out-url", url});
+  for (const std::string& arg : KeyArgs(dir)) argv.push_back(arg);
   Command process(argv);
   BusWatch bus(url, "stereo-match");
   bus.Collect(ch::kStereoDisparity);
@@ -126,7 +128,7 @@ TEST(BadPeer, StereoMatchRejectsItAllAndMatchesTheSame) {
                                                        Encoded(TooLargeFrame(frames[0])), 9)};
   const std::vector<BadChannel*> both = {&bad_calibrations, &bad_frames};
   Flood(bus, both);
-  bus.Publish(ch::kStereoCalibration, calibration);
+  bus.Publish(ch::kStereoCalibration, AsSent(ch::kStereoCalibration, calibration));
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->state == "matching"; }))
       << process.Output();
   for (const auto& frame : frames) {

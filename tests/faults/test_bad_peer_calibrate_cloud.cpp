@@ -2,7 +2,7 @@
 // channel each reads, STEREO_COMMAND included, is flooded while the good
 // messages flow over udpm. Each keeps running, counts every bad message as
 // rejected, and gives what a clean replay of the good messages gives: the
-// same calibration file, the same filtered clouds.
+// same calibration file, the same filtered clouds; with a rig key and without.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -20,7 +20,7 @@ namespace {
 using namespace ws::test;
 namespace ch = ws::channel;
 
-TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
+TEST_P(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   const std::string dir = TempDir("faults-calibrate");
   std::vector<LogEvent> corners;
   for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog"))
@@ -31,8 +31,10 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   ASSERT_TRUE(std::filesystem::exists(clean_file));
 
   const std::string url = UniqueUdpmUrl(14) + "&recv_buf_size=8388608";
-  Command process({"stereo-calibrate", "--out", live_file, "--state", "none", "--log-dir", dir, "--in-url", url,
-                   "--out-url", url});
+  std::vector<std::string> argv = {"stereo-calibrate", "--out", live_file, "--state", "none", "--log-dir", dir,
+                                   "--in-url", url, "--out-url", url};
+  for (const std::string& arg : KeyArgs(dir)) argv.push_back(arg);
+  Command process(argv);
   BusWatch bus(url, "stereo-calibrate");
   bus.Collect(ch::kStereoCalibration);
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
@@ -62,7 +64,7 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
     const auto k = bus.Counters(ch::kStereoCommand);
     return c.received > 0 && c.received == good_corners + c.rejected && k.received > 0 && k.received == k.rejected;
   });
-  bus.Publish(ch::kStereoCommand, CommandMessage("solve", "stereo-calibrate"));
+  bus.Publish(ch::kStereoCommand, AsSent(ch::kStereoCommand, CommandMessage("solve", "stereo-calibrate")));
   const bool solved = bus.ListenUntil(120, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); });
   const bool settled = bus.ListenUntil(10, [&] {  // a PROCESS_STATUS that counts the solve command
     const auto k = bus.Counters(ch::kStereoCommand);
@@ -79,7 +81,7 @@ TEST(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   ExpectRejectedAllBad(bus, bad_commands, 1);
 }
 
-TEST(BadPeer, StereoCloudRejectsItAllAndFiltersTheSame) {
+TEST_P(BadPeer, StereoCloudRejectsItAllAndFiltersTheSame) {
   const std::string dir = TempDir("faults-cloud");
   std::vector<widestereo::point_cloud_t> clouds;
   std::vector<LogEvent> clean_in;
@@ -96,7 +98,9 @@ TEST(BadPeer, StereoCloudRejectsItAllAndFiltersTheSame) {
   ASSERT_EQ(clean.size(), clouds.size());
 
   const std::string url = UniqueUdpmUrl(15) + "&recv_buf_size=8388608";
-  Command process({"stereo-cloud", "--log-dir", dir, "--in-url", url, "--out-url", url});
+  std::vector<std::string> argv = {"stereo-cloud", "--log-dir", dir, "--in-url", url, "--out-url", url};
+  for (const std::string& arg : KeyArgs(dir)) argv.push_back(arg);
+  Command process(argv);
   BusWatch bus(url, "stereo-cloud");
   bus.Collect(ch::kStereoCloudFiltered);
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();

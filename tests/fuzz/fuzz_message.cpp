@@ -7,9 +7,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "auth/message_auth.h"
 #include "calib/calibration_session.h"
 #include "cloud/cloud_filter.h"
 #include "fuzz_support.h"
+#include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "monitor/status_board.h"
 #include "rectify/stereo_rig.h"
@@ -54,7 +56,29 @@ void Use(const camera_calibration_t& calibration) {
   }
 }
 
+// A receiver with a rig key checks every command and calibration (the MAC
+// over the message re-encoded, the key, the time, the nonce); the same
+// message signed anew with the key passes that check.
+template <class Msg>
+void Authenticate(const Msg& msg, const char* channel) {
+  ws::auth::AuthCheck check(FuzzKey());
+  try {
+    check.Check(channel, msg, msg.auth.utime);
+  } catch (const ws::auth::AuthError&) {
+  }
+  Msg resigned = msg;
+  ws::auth::Sign(FuzzKey(), channel, msg.auth.sender, msg.auth.utime, resigned);
+  try {
+    check.Check(channel, resigned, msg.auth.utime);
+  } catch (const ws::auth::AuthError& e) {
+    Violated(std::string("a message signed with the key is refused: ") + e.what());
+  }
+}
+
+void Use(const command_t& command) { Authenticate(command, ws::channel::kStereoCommand); }
+
 void Use(const stereo_calibration_t& calibration) {
+  Authenticate(calibration, ws::channel::kStereoCalibration);
   Use(calibration.left);
   Use(calibration.right);
   ws::StereoRigFromMessage(calibration);
@@ -86,7 +110,7 @@ void Use(const stereo_corners_t& corners) {
   if (session.views() > 1) Violated("the same view was accepted twice");
 }
 
-// Single-camera corners, commands and cloud statistics are used as decoded.
+// Single-camera corners and cloud statistics are used as decoded.
 template <class Msg>
 void Use(const Msg&) {}
 

@@ -17,7 +17,9 @@
 #include <pcl/point_types.h>
 
 #include "cloud/pcd_io.h"
+#include "auth/message_auth.h"
 #include "detect/stereo_corner_finder.h"
+#include "fuzz_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "rectify/stereo_rig.h"
@@ -169,6 +171,8 @@ void CalibrationSeeds(Seeds& seeds) {
   poly6.left.param_names = {"fx", "fy"};
   poly6.left.stddev = {0.1, 0.1};
   seeds.Message("poly6", poly6);
+  ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoCalibration, "stereo-calibrate@robot pid 42", 1000000, poly6);
+  seeds.Message("signed-poly6", poly6);
   seeds.Message("bspline", ws::MessageFromCameraModel(sim.left, "left"));
   seeds.Message("poly6", poly6.left);
 }
@@ -203,9 +207,11 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   command_t command{};
   command.command = "solve";
   command.target = "stereo-calibrate";
-  command.args = {"model=bspline", "path=/tmp/x.yaml"};
+  command.args = {"model=bspline", "path=calib2.yaml"};
   command.nargs = 2;
   seeds.Message("solve", command);
+  ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoCommand, "stereo-command@robot pid 42", 1000000, command);
+  seeds.Message("signed-solve", command);
   cloud_stats_t stats{};
   stats.plane_found = true;
   stats.plane_normal[2] = -1;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "auth/rig_key.h"
 #include "lcm_io/decode.h"
 
 namespace ws::fuzz {
@@ -52,6 +53,13 @@ std::optional<Msg> DecodeAccepted(const uint8_t* data, size_t size) {
              e.what());
   }
   return msg;
+}
+
+// The rig key of the seeds and the corpus (public, never a rig's): the
+// commands and calibrations signed with it pass the MAC check.
+inline const auth::RigKey& FuzzKey() {
+  static const auth::RigKey key = auth::RigKey::FromSecret("widestereo fuzz corpus key: public, never a rig's");
+  return key;
 }
 
 // The input as a file, for readers that take a path. One file per process,

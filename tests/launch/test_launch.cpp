@@ -2,12 +2,15 @@
 // dies is restarted without a gap in the other channels, and Ctrl-C leaves a
 // complete log that replays.
 #include <signal.h>
+#include <sys/stat.h>
 
 #include <algorithm>
+#include <fstream>
 #include <thread>
 
 #include <gtest/gtest.h>
 
+#include "auth/rig_key.h"
 #include "launch_fixture.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
@@ -74,6 +77,36 @@ TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
                                             120);
   ASSERT_EQ(detected.exit_code, 0) << detected.output;
   EXPECT_EQ(FrameIds<widestereo::stereo_corners_t>(ReadLog(replay), ws::channel::kStereoCorners), images);
+}
+
+// A launch file's key_file reaches every process as --key-file; a key that
+// others may read stops the process at its start, saying why.
+TEST(Launch, GivesEveryProcessTheKeyFile) {
+  const std::string dir = TempDir("launch_key");
+  const std::string key = WriteKeyFile(dir, "rig.key");
+  const std::string launch_file = dir + "/keyed.yaml";
+  std::ofstream(launch_file) << "description: one signed command\nkey_file: " << key
+                             << "\nrecord: false\nprocesses:\n  - name: stereo-command\n    args: [solve]\n"
+                                "    restarts: 0\n";
+  auto launch = [&](const std::string& run_dir) {
+    const CommandResult r = RunCommand(
+        {SourceDir() + "/scripts/launch", launch_file, "--lcm-url", UniqueUdpmUrl(2), "--run-dir", run_dir}, 60);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return LaunchLog(run_dir);
+  };
+  std::string record = launch(dir + "/keyed");
+  EXPECT_NE(record.find("rig key " + key + ": commands and calibrations are signed and checked"), std::string::npos)
+      << record;
+  EXPECT_NE(record.find(" --key-file " + key), std::string::npos) << record;
+  EXPECT_NE(record.find("stereo-command finished (code 0)"), std::string::npos) << record;
+  EXPECT_NE(ReadFileText(dir + "/keyed/stereo-command.log").find("rig key " + ws::auth::RigKey::FromFile(key).IdText()),
+            std::string::npos);
+
+  chmod(key.c_str(), 0644);
+  record = launch(dir + "/shared");
+  EXPECT_NE(record.find("stereo-command died (code 1)"), std::string::npos) << record;
+  EXPECT_NE(ReadFileText(dir + "/shared/stereo-command.out").find("mode 0644 lets others read or change it"),
+            std::string::npos);
 }
 
 }  // namespace

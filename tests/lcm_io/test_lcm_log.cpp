@@ -10,7 +10,7 @@
 namespace {
 
 widestereo::command_t Command(const std::string& what) {
-  widestereo::command_t c;
+  widestereo::command_t c{};
   c.command = what;
   c.nargs = 0;
   return c;

@@ -85,7 +85,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   corners.right = Corners();
   ExpectRoundTrip(corners);
 
-  stereo_calibration_t calib;
+  stereo_calibration_t calib{};
   calib.utime = 3;
   calib.left = Calibration("left");
   calib.right = Calibration("right");
@@ -146,7 +146,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   ps.channels[0].dropped = 1;
   ExpectRoundTrip(ps);
 
-  command_t command;
+  command_t command{};
   command.utime = 9;
   command.command = "solve";
   command.nargs = 1;
@@ -214,7 +214,7 @@ TEST(Messages, CompressedPayloadMustDecodeToTheAnnouncedSize) {
 }
 
 TEST(Messages, WrongTypeTruncatedAndTrailingBytesAreRejected) {
-  command_t command;
+  command_t command{};
   command.command = "solve";
   command.nargs = 0;
   auto bytes = Encode(command);
@@ -242,7 +242,7 @@ TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
 // bytes; a NUL inside a string made the message re-encode shorter than it
 // said, and INT32_MIN overflowed. A string is its bytes and one NUL.
 TEST(Messages, StringsAreTheirBytesAndOneNul) {
-  command_t command;
+  command_t command{};
   command.command = "solve";
   command.nargs = 0;
   const auto bytes = Encode(command);
@@ -313,7 +313,7 @@ TEST(Messages, CalibrationsLargerThanAnyImageOrWithoutARotationAreRejected) {
     EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
   }
 
-  stereo_calibration_t stereo;
+  stereo_calibration_t stereo{};
   stereo.left = stereo.right = Calibration("left");
   const double turn[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};  // 90 degrees about z
   std::copy(turn, turn + 9, stereo.R);

@@ -2,12 +2,14 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -117,6 +119,16 @@ widestereo::command_t CommandMessage(const std::string& command, const std::stri
   msg.nargs = int32_t(args.size());
   msg.args = std::move(args);
   return msg;
+}
+
+std::string WriteKeyFile(const std::string& dir, const std::string& name, unsigned mode) {
+  const std::string path = dir + "/" + name;
+  std::random_device random;
+  std::string secret(32, '\0');
+  for (char& c : secret) c = char(random());
+  std::ofstream(path, std::ios::binary) << secret;
+  chmod(path.c_str(), mode);
+  return path;
 }
 
 long ResidentKb(int pid, const std::string& field) {

@@ -64,6 +64,10 @@ std::string ReadFileText(const std::string& path);
 widestereo::command_t CommandMessage(const std::string& command, const std::string& target = "",
                                      std::vector<std::string> args = {}, int64_t utime = 0);
 
+// A rig key file `dir`/`name` of 32 random bytes with file mode `mode`
+// (0600: readable by its owner only, as --key-file requires).
+std::string WriteKeyFile(const std::string& dir, const std::string& name, unsigned mode = 0600);
+
 // Kilobytes of resident memory of process `pid`: now (VmRSS) or at its peak
 // (VmHWM); a test failure, and 0, when /proc does not say.
 long ResidentKb(int pid, const std::string& field);

@@ -1,0 +1,62 @@
+#include "auth/message_auth.h"
+
+#include <sodium.h>
+
+#include <cstdio>
+
+namespace ws::auth {
+namespace {
+
+std::string Seconds(int64_t us) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", double(us) * 1e-6);
+  return text;
+}
+
+}  // namespace
+
+std::array<uint8_t, 32> Mac(const RigKey& key, const std::string& channel, const std::vector<uint8_t>& encoded) {
+  static_assert(crypto_auth_hmacsha512256_BYTES == 32 && crypto_auth_hmacsha512256_KEYBYTES == 32);
+  crypto_auth_hmacsha512256_state state;
+  crypto_auth_hmacsha512256_init(&state, key.mac_key().data(), key.mac_key().size());
+  crypto_auth_hmacsha512256_update(&state, reinterpret_cast<const uint8_t*>(channel.c_str()), channel.size() + 1);
+  crypto_auth_hmacsha512256_update(&state, encoded.data(), encoded.size());
+  std::array<uint8_t, 32> mac;
+  crypto_auth_hmacsha512256_final(&state, mac.data());
+  return mac;
+}
+
+int64_t RandomNonce() {
+  int64_t nonce;
+  randombytes_buf(&nonce, sizeof nonce);
+  return nonce;
+}
+
+void AuthCheck::CheckSigned(const std::string& channel, const widestereo::auth_t& auth,
+                            const std::vector<uint8_t>& mac_input, int64_t now_us) {
+  if (auth.key_id != key_.id())
+    throw AuthError("refused: signed with another rig key (key id " + KeyIdText(auth.key_id) + ", this rig's is " +
+                    key_.IdText() + ")");
+  const std::array<uint8_t, 32> mac = Mac(key_, channel, mac_input);
+  if (crypto_verify_32(mac.data(), auth.mac) != 0)
+    throw AuthError("refused: its MAC does not match (changed after signing, or forged)");
+  const int64_t age = now_us - auth.utime;
+  if (age > kWindowUs || age < -kWindowUs)
+    throw AuthError("refused: signed " + Seconds(age < 0 ? -age : age) + (age < 0 ? " after" : " before") +
+                    " this process's clock, outside the " + Seconds(kWindowUs) + " window (" +
+                    (age < 0 ? "clocks apart?" : "a replay, or clocks apart") + ")");
+  if (auth.utime < not_before_us_)
+    throw AuthError("refused: signed " + Seconds(not_before_us_ - auth.utime) +
+                    " before this process started (a replay, or clocks apart)");
+  std::lock_guard<std::mutex> lock(mutex_);
+  while (!accepted_.empty() && accepted_.front().first < now_us - kWindowUs) {
+    nonces_.erase(accepted_.front().second);
+    accepted_.pop_front();
+  }
+  if (!nonces_.insert(auth.nonce).second)
+    throw AuthError("refused: replayed (nonce " + std::to_string(auth.nonce) + " from '" + auth.sender +
+                    "' was accepted before)");
+  accepted_.emplace_back(auth.utime, auth.nonce);
+}
+
+}  // namespace ws::auth

@@ -1,0 +1,287 @@
+// A hostile peer on the bus (README "Security on the robot network"), against
+// real processes over udpm: it cannot make a process write outside its
+// output folders, cannot lose accepted views, and, once the processes have
+// the rig key, cannot command them or swap the calibration at all: unsigned,
+// foreign-key, altered and replayed messages are refused and counted with
+// their reason.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "auth/message_auth.h"
+#include "bad_messages.h"
+#include "bus_watch.h"
+#include "cloud_test_support.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/decode.h"
+#include "match_fixtures.h"
+#include "runtime/wall_clock.h"
+#include "test_support.h"
+#include "widestereo/calibration_status_t.hpp"
+#include "widestereo/stereo_calibration_t.hpp"
+
+namespace {
+
+using namespace ws::test;
+namespace ch = ws::channel;
+namespace fs = std::filesystem;
+
+// Publishes `bytes` on `channel` and waits for a heartbeat that counts them
+// there; returns that heartbeat's last error.
+std::string SendAndCount(BusWatch& bus, const std::string& channel, const std::vector<uint8_t>& bytes) {
+  const int64_t before = bus.Counters(channel).received;
+  bus.Publish(channel, bytes);
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(channel).received > before; }))
+      << "no heartbeat counted the message on " << channel;
+  return bus.status() ? bus.status()->last_error : "";
+}
+
+// stereo-command as a user runs it, with `args` after the command name.
+void RunStereoCommand(const std::string& dir, const std::string& url, std::vector<std::string> args) {
+  args.insert(args.begin(), "stereo-command");
+  args.insert(args.end(), {"--out-url", url, "--log-dir", dir, "--quiet"});
+  const CommandResult r = RunCommand(args, 30);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+// The payload `bus` collected on STEREO_COMMAND whose arguments are `args`.
+std::vector<uint8_t> CollectedCommand(BusWatch& bus, const std::vector<std::string>& args) {
+  for (const auto& bytes : bus.Payloads(ch::kStereoCommand)) {
+    widestereo::command_t command;
+    if (command.decode(bytes.data(), 0, int(bytes.size())) > 0 && command.args == args) return bytes;
+  }
+  ADD_FAILURE() << "no command with those arguments was heard";
+  return {};
+}
+
+// stereo-calibrate over udpm, poly6 (the quickest solve), and the bus seen from here.
+std::vector<std::string> CalibrateArgv(const std::string& dir, const std::string& url,
+                                       const std::vector<std::string>& extra) {
+  std::vector<std::string> argv = {"stereo-calibrate", "--model", "poly6", "--log-dir", dir,
+                                   "--in-url",         url,       "--out-url", url};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+widestereo::calibration_status_t LastCalibrationStatus(BusWatch& bus) {
+  const auto& statuses = bus.Payloads(ch::kCalibrationStatus);
+  if (statuses.empty()) return {};
+  return ws::DecodeMessage<widestereo::calibration_status_t>(statuses.back().data(), int(statuses.back().size()));
+}
+
+// Sends the 30 views of logs/sim-corners.lcmlog; returns how many views
+// stereo-calibrate kept (0, and a failure, if it never counted them all).
+int SendViews(BusWatch& bus) {
+  int sent = 0;
+  for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog")) {
+    if (e.channel != ch::kStereoCorners) continue;
+    bus.Publish(ch::kStereoCorners, e.data);
+    bus.Listen(0.02);
+    ++sent;
+  }
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).received == sent; }));
+  bus.Listen(1.5);  // a CALIBRATION_STATUS after the last view
+  return LastCalibrationStatus(bus).views_stereo;
+}
+
+// Sends a command to stereo-calibrate; true once a CALIBRATION_STATUS says `done`.
+bool CommandCalibrate(BusWatch& bus, const widestereo::command_t& command,
+                      const std::function<bool(const widestereo::calibration_status_t&)>& done) {
+  const size_t seen = bus.Payloads(ch::kCalibrationStatus).size();
+  bus.Publish(ch::kStereoCommand, command);
+  return bus.ListenUntil(
+      120, [&] { return bus.Payloads(ch::kCalibrationStatus).size() > seen && done(LastCalibrationStatus(bus)); });
+}
+
+bool Solved(const widestereo::calibration_status_t& s) { return s.state == "solved"; }
+
+TEST(HostilePeer, StereoCloudSavesOnlyIntoItsPcdFolder) {
+  const std::string dir = TempDir("hostile-cloud-paths");
+  const std::string url = UniqueUdpmUrl(16);
+  Command process({"stereo-cloud", "--pcd-dir", dir + "/pcd", "--save-every", "0", "--log-dir", dir, "--in-url", url,
+                   "--out-url", url});
+  BusWatch bus(url, "stereo-cloud");
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
+  SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
+
+  for (const std::string& path : {dir + "/outside.pcd", std::string("../x.pcd"), std::string("pcd/../../y.pcd")}) {
+    const std::string error =
+        SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "stereo-cloud", {"path=" + path})));
+    EXPECT_NE(error.find("save: path=" + path + ": '" + path + "' is not a plain file name"), std::string::npos)
+        << error;
+  }
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 3);
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "stereo-cloud", {"path=inside.pcd"})));
+  process.Signal(SIGINT);
+  EXPECT_EQ(process.Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 3);
+  EXPECT_TRUE(fs::exists(dir + "/pcd/inside.pcd"));
+  for (const char* outside : {"/outside.pcd", "/x.pcd", "/y.pcd", "/../x.pcd", "/../y.pcd"})
+    EXPECT_FALSE(fs::exists(dir + outside)) << outside;
+}
+
+TEST(HostilePeer, StereoCalibrateSavesOnlyIntoTheFoldersOfOutAndReport) {
+  const std::string dir = TempDir("hostile-calibrate-paths");
+  const std::string out = dir + "/out";
+  fs::create_directories(out);
+  const std::string url = UniqueUdpmUrl(17) + "&recv_buf_size=8388608";
+  Command process(CalibrateArgv(dir, url, {"--state", "none", "--out", out + "/calib.yaml", "--report", out + "/report.json"}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
+  ASSERT_GT(SendViews(bus), 10);
+  ASSERT_TRUE(CommandCalibrate(bus, CommandMessage("solve", "stereo-calibrate"), Solved)) << process.Output();
+
+  for (const std::string& arg : {"path=" + dir + "/outside.yaml", std::string("path=../x.yaml"),
+                                 "report=" + dir + "/outside.json", std::string("report=../x.json")}) {
+    const std::string error = SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {arg})));
+    EXPECT_NE(error.find("bad argument '" + arg + "'"), std::string::npos) << error;
+    EXPECT_NE(error.find("is not a plain file name"), std::string::npos) << error;
+  }
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=again.yaml", "report=again.json"})));
+  process.Signal(SIGINT);
+  EXPECT_EQ(process.Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+  EXPECT_EQ(ReadFileText(out + "/again.yaml"), ReadFileText(out + "/calib.yaml"));
+  EXPECT_EQ(ReadFileText(out + "/again.json"), ReadFileText(out + "/report.json"));
+  for (const char* outside : {"/outside.yaml", "/x.yaml", "/outside.json", "/x.json"})
+    EXPECT_FALSE(fs::exists(dir + outside)) << outside;
+}
+
+// reset archives the views, restore brings them back, and the solve after
+// them is the solve before them, byte for byte; a solve leaves the views as
+// they were.
+TEST(HostilePeer, ResetThenRestoreThenSolveGivesTheSameCalibration) {
+  const std::string dir = TempDir("hostile-calibrate-reset");
+  const std::string state = dir + "/views.lcmlog", calib = dir + "/calib.yaml";
+  const std::string url = UniqueUdpmUrl(18) + "&recv_buf_size=8388608";
+  Command process(CalibrateArgv(dir, url, {"--state", state, "--out", calib}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
+  const int views = SendViews(bus);
+  ASSERT_GT(views, 10);
+  const std::string kept = ReadFileText(state);
+  ASSERT_TRUE(CommandCalibrate(bus, CommandMessage("solve"), Solved)) << process.Output();
+  const std::string before = ReadFileText(calib);
+  ASSERT_FALSE(before.empty());
+  EXPECT_EQ(ReadFileText(state), kept) << "the solve changed the views";
+  EXPECT_EQ(LastCalibrationStatus(bus).views_stereo, views);
+
+  ASSERT_TRUE(CommandCalibrate(bus, CommandMessage("reset"), [](const auto& s) { return s.views_stereo == 0; }));
+  std::vector<std::string> archives;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().filename().string().rfind("views-", 0) == 0) archives.push_back(entry.path().string());
+  ASSERT_EQ(archives.size(), 1u);
+  EXPECT_EQ(ReadFileText(archives[0]), kept) << "the archive is the state file as it was";
+  fs::remove(calib);
+
+  ASSERT_TRUE(CommandCalibrate(bus, CommandMessage("restore"), [&](const auto& s) { return s.views_stereo == views; }));
+  EXPECT_EQ(ReadFileText(state), kept);
+  ASSERT_TRUE(CommandCalibrate(bus, CommandMessage("solve"), Solved)) << process.Output();
+  process.Signal(SIGINT);
+  EXPECT_EQ(process.Wait(30).exit_code, 0);
+  EXPECT_EQ(ReadFileText(calib), before);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 0);
+}
+
+TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
+  const std::string dir = TempDir("hostile-keyed-commands");
+  const std::string key = WriteKeyFile(dir, "rig.key"), other = WriteKeyFile(dir, "other.key");
+  const std::string url = UniqueUdpmUrl(19);
+  const std::vector<std::string> argv = {"stereo-cloud", "--key-file", key,  "--pcd-dir", dir + "/pcd", "--save-every",
+                                         "0",            "--log-dir",  dir,  "--in-url",  url,          "--out-url",
+                                         url};
+  auto process = std::make_unique<Command>(argv);
+  BusWatch bus(url, "stereo-cloud");
+  bus.Collect(ch::kStereoCommand);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process->Output();
+  SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
+
+  std::string error = SendAndCount(bus, ch::kStereoCommand,
+                                   Encoded(CommandMessage("save", "stereo-cloud", {"path=unsigned.pcd"}, ws::WallMicros())));
+  EXPECT_NE(error.find("STEREO_COMMAND: refused: unsigned"), std::string::npos) << error;
+
+  RunStereoCommand(dir, url, {"save", "--target", "stereo-cloud", "--arg", "path=other.pcd", "--key-file", other});
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCommand).received == 2; }));
+  error = bus.status()->last_error;
+  EXPECT_NE(error.find("refused: signed with another rig key"), std::string::npos) << error;
+
+  RunStereoCommand(dir, url, {"save", "--target", "stereo-cloud", "--arg", "path=signed.pcd", "--key-file", key});
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCommand).received == 3; }));
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 2);
+  EXPECT_TRUE(fs::exists(dir + "/pcd/signed.pcd"));
+  fs::remove(dir + "/pcd/signed.pcd");
+
+  const std::vector<uint8_t> signed_save = CollectedCommand(bus, {"path=signed.pcd"});
+  error = SendAndCount(bus, ch::kStereoCommand, signed_save);  // byte for byte
+  EXPECT_NE(error.find("refused: replayed"), std::string::npos) << error;
+  widestereo::command_t altered;
+  ASSERT_GT(altered.decode(signed_save.data(), 0, int(signed_save.size())), 0);
+  altered.args = {"path=altered.pcd"};
+  error = SendAndCount(bus, ch::kStereoCommand, Encoded(altered));
+  EXPECT_NE(error.find("refused: its MAC does not match"), std::string::npos) << error;
+
+  process->Signal(SIGINT);
+  EXPECT_EQ(process->Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 5);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+
+  // Restarted, it knows none of the nonces it accepted: what was signed before its start is refused.
+  process = std::make_unique<Command>(argv);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->pid == process->pid(); }));
+  SendAndCount(bus, ch::kStereoCloud, Encoded(ws::testing::MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}})));
+  error = SendAndCount(bus, ch::kStereoCommand, signed_save);
+  EXPECT_NE(error.find("before this process started"), std::string::npos) << error;
+  process->Signal(SIGINT);
+  EXPECT_EQ(process->Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 1);
+  EXPECT_TRUE(fs::is_empty(dir + "/pcd")) << "only the signed save wrote, once";
+}
+
+TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) {
+  const std::string dir = TempDir("hostile-keyed-calibration");
+  const std::string key = WriteKeyFile(dir, "rig.key");
+  const std::string url = UniqueUdpmUrl(20) + "&recv_buf_size=8388608";
+  Command match({"stereo-match", "--key-file", key, "--log-dir", dir, "--in-url", url, "--out-url", url});
+  BusWatch bus(url, "stereo-match");
+  bus.Collect(ch::kStereoCalibration);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << match.Output();
+
+  auto forged = IdentityCalibration(320, 240, 300, 0.1);
+  forged.utime = ws::WallMicros();
+  std::string error = SendAndCount(bus, ch::kStereoCalibration, Encoded(forged));
+  EXPECT_NE(error.find("STEREO_CALIBRATION: refused: unsigned"), std::string::npos) << error;
+  ws::auth::Sign(ws::auth::RigKey::FromFile(WriteKeyFile(dir, "other.key")), ch::kStereoCalibration, "forger",
+                 ws::WallMicros(), forged);
+  error = SendAndCount(bus, ch::kStereoCalibration, Encoded(forged));
+  EXPECT_NE(error.find("refused: signed with another rig key"), std::string::npos) << error;
+  EXPECT_EQ(bus.status()->state, "waiting for calibration") << "a refused calibration built maps";
+
+  Command calibrate(CalibrateArgv(dir, url, {"--key-file", key, "--state", "none"}));
+  BusWatch calibrate_bus(url, "stereo-calibrate");
+  calibrate_bus.Collect(ch::kCalibrationStatus);
+  ASSERT_TRUE(calibrate_bus.ListenUntil(20, [&] { return calibrate_bus.status().has_value(); })) << calibrate.Output();
+  ASSERT_GT(SendViews(calibrate_bus), 10);
+  RunStereoCommand(dir, url, {"solve", "--key-file", key});
+  ASSERT_TRUE(bus.ListenUntil(180, [&] { return bus.status()->state == "matching"; })) << calibrate.Output();
+  EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 2);
+
+  ASSERT_FALSE(bus.Payloads(ch::kStereoCalibration).empty());
+  const std::vector<uint8_t> adopted = bus.Payloads(ch::kStereoCalibration).back();
+  error = SendAndCount(bus, ch::kStereoCalibration, adopted);
+  EXPECT_NE(error.find("refused: replayed"), std::string::npos) << error;
+  calibrate.Signal(SIGINT);
+  match.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
+  EXPECT_EQ(match.Wait(30).exit_code, 0);
+  EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 3);
+  const std::string log = ReadFileText(dir + "/stereo-match.log");
+  EXPECT_EQ(log.find("rectification maps for"), log.rfind("rectification maps for")) << "maps built once";
+}
+
+}  // namespace
