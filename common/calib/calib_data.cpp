@@ -49,8 +49,15 @@ widestereo::camera_corners_t ToCornersMessage(const BoardView& view, const std::
 namespace {
 
 void TakeImageSize(CameraData& camera, const widestereo::camera_corners_t& msg) {
-  if (msg.n <= 0) return;
-  if (camera.image_width == 0 && camera.image_height == 0) {
+  const bool unsized = camera.image_width == 0 && camera.image_height == 0;
+  if (msg.n <= 0) {  // an image without the board still says the camera is there
+    if (unsized && msg.image_width > 0 && msg.image_height > 0) {
+      camera.image_width = msg.image_width;
+      camera.image_height = msg.image_height;
+    }
+    return;
+  }
+  if (unsized) {
     camera.image_width = msg.image_width;
     camera.image_height = msg.image_height;
   } else if (camera.image_width != msg.image_width || camera.image_height != msg.image_height) {

@@ -61,8 +61,10 @@ widestereo::camera_corners_t ToCornersMessage(const BoardView& view, const std::
                                               int image_width, int image_height);
 
 // Adds a STEREO_CORNERS message as the next stereo view; the image sizes are
-// taken from it (the first message with corners sets them; a later one with
-// another size throws CalibrationError).
+// taken from it (the first message with corners, or failing that with an
+// image, sets them; a later one with corners of another size throws
+// CalibrationError). A camera with no size never sent an image (a one-camera
+// rig's right camera).
 void AddStereoCorners(StereoData& data, const widestereo::stereo_corners_t& msg);
 
 // Why a view cannot be used, or "" when it can: fewer than `min_points`

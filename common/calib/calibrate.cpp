@@ -35,7 +35,9 @@ CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptio
 StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options) {
   CheckOptions(options);
   const auto start = std::chrono::steady_clock::now();
-  const bool mono = std::all_of(data.right.views.begin(), data.right.views.end(),
+  // No right image at all (not merely no board in it): a one-camera rig.
+  const bool mono = data.right.image_width == 0 &&
+                    std::all_of(data.right.views.begin(), data.right.views.end(),
                                 [](const BoardView& view) { return view.empty(); });
   StereoCalibration result;
   if (mono) {

@@ -77,8 +77,8 @@ CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptio
 
 // Calibrates both cameras and R, T. Views seen by one camera only serve that
 // camera's intrinsics. Throws CalibrationError when either camera or the
-// stereo pairs are not enough. Data whose right camera saw nothing are a
-// one-camera rig: the left camera alone (mono).
+// stereo pairs are not enough. Data whose right camera sent no image at all
+// (image size 0) are a one-camera rig: the left camera alone (mono).
 StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options);
 
 // The outcome of solving the same data with several models.

@@ -132,7 +132,9 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
   data.image_width = image_width;
   data.image_height = image_height;
   std::string line, current;
-  int index = 0;  // corner of the current image
+  int index = 0;           // corner of the current image
+  bool no_board = false;   // the current image is one "NAME - - -" line
+  auto complete = [&] { return index == cols * rows || (index == 1 && no_board); };
   while (lines.Next(&line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
@@ -140,9 +142,10 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
     if (!(fields >> name >> x >> y >> level) || (fields >> extra))
       lines.Fail("four fields expected: filename x y level");
     if (name != current || index == cols * rows) {
-      if (index != 0 && index != cols * rows)
+      if (index != 0 && !complete())
         lines.Fail(current + " has " + std::to_string(index) + " corners, not " +
                    std::to_string(cols * rows));
+      no_board = x == "-" && y == "-";
       current = name;
       index = 0;
       data.views.emplace_back();
@@ -162,7 +165,7 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
       lines.Fail("x and y must be numbers or '-'");
     }
   }
-  if (index != 0 && index != cols * rows)
+  if (index != 0 && !complete())
     lines.Fail(current + " has " + std::to_string(index) + " corners, not " +
                std::to_string(cols * rows));
   return data;

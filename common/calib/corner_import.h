@@ -16,7 +16,8 @@
 //   corners.vnl  "# filename x y level", then one line a corner of every
 //                image, each image's COLS x ROWS corners in row-major board
 //                order; a level of "-" (or x, y of "-") marks a corner not
-//                seen. The board is the chessboard of BoardSpec (square
+//                seen, and an image whose board was not found is one line
+//                "filename - - -". The board is the chessboard of BoardSpec (square
 //                size in metres); the image size is not in the file.
 // Errors name the file and line: CornerImportError.
 #pragma once

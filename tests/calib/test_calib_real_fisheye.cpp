@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <opencv2/calib3d.hpp>
 
+#include "calib/calib_file.h"
 #include "calib/calibrate.h"
 #include "calib/corner_import.h"
 #include "calib/heldout.h"
@@ -144,6 +145,35 @@ TEST(RealBabelCalib, TrainTestProtocolBsplineThetaNoWorseThanKb4) {
     test_rms[m] = held_out.rms_px;
   }
   EXPECT_LE(test_rms[1], test_rms[0]) << "bspline_theta predicts the test views no worse than kb4";
+}
+
+// The same train views through the processes, as a user calibrates corners
+// found by another tool: stereo-import-corners -> stereo-calibrate, a
+// one-camera rig (the report has "left" only and no "stereo").
+TEST(RealBabelCalib, ImportedCornersCalibrateAsAOneCameraRig) {
+  const std::string data = SharedData("babelcalib-ov-plane");
+  if (!std::filesystem::is_directory(data))
+    GTEST_SKIP() << data << " is absent (real data beside the project, not part of it): skipped";
+  const std::string dir = ws::test::TempDir("import-babelcalib-process");
+  std::vector<std::string> import = {"stereo-import-corners", "--babelcalib",
+                                     data + "/ov_plane.dsc", "--log-dir", dir, "--quiet",
+                                     "--out-url", FileUrl(dir + "/corners.lcmlog", "mode=w")};
+  for (const auto& orpc : OrpcFiles(data + "/corners/train")) import.push_back(orpc);
+  const auto imported = ws::test::RunCommand(import, 60);
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  // Every imported view counts, the nearly alike ones too.
+  const auto run = CalibrateOnce(dir, dir + "/corners.lcmlog", "mono",
+                                 {"--model", "bspline_theta", "--duplicate-px", "0.001"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = ReadJson(dir + "/mono.json");
+  ASSERT_EQ(report["cameras"].size(), 1u);
+  EXPECT_EQ(report["cameras"][0]["name"], "left");
+  EXPECT_EQ(report["cameras"][0]["views"], 18);
+  EXPECT_FALSE(report.contains("stereo"));
+  const CalibrationFile file = ReadCalibrationFile(dir + "/mono.yaml");
+  EXPECT_TRUE(file.mono);
+  EXPECT_EQ(file.left.distortion.kind, "bspline_theta");
+  EXPECT_EQ(file.left.image_width, 1280);
 }
 
 }  // namespace

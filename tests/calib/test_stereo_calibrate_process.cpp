@@ -83,8 +83,11 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
     }
     // Every pair is in R, T or reported as not fitting one rig (kb4, which has
     // no tangential terms, leaves one pair of this pinhole lens out).
-    EXPECT_EQ(model["stereo"]["views"].get<int>() + model["stereo"]["inconsistent_views"].size(), 13u);
-    if (pinhole) EXPECT_EQ(model["stereo"]["views"], 13);
+    EXPECT_EQ(model["stereo"]["views"].get<size_t>() + model["stereo"]["inconsistent_views"].size(),
+              13u);
+    if (pinhole) {
+      EXPECT_EQ(model["stereo"]["views"], 13);
+    }
   }
   // The file holds the first model; STEREO_CALIBRATION says the same.
   const CalibrationFile file = ReadCalibrationFile(dir + "/paper.yaml");

@@ -108,7 +108,8 @@ TEST_P(AngleModelRoundTrip, ProjectOfUnprojectReturnsEveryPixelOfTheImageCircle)
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, AngleModelRoundTrip,
-                         ::testing::Values(Kb4Camera(), FisheyeKneeCamera()));
+                         ::testing::Values(Kb4Camera(), FisheyeKneeCamera()),
+                         [](const auto& info) { return info.param.distortion.kind; });
 
 TEST(FisheyeKneeLens, TheCameraFollowsItsCurve) {
   const CameraModel model = FisheyeKneeCamera();
