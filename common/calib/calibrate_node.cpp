@@ -8,6 +8,7 @@
 #include "calib/calib_file.h"
 #include "calib/calib_message.h"
 #include "calib/calib_plots.h"
+#include "calib/calib_publish.h"
 #include "calib/report.h"
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
@@ -210,7 +211,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   try {
     const auto results = CalibrateStereoAllModels(data, options, models);
     const StereoCalibration& primary = results.front();
-    process_.Publish(channel::kStereoCalibration, ToMessage(primary, process_.Now()));
+    PublishCalibration(process_, ToMessage(primary, process_.Now()));
     for (const auto& r : results) {
       std::ostringstream line;
       line << r.model << ": left rms " << r.left.rms_px << " px (" << r.left.views << " views, "
