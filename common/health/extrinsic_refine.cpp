@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
 #include <ceres/ceres.h>
 
 #include "health/rectified_dy_residual.h"
@@ -12,8 +13,7 @@ namespace {
 constexpr double kDeg = 180 / M_PI;
 
 void AngleAxis(const Eigen::Matrix3d& R, double om[3]) {
-  const Eigen::Matrix3d row_major_in_col = R.transpose();  // ceres reads column-major
-  ceres::RotationMatrixToAngleAxis(row_major_in_col.data(), om);
+  ceres::RotationMatrixToAngleAxis(R.data(), om);  // column-major, as Eigen stores it
 }
 
 Eigen::Matrix3d Rotation(const double om[3]) {
