@@ -110,11 +110,12 @@ Pass MatchPass(const cv::Mat& left, const cv::Mat& right, const Described& l, co
   for (int i = 0; i < allowed.rows; ++i) {
     uint8_t* row = allowed.ptr<uint8_t>(i);
     const cv::Point2f& p = l.keys[size_t(i)].pt;
-    const double dy0 = expected_dy(p);
+    const double dy0 = expected_dy(p);  // a field beyond the band is no field: no candidates
     for (int j = 0; j < allowed.cols; ++j) {
       const cv::Point2f& q = r.keys[size_t(j)].pt;
       const float dx = p.x - q.x;
-      row[j] = std::abs(q.y - p.y - dy0) <= rows && dx >= -2 && dx <= o.max_disparity;
+      row[j] = std::abs(dy0) <= o.search_rows && std::abs(q.y - p.y - dy0) <= rows && dx >= -2 &&
+               dx <= o.max_disparity;
     }
   }
   std::vector<std::vector<cv::DMatch>> knn;
@@ -151,9 +152,18 @@ Pass MatchPass(const cv::Mat& left, const cv::Mat& right, const Described& l, co
   return pass;
 }
 
+// Shi-Tomasi corners, none weaker than min_strength (cv::goodFeaturesToTrack's
+// own threshold is relative to the image's strongest corner: on noise alone
+// it would keep noise).
 std::vector<cv::Point2f> Corners(const cv::Mat& image, const cv::Mat& filled, const FeatureOptions& o) {
+  cv::Mat strength;
+  cv::cornerMinEigenVal(image, strength, 3);
+  double strongest = 0;
+  cv::minMaxLoc(strength, nullptr, &strongest, nullptr, nullptr, filled);
   std::vector<cv::Point2f> corners;
-  cv::goodFeaturesToTrack(image, corners, o.max_corners, o.quality, o.min_distance_px, filled);
+  if (!(strongest > o.min_strength)) return corners;
+  cv::goodFeaturesToTrack(image, corners, o.max_corners, std::max(o.quality, o.min_strength / strongest),
+                          o.min_distance_px, filled);
   return corners;
 }
 

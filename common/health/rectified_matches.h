@@ -3,8 +3,9 @@
 // calibration's health is measured from.
 //
 //  1. Corners: Shi-Tomasi (cv::goodFeaturesToTrack) in both images, inside
-//     the part the lenses fill (eroded by `border_px`); the left ones refined
-//     with cv::cornerSubPix.
+//     the part the lenses fill (eroded by `border_px`), none weaker than
+//     min_strength (so that noise on a textureless scene gives none); the
+//     left ones refined with cv::cornerSubPix.
 //  2. Candidates: upright ORB descriptors at the corners, matched by Hamming
 //     distance among the right corners in a band of rows (|dy| <=
 //     search_rows, which covers the largest correction refinement accepts)
@@ -38,6 +39,11 @@ namespace ws {
 struct FeatureOptions {
   int max_corners = 1500;       // per image
   double quality = 0.01;        // Shi-Tomasi, relative to the strongest corner
+  // Shi-Tomasi, absolute: cv::cornerMinEigenVal (3 x 3, grey levels as 0..1).
+  // The simulator's corners (contrast 190, blur 0.6 px) reach 0.1, a corner
+  // of 25 grey levels about 2e-3; noise of sigma 1 (5) grey level peaks at
+  // 5e-5 (1.3e-3) over a whole 1280 x 960 image.
+  double min_strength = 2e-3;
   double min_distance_px = 8;   // between corners of one image
   double border_px = 16;        // corners this far inside the filled part only
   double search_rows = 32;      // |dy| of a candidate

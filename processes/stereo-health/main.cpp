@@ -44,6 +44,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-corners", c.features.max_corners, "Corners per image")
       ->check(CLI::Range(10, 100000))
       ->capture_default_str();
+  app.add_option("--min-strength", c.features.min_strength,
+                 "Weakest corner used: Shi-Tomasi's smaller eigenvalue (3 x 3, grey levels as 0..1; a corner "
+                 "of 25 grey levels is about 2e-3, noise of 5 grey levels peaks at 1.3e-3)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--search-rows", c.features.search_rows, "Largest |dy| (px) of a match candidate")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -32,7 +32,7 @@ HealthRun RunHealth(const std::string& dir, const std::string& images_log, const
                     const std::string& name, std::vector<std::string> args) {
   HealthRun run;
   const std::string report = dir + "/" + name + ".json";
-  run.out_log = dir + "/" + name + ".lcmlog";
+  run.out_log = dir + "/" + name + ".health.lcmlog";
   std::vector<std::string> argv = {"stereo-health", "--config", "config/stereo-health.yaml", "--period", "0",
                                    "--log-dir", dir, "--calib", calib, "--report", report, "--in-url",
                                    "file://" + images_log + "?speed=0", "--out-url", "file://" + run.out_log + "?mode=w"};
