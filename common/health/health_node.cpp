@@ -5,8 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <opencv2/imgproc.hpp>
-
 #include "calib/calib_message.h"
 #include "calib/calib_publish.h"
 #include "calib/report.h"
@@ -16,16 +14,6 @@
 
 namespace ws {
 namespace {
-
-// The grey 8-bit image the features are found in.
-cv::Mat Gray8(const cv::Mat& image) {
-  cv::Mat gray = image;
-  if (image.channels() == 3) cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-  if (image.channels() == 4) cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
-  if (gray.depth() == CV_16U) gray.convertTo(gray, CV_8U, 1 / 257.0);
-  if (gray.type() != CV_8UC1) throw std::invalid_argument("stereo-health needs 8- or 16-bit images");
-  return gray;
-}
 
 std::string Fixed(double value, int digits = 3) {
   char text[32];
@@ -60,21 +48,19 @@ void HealthNode::Start(const std::string& calib_file) {
 void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
   const StereoRig rig{file.left, file.right, file.R, file.T};
-  Rectification rect = BuildRectification(rig, config_.rectify);  // throws before anything changes
+  checker_.emplace(rig, config_.rectify, config_.features);  // throws before anything else changes
   rig_ = rig;
-  rect_ = std::move(rect);
   calibration_ = file;
   source_ = source;
-  filled_left_ = FilledRegion(*rect_, true, config_.features.border_px);
-  filled_right_ = FilledRegion(*rect_, false, config_.features.border_px);
   window_.Clear();
   kept_.clear();
   kept_count_ = 0;
   last_check_utime_ = 0;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const Rectification& rect = checker_->rect();
   process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) +
-                      " ms: f = " + Fixed(rect_->f, 2) + " px, " + std::to_string(rect_->size.width) + "x" +
-                      std::to_string(rect_->size.height));
+                      " ms: f = " + Fixed(rect.f, 2) + " px, " + std::to_string(rect.size.width) + "x" +
+                      std::to_string(rect.size.height));
   process_.SetState("checking");
 }
 
@@ -83,7 +69,7 @@ void HealthNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
 }
 
 void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
-  if (!rect_) {
+  if (!checker_) {
     if (frames_without_calibration_++ == 0)
       process_.ReportError("frames arrive before any calibration: dropped until one does");
     process_.Counters(channel::kStereoImages).dropped++;
@@ -97,27 +83,17 @@ void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
 }
 
 void HealthNode::Check(const widestereo::stereo_frame_t& frame) {
-  const cv::Mat left = Gray8(ImageToMat(frame.left)), right = Gray8(ImageToMat(frame.right));
-  if (left.size() != rect_->input_size || right.size() != rect_->input_size)
-    throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) +
-                                "x" + std::to_string(left.rows) + " but " + source_ + " is for " +
-                                std::to_string(rect_->input_size.width) + "x" +
-                                std::to_string(rect_->input_size.height));
-  cv::Mat left_rect, right_rect;
-  RectifyPair(*rect_, left, right, &left_rect, &right_rect);
-  const RectifiedMatches m =
-      MatchRectifiedPair(left_rect, right_rect, filled_left_, filled_right_, *rect_, config_.features);
-  std::vector<DyMatch> dy;
-  std::vector<RayMatch> rays;
-  for (size_t i = 0; i < m.left.size(); ++i) {
-    dy.push_back({m.left[i], m.right[i].y - m.left[i].y});
-    rays.push_back({RectifiedPixelRay(*rect_, true, m.left[i]), RectifiedPixelRay(*rect_, false, m.right[i]),
-                    m.left[i]});
+  FrameCheck check;
+  try {
+    check = checker_->Check(ImageToMat(frame.left), ImageToMat(frame.right), source_);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + ": " + e.what());
   }
-  window_.Add(dy, config_.grid, rect_->size);
+  const RectifiedMatches& m = check.matches;
+  window_.Add(check.dy, config_.grid, checker_->rect().size);
   if (window_.newest_usable()) {
-    kept_count_ += rays.size();
-    kept_.push_back(std::move(rays));
+    kept_count_ += check.rays.size();
+    kept_.push_back(std::move(check.rays));
     while (kept_count_ > size_t(config_.max_kept_matches) && kept_.size() > 1) {
       kept_count_ -= kept_.front().size();
       kept_.pop_front();
@@ -135,7 +111,7 @@ void HealthNode::Check(const widestereo::stereo_frame_t& frame) {
 }
 
 widestereo::calibration_health_t HealthNode::Health(int64_t utime, int64_t frame_id) const {
-  const DyFigures f = ComputeDyFigures(window_.Matches(), rect_ ? rect_->size : cv::Size(1, 1), config_.grid);
+  const DyFigures f = ComputeDyFigures(window_.Matches(), checker_ ? checker_->rect().size : cv::Size(1, 1), config_.grid);
   widestereo::calibration_health_t h{};
   h.utime = utime;
   h.frame_id = frame_id;
@@ -154,10 +130,10 @@ widestereo::calibration_health_t HealthNode::Health(int64_t utime, int64_t frame
 }
 
 RefineResult HealthNode::Refine() {
-  if (!rect_) throw std::runtime_error("refine: no calibration yet");
+  if (!checker_) throw std::runtime_error("refine: no calibration yet");
   std::vector<RayMatch> matches;
   for (const auto& frame : kept_) matches.insert(matches.end(), frame.begin(), frame.end());
-  RefineResult r = RefineExtrinsics(rig_, rect_->f, matches, rect_->size, config_.grid, config_.refine);
+  RefineResult r = RefineExtrinsics(rig_, checker_->rect().f, matches, checker_->rect().size, config_.grid, config_.refine);
   last_refine_ = r;
   const std::string figures = "median |dy| " + Fixed(r.dy_median_before) + " -> " + Fixed(r.dy_median_after) +
                               " px, 95th percentile " + Fixed(r.dy_p95_before) + " -> " + Fixed(r.dy_p95_after) +

@@ -23,9 +23,8 @@
 
 #include "calib/calib_file.h"
 #include "health/extrinsic_refine.h"
-#include "health/rectified_matches.h"
+#include "health/frame_checker.h"
 #include "health/verdict.h"
-#include "rectify/rectification.h"
 #include "runtime/process.h"
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -68,8 +67,7 @@ class HealthNode {
   HealthConfig config_;
   std::optional<calib::CalibrationFile> calibration_;
   StereoRig rig_;
-  std::optional<Rectification> rect_;
-  cv::Mat filled_left_, filled_right_;
+  std::optional<FrameChecker> checker_;
   std::string source_;
   VerdictWindow window_;
   std::deque<std::vector<RayMatch>> kept_;  // per checked usable frame
