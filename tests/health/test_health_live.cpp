@@ -23,7 +23,6 @@
 namespace {
 
 using namespace ws::test;
-using Clock = std::chrono::steady_clock;
 
 // What the processes say on the bus. Function subscriptions: LCM 1.3.1's
 // member-function ones trip UBSan's alignment check in make test-asan.
@@ -48,11 +47,7 @@ struct Bus {
         },
         this);
   }
-  bool Until(double seconds, const std::function<bool()>& done) {
-    const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-    while (!done() && Clock::now() < end) lcm.handleTimeout(10);
-    return done();
-  }
+  bool Until(double seconds, const std::function<bool()>& done) { return ws::test::HandleUntil(lcm, seconds, done); }
   lcm::LCM lcm;
   std::vector<widestereo::calibration_health_t> health;
   std::vector<widestereo::stereo_calibration_t> calibrations;
