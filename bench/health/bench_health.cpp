@@ -101,6 +101,8 @@ int main(int argc, char** argv) {
   std::printf("\n%-6s %7s | %-27s | %-27s | %s\n", "error", "deg", "before: median / p95 |dy| px",
               "after refine: median / p95", "refined R from the truth, deg");
   const ws::Rectification true_rect = ws::BuildRectification(truth);
+  const ws::DyFigures exact = ws::ComputeDyFigures(CheckAll(truth, wall).dy, true_rect.size, {});
+  std::printf("%-6s %7s | %12.3f / %-12.3f |\n", "none", "", exact.median_abs, exact.p95_abs);
   for (const auto& [name, axis] : {std::pair{"pitch", Eigen::Vector3d::UnitX()}, std::pair{"roll", Eigen::Vector3d::UnitZ()}})
     for (double deg : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 1.0}) {
       const ws::StereoRig wrong = Turned(truth, axis, deg);

@@ -1,6 +1,7 @@
 // stereo-command: sends one command on STEREO_COMMAND, e.g.
 //   stereo-command solve                      (stereo-calibrate: solve now)
 //   stereo-command save --target stereo-cloud (write the newest filtered cloud as PCD)
+//   stereo-command refine --target stereo-health (repair the extrinsics from the live matches)
 #include <cstdio>
 
 #include "lcm_io/channels.h"
@@ -9,11 +10,11 @@
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-command",
-                     "Sends one command (solve, reset, save, ...) on STEREO_COMMAND to one process or to all.");
+                     "Sends one command (solve, reset, save, refine, ...) on STEREO_COMMAND to one process or to all.");
   widestereo::command_t command;
   auto& app = cli.app();
-  app.add_option("command", command.command, "solve | reset | save | ... (what the target understands)")->required();
-  app.add_option("--target", command.target, "Process name (stereo-calibrate, stereo-cloud); default: every process");
+  app.add_option("command", command.command, "solve | reset | save | refine | ... (what the target understands)")->required();
+  app.add_option("--target", command.target, "Process name (stereo-calibrate, stereo-cloud, stereo-health); default: every process");
   app.add_option("--arg", command.args, "KEY=VALUE for the command (repeatable)");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 
