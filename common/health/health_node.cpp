@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <sstream>
 #include <stdexcept>
 
 #include "calib/calib_message.h"
@@ -48,7 +47,7 @@ void HealthNode::Start(const std::string& calib_file) {
 void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
   const StereoRig rig{file.left, file.right, file.R, file.T};
-  checker_.emplace(rig, config_.rectify, config_.features);  // throws before anything else changes
+  checker_ = FrameChecker(rig, config_.rectify, config_.features);  // a throw here changes nothing
   rig_ = rig;
   calibration_ = file;
   source_ = source;
@@ -104,6 +103,7 @@ void HealthNode::Check(const widestereo::stereo_frame_t& frame) {
   ++frames_checked_;
   const widestereo::calibration_health_t health = Health(frame.utime, frame.frame_id);
   process_.Publish(channel::kCalibrationHealth, health);
+  process_.SetState(health.verdict);  // stereo-status's STATE column
   process_.log().Detail("frame " + std::to_string(frame.frame_id) + ": corners " + std::to_string(m.corners_left) +
                         "/" + std::to_string(m.corners_right) + ", candidates " + std::to_string(m.candidates) +
                         ", tracked " + std::to_string(m.refined) + ", inliers " + std::to_string(m.left.size()) +

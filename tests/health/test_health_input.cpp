@@ -64,12 +64,16 @@ TEST(HealthInput, MalformedAndUnusableMessagesAreCountedAndSkipped) {
   const std::vector<uint8_t> garbage = {1, 2, 3, 4, 5, 6, 7, 8, 9};
   widestereo::stereo_calibration_t not_a_rotation = ws::MessageFromStereoRig(ws::StereoRigFromFile(kCalibration), 1);
   not_a_rotation.R[0] = 2;
+  widestereo::stereo_calibration_t right_camera_on_the_left = not_a_rotation;  // decodes, cannot rectify
+  right_camera_on_the_left.R[0] = 1;
+  right_camera_on_the_left.T[0] = 0.3;
   const cv::Mat small = Grey(128, 10, 1);
   std::vector<LogEvent> events = {
       {ws::channel::kStereoImages, garbage},
       {ws::channel::kStereoCalibration, garbage},
       {ws::channel::kStereoCommand, garbage},
       Event(ws::channel::kStereoCalibration, not_a_rotation),
+      Event(ws::channel::kStereoCalibration, right_camera_on_the_left),
       Event(ws::channel::kStereoImages, Frame(small(cv::Rect(0, 0, 640, 480)), small(cv::Rect(0, 0, 640, 480)), 0)),
       Event(ws::channel::kStereoCommand, CommandMessage("solve", "stereo-health")),
       Event(ws::channel::kStereoCommand, CommandMessage("refine", "stereo-health", {"now=1"})),
@@ -84,12 +88,12 @@ TEST(HealthInput, MalformedAndUnusableMessagesAreCountedAndSkipped) {
   EXPECT_EQ(images.received, 3);
   EXPECT_EQ(images.rejected, 2) << "garbage, and a frame of another size than the calibration's";
   const auto calibration = LastCounters(run.out_log, "stereo-health", ws::channel::kStereoCalibration);
-  EXPECT_EQ(calibration.rejected, 2) << "garbage, and R not a rotation";
+  EXPECT_EQ(calibration.rejected, 3) << "garbage, R not a rotation, T.x > 0";
   const auto commands = LastCounters(run.out_log, "stereo-health", ws::channel::kStereoCommand);
   EXPECT_EQ(commands.received, 4);
   EXPECT_EQ(commands.rejected, 3) << "garbage, an unknown command for stereo-health, a bad argument";
   EXPECT_EQ(run.report["calibration"], std::string("calibration file ") + kCalibration)
-      << "the invalid calibration replaced nothing";
+      << "the invalid calibrations replaced nothing";
 }
 
 }  // namespace
