@@ -12,7 +12,7 @@ namespace {
 
 constexpr int kPatch = 31;              // ORB's patch, pixels
 constexpr float kMaxTrackShift = 2.0f;  // Lucas-Kanade's point from the matched corner, px
-constexpr double kNarrowRows = 3;       // px about pass 1's dy field, in pass 2
+constexpr double kNarrowRows = 3;       // px: the narrow band of rows
 
 struct Described {
   std::vector<cv::KeyPoint> keys;
@@ -194,10 +194,14 @@ RectifiedMatches MatchRectifiedPair(const cv::Mat& left, const cv::Mat& right, c
   const Described l = Describe(left, corners_left), r = Describe(right, corners_right);
   if (l.keys.empty() || r.keys.size() < 2) return out;
 
-  // Pass 1: the whole band of rows; pass 2: a narrow band about the dy field
-  // of pass 1's inliers, where a repetitive pattern (a board's squares)
+  // Pass 1: a narrow band of rows about dy = 0 or the whole band, whichever
+  // keeps more inliers; pass 2: a narrow band about the dy field of pass 1's
+  // inliers. In a narrow band a repetitive pattern (a board's squares)
   // offers one candidate only.
-  Pass first = MatchPass(left, right, l, r, rect, o, [](const cv::Point2f&) { return 0.0; }, o.search_rows);
+  auto no_field = [](const cv::Point2f&) { return 0.0; };
+  Pass narrow = MatchPass(left, right, l, r, rect, o, no_field, std::min(kNarrowRows, o.search_rows));
+  Pass wide = MatchPass(left, right, l, r, rect, o, no_field, o.search_rows);
+  const Pass& first = narrow.left.size() >= wide.left.size() ? narrow : wide;
   if (first.model.empty()) return out;
   const cv::Mat model = first.model;
   Pass second = MatchPass(left, right, l, r, rect, o,

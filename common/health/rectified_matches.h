@@ -23,9 +23,12 @@
 //     go. (An essential-matrix RANSAC would be the exact model, but it is
 //     degenerate on a board or a wall: one plane.) Sampling is seeded, so a
 //     replay gives the same matches.
-//  5. Steps 2-4 once more, the band of rows now 3 px about the dy field of
-//     step 4: a repetitive pattern (a board's squares, a square apart) then
-//     leaves one candidate where the wide band held several.
+//  5. Steps 2-4 run twice. First in a band of 3 px about dy = 0 and in the
+//     whole band, keeping the one with more inliers (the whole band's when
+//     the rig is off by more than 3 px); then in 3 px about the dy field
+//     that one found. A repetitive pattern (a board's squares, 15 px or more apart)
+//     offers a single candidate in such a band where the whole band held
+//     several, and could lock onto a set of matches a square off.
 #pragma once
 
 #include <vector>
