@@ -1,5 +1,6 @@
 #include "health/health_node.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -64,6 +65,9 @@ void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::s
 }
 
 void HealthNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
+  if (published_ && msg.utime == published_->utime && std::equal(msg.R, msg.R + 9, published_->R) &&
+      std::equal(msg.T, msg.T + 3, published_->T))
+    return;  // our own refinement, heard back: in use already
   SetCalibration(calib::ToCalibrationFile(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
@@ -152,7 +156,8 @@ RefineResult HealthNode::Refine() {
                  "of " + source_ + " unchanged) from " + std::to_string(r.matches) + " matches in " +
                  std::to_string(kept_.size()) + " frames: median |dy| " + Fixed(r.dy_median_before) + " -> " +
                  Fixed(r.dy_median_after) + " px";
-  calib::PublishCalibration(process_, calib::ToMessage(refined, process_.Now()));
+  published_ = calib::ToMessage(refined, process_.Now());
+  calib::PublishCalibration(process_, *published_);
   if (!config_.out_yaml.empty()) {
     calib::WriteCalibrationFile(config_.out_yaml, refined);
     process_.log().Info("wrote " + config_.out_yaml);

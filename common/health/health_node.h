@@ -77,6 +77,7 @@ class HealthNode {
   int frames_checked_ = 0;
   int64_t frames_without_calibration_ = 0;
   std::optional<RefineResult> last_refine_;
+  std::optional<widestereo::stereo_calibration_t> published_;  // the last refinement we published
 };
 
 }  // namespace ws

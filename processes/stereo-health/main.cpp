@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-disparity", c.features.max_disparity, "Largest disparity (px) of a match candidate")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--ransac-px", c.features.ransac_px, "Epipolar distance (px) of a RANSAC inlier")
+  app.add_option("--ransac-px", c.features.ransac_px, "Largest |dy - field| (px) of a RANSAC inlier (the field: dy smooth over the image)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_flag("--refine", c.refine_at_end, "At the end of a file:// input, refine the extrinsics (see --out)");
