@@ -7,9 +7,9 @@
 //     (run under `taskset -c 0,1` for 2 cores);
 //  2. the calibration's right camera pitched (about x) and rolled (about z)
 //     by several angles: median and 95th percentile |dy| measured through
-//     it on the wall frames, the refinement from those matches, |dy|
-//     measured again through the refined calibration, and how far the
-//     refined R is from the true one.
+//     it, the refinement from those matches, |dy| measured again through
+//     the refined calibration, and how far the refined R is from the true
+//     one; on 3 wall frames (one depth), then on those and 12 board poses.
 //
 //   bench_health [RUNS]    (default 10)
 #include <algorithm>
@@ -80,6 +80,31 @@ void Cost(const char* name, const ws::StereoRig& rig, const std::pair<cv::Mat, c
               *std::max_element(ms.begin(), ms.end()));
 }
 
+void Sweep(const char* scene, const ws::StereoRig& truth, const Pairs& pairs) {
+  std::printf("\n%s\n%-6s %7s | %-27s | %-27s | %s\n", scene, "error", "deg", "before: median / p95 |dy| px",
+              "after refine: median / p95", "refined R from the truth, deg");
+  const ws::Rectification true_rect = ws::BuildRectification(truth);
+  const ws::DyFigures exact = ws::ComputeDyFigures(CheckAll(truth, pairs).dy, true_rect.size, {});
+  std::printf("%-6s %7s | %12.3f / %-12.3f |\n", "none", "", exact.median_abs, exact.p95_abs);
+  for (const auto& [name, axis] : {std::pair{"pitch", Eigen::Vector3d::UnitX()}, std::pair{"roll", Eigen::Vector3d::UnitZ()}})
+    for (double deg : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 1.0}) {
+      const ws::StereoRig wrong = Turned(truth, axis, deg);
+      const ws::FrameCheck before = CheckAll(wrong, pairs);
+      const ws::DyFigures fb = ws::ComputeDyFigures(before.dy, true_rect.size, {});
+      const ws::Rectification rect = ws::BuildRectification(wrong);
+      const ws::RefineResult r = ws::RefineExtrinsics(wrong, rect.f, before.rays, rect.size, {}, {});
+      if (!r.applied) {
+        std::printf("%-6s %7.2f | %12.3f / %-12.3f | refused: %s\n", name, deg, fb.median_abs, fb.p95_abs,
+                    r.refused.c_str());
+        continue;
+      }
+      const ws::DyFigures fa = ws::ComputeDyFigures(CheckAll(r.rig, pairs).dy, true_rect.size, {});
+      const double error = Eigen::AngleAxisd(r.rig.R * truth.R.transpose()).angle() / kDeg;
+      std::printf("%-6s %7.2f | %12.3f / %-12.3f | %12.3f / %-12.3f | %.4f  (%d of %d matches)\n", name, deg,
+                  fb.median_abs, fb.p95_abs, fa.median_abs, fa.p95_abs, error, r.matches_used, r.matches);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -98,27 +123,9 @@ int main(int argc, char** argv) {
   Cost("wall", truth, wall.front(), runs);
   Cost("board", truth, simulator.Render(7), runs);
 
-  std::printf("\n%-6s %7s | %-27s | %-27s | %s\n", "error", "deg", "before: median / p95 |dy| px",
-              "after refine: median / p95", "refined R from the truth, deg");
-  const ws::Rectification true_rect = ws::BuildRectification(truth);
-  const ws::DyFigures exact = ws::ComputeDyFigures(CheckAll(truth, wall).dy, true_rect.size, {});
-  std::printf("%-6s %7s | %12.3f / %-12.3f |\n", "none", "", exact.median_abs, exact.p95_abs);
-  for (const auto& [name, axis] : {std::pair{"pitch", Eigen::Vector3d::UnitX()}, std::pair{"roll", Eigen::Vector3d::UnitZ()}})
-    for (double deg : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 1.0}) {
-      const ws::StereoRig wrong = Turned(truth, axis, deg);
-      const ws::FrameCheck before = CheckAll(wrong, wall);
-      const ws::DyFigures fb = ws::ComputeDyFigures(before.dy, true_rect.size, {});
-      const ws::Rectification rect = ws::BuildRectification(wrong);
-      const ws::RefineResult r = ws::RefineExtrinsics(wrong, rect.f, before.rays, rect.size, {}, {});
-      if (!r.applied) {
-        std::printf("%-6s %7.2f | %12.3f / %-12.3f | refused: %s\n", name, deg, fb.median_abs, fb.p95_abs,
-                    r.refused.c_str());
-        continue;
-      }
-      const ws::DyFigures fa = ws::ComputeDyFigures(CheckAll(r.rig, wall).dy, true_rect.size, {});
-      const double error = Eigen::AngleAxisd(r.rig.R * truth.R.transpose()).angle() / kDeg;
-      std::printf("%-6s %7.2f | %12.3f / %-12.3f | %12.3f / %-12.3f | %.4f  (%d matches)\n", name, deg,
-                  fb.median_abs, fb.p95_abs, fa.median_abs, fa.p95_abs, error, r.matches);
-    }
+  Pairs mixed = wall;
+  for (int f = 0; f < 12; ++f) mixed.push_back(simulator.Render(f));
+  for (const auto& [scene, pairs] : {std::pair{"3 wall frames", &wall}, std::pair{"3 wall frames + 12 board poses", &mixed}})
+    Sweep(scene, truth, *pairs);
   return 0;
 }

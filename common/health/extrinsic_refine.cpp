@@ -1,5 +1,6 @@
 #include "health/extrinsic_refine.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -11,6 +12,8 @@ namespace ws {
 namespace {
 
 constexpr double kDeg = 180 / M_PI;
+constexpr int kTrimRounds = 2;        // solve, drop the gross outliers, solve again
+constexpr double kTrimFloorPx = 1.0;
 
 void AngleAxis(const Eigen::Matrix3d& R, double om[3]) {
   ceres::RotationMatrixToAngleAxis(R.data(), om);  // column-major, as Eigen stores it
@@ -35,6 +38,44 @@ std::string Spread(const std::vector<RayMatch>& matches, cv::Size size, const Dy
            std::to_string(o.min_region_matches) + " or more, fewer than " + std::to_string(o.min_regions) +
            ": not spread enough";
   return "";
+}
+
+// Levenberg-Marquardt from (om, t) over `matches`; false, with the reason,
+// when the solver fails.
+bool Solve(const std::vector<RayMatch>& matches, double f, double loss_px, double om[3], double t[3],
+           std::string* why) {
+  ceres::Problem problem;
+  for (const RayMatch& m : matches)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RectifiedDyResidual, 1, 3, 3>(
+                                 new RectifiedDyResidual(m.left.val, m.right.val, f)),
+                             new ceres::HuberLoss(loss_px), om, t);
+  problem.SetManifold(t, new ceres::SphereManifold<3>);
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = 50;
+  options.function_tolerance = 1e-12;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) *why = "the solver failed: " + summary.message;
+  return summary.IsSolutionUsable();
+}
+
+// The matches whose |dy| under (om, t) is within max(kTrimFloorPx, 3 x the
+// median): a match a board's square off (15 px or more) goes, which a Huber
+// loss would still let pull.
+std::vector<RayMatch> Trimmed(const std::vector<RayMatch>& matches, double f, const double om[3],
+                              const double t[3]) {
+  std::vector<double> abs_dy;
+  for (const RayMatch& m : matches) {
+    double y_l, y_r;
+    RectifiedRows(om, t, m.left.val, m.right.val, &y_l, &y_r);
+    abs_dy.push_back(std::abs(f * (y_r - y_l)));
+  }
+  const double limit = std::max(kTrimFloorPx, 3 * Quantile(abs_dy, 0.5));
+  std::vector<RayMatch> kept;
+  for (size_t i = 0; i < matches.size(); ++i)
+    if (abs_dy[i] <= limit) kept.push_back(matches[i]);
+  return kept;
 }
 
 }  // namespace
@@ -67,22 +108,13 @@ RefineResult RefineExtrinsics(const StereoRig& rig, double f, const std::vector<
   AngleAxis(rig.R, om);
   const Eigen::Vector3d t0 = rig.T.normalized();
   Eigen::Vector3d t = t0;
-  ceres::Problem problem;
-  for (const RayMatch& m : matches)
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RectifiedDyResidual, 1, 3, 3>(
-                                 new RectifiedDyResidual(m.left.val, m.right.val, f)),
-                             new ceres::HuberLoss(o.loss_px), om, t.data());
-  problem.SetManifold(t.data(), new ceres::SphereManifold<3>);
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = 50;
-  options.function_tolerance = 1e-12;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  if (!summary.IsSolutionUsable()) {
-    result.refused = "the solver failed: " + summary.message;
-    return result;
+  std::vector<RayMatch> used = matches;
+  for (int round = 0; round < kTrimRounds; ++round) {
+    if (!Solve(used, f, o.loss_px, om, t.data(), &result.refused)) return result;
+    used = Trimmed(matches, f, om, t.data());
   }
+  if (!Solve(used, f, o.loss_px, om, t.data(), &result.refused)) return result;
+  result.matches_used = int(used.size());
 
   StereoRig refined = rig;
   refined.R = Rotation(om);

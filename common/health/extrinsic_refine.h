@@ -3,7 +3,10 @@
 // accumulated matches, each camera's intrinsics and distortion fixed, by
 // minimising the rectified vertical disparity (health/rectified_dy_residual.h)
 // under a Huber loss:
-//   min over om, t (|t| = 1)   sum_i huber(dy_i(om, t)^2),   R = exp([om]x), T = |T_0| t.
+//   min over om, t (|t| = 1)   sum_i huber(dy_i(om, t)^2),   R = exp([om]x), T = |T_0| t,
+// solved three times, each time without the matches whose |dy| under the
+// last solution exceeds max(1 px, 3 x the median) (gross mismatches, which a
+// Huber loss still lets pull, e.g. a board's corners a square off).
 // Guard rails: too few or too clustered matches, or a correction larger
 // than max_correction_deg (of R, or of T's direction), are refused with the
 // reason and change nothing.
@@ -36,9 +39,9 @@ struct RefineResult {
   bool applied = false;
   std::string refused;  // why not, when not applied
   StereoRig rig;        // the refined rig (the input rig when refused)
-  int matches = 0;
+  int matches = 0, matches_used = 0;  // given, and kept by the last solve
   double rotation_change_deg = 0, translation_direction_change_deg = 0;
-  double dy_median_before = -1, dy_p95_before = -1;  // |dy|, px, over the matches
+  double dy_median_before = -1, dy_p95_before = -1;  // |dy|, px, over all the matches
   double dy_median_after = -1, dy_p95_after = -1;
 };
 

@@ -23,6 +23,7 @@ nlohmann::ordered_json HealthReport(const widestereo::calibration_health_t& h, i
     j["refine"] = {{"applied", r.applied},
                    {"refused", r.refused},
                    {"matches", r.matches},
+                   {"matches_used", r.matches_used},
                    {"rotation_change_deg", r.rotation_change_deg},
                    {"translation_direction_change_deg", r.translation_direction_change_deg},
                    {"dy_median_before_px", r.dy_median_before},

@@ -4,7 +4,7 @@
 //   {"verdict": "ok", "dy_median_px": 0.04, "dy_p95_px": 0.12, "matches": 4210, "frames": 5,
 //    "max_dy_px": 0.3, "frames_checked": 5, "calibration": "calibration file calib.yaml",
 //    "grid": {"rows": 3, "cols": 4, "dy_px": [[...], ...], "matches": [[...], ...]},
-//    "refine": {"applied": true, "refused": "", "matches": 20000,
+//    "refine": {"applied": true, "refused": "", "matches": 20000, "matches_used": 19800,
 //               "rotation_change_deg": 0.2, "translation_direction_change_deg": 0.01,
 //               "dy_median_before_px": 1.1, "dy_p95_before_px": 2.0,
 //               "dy_median_after_px": 0.04, "dy_p95_after_px": 0.12,
