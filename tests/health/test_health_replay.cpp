@@ -146,3 +146,22 @@ TEST_F(HealthReplay, CorrectionBeyondTheBoundIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// A replay is a batch filter: the same log gives the same messages, byte for byte.
+TEST_F(HealthReplay, SameLogGivesTheSameHealthMessages) {
+  const std::string calib = Calibration(RightCameraTurned(*truth_, kRoll, 0.3), "replay-roll-0.3");
+  std::vector<std::vector<uint8_t>> payloads[2];
+  for (int run = 0; run < 2; ++run) {
+    const HealthRun r = Run("wall", calib, "replay-" + std::to_string(run), {"--refine"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const auto& e : ReadLog(r.out_log))
+      if (e.channel == ws::channel::kCalibrationHealth || e.channel == ws::channel::kStereoCalibration)
+        payloads[run].push_back(e.data);
+  }
+  EXPECT_EQ(payloads[0].size(), 4u) << "three CALIBRATION_HEALTH and the refined STEREO_CALIBRATION";
+  EXPECT_EQ(payloads[0], payloads[1]);
+}
+
+}  // namespace
