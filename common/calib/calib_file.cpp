@@ -201,6 +201,7 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
     cv::FileStorage fs(tmp, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
     if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
     for (const char* line : kHeader) fs.writeComment(line);
+    if (!file.note.empty()) fs.writeComment(file.note);
     fs << "model" << file.model;
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
     if (!file.mono) {

@@ -50,6 +50,7 @@ struct CalibrationFile {
   Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
   double rms = 0;                                   // stereo, pixels
   int views = 0;                                    // stereo views
+  std::string note;  // written as a comment after the header (e.g. what refined it); not read back
 };
 
 // What ReadCalibrationFile throws: "FILE: FIELD: REASON", e.g.

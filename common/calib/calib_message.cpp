@@ -28,4 +28,29 @@ widestereo::stereo_calibration_t ToMessage(const StereoCalibration& s, int64_t u
   return msg;
 }
 
+widestereo::stereo_calibration_t ToMessage(const CalibrationFile& f, int64_t utime) {
+  widestereo::stereo_calibration_t msg = MessageFromStereoRig(StereoRig{f.left, f.right, f.R, f.T}, utime);
+  msg.left.rms = f.left_rms;
+  msg.right.rms = f.right_rms;
+  msg.rms = f.rms;
+  return msg;
+}
+
+CalibrationFile ToCalibrationFile(const widestereo::stereo_calibration_t& msg) {
+  const StereoRig rig = StereoRigFromMessage(msg);
+  CalibrationFile f;
+  f.model = rig.left.distortion.kind;
+  f.left = rig.left;
+  f.right = rig.right;
+  f.left_rms = msg.left.rms;
+  f.right_rms = msg.right.rms;
+  f.left_views = msg.left.nviews;
+  f.right_views = msg.right.nviews;
+  f.R = rig.R;
+  f.T = rig.T;
+  f.rms = msg.rms;
+  f.views = msg.nviews;
+  return f;
+}
+
 }  // namespace ws::calib

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "calib/calib_file.h"
 #include "calib/calibrate.h"
 #include "models/camera_model.h"
 #include "widestereo/stereo_calibration_t.hpp"
@@ -15,5 +16,9 @@ namespace ws::calib {
 
 widestereo::camera_calibration_t ToMessage(const CameraCalibration& camera);
 widestereo::stereo_calibration_t ToMessage(const StereoCalibration& calibration, int64_t utime);
+// A calibration file as the message (RMS and view counts kept; no per-view
+// RMS or deviations) and a message as the file (its quality figures kept).
+widestereo::stereo_calibration_t ToMessage(const CalibrationFile& file, int64_t utime);
+CalibrationFile ToCalibrationFile(const widestereo::stereo_calibration_t& msg);
 
 }  // namespace ws::calib

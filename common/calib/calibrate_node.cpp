@@ -8,6 +8,7 @@
 #include "calib/calib_file.h"
 #include "calib/calib_message.h"
 #include "calib/calib_plots.h"
+#include "calib/calib_publish.h"
 #include "calib/report.h"
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
@@ -235,7 +236,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
       process_.log().Info("one-camera rig: nothing to publish on " +
                           std::string(channel::kStereoCalibration));
     else
-      process_.Publish(channel::kStereoCalibration, ToMessage(primary, process_.Now()));
+      PublishCalibration(process_, ToMessage(primary, process_.Now()));
     for (const auto& failure : results.failed)
       process_.ReportError(failure.model + " failed: " + failure.error);
     for (const auto& r : results.solved) {

@@ -112,6 +112,20 @@ void Validate(const widestereo::calibration_status_t& msg) {
   Require(msg.grid_rows >= 0 && msg.grid_cols >= 0, "calibration_status_t", "negative grid size");
 }
 
+void Validate(const widestereo::calibration_health_t& msg) {
+  const char* t = "calibration_health_t";
+  Require(msg.verdict == "ok" || msg.verdict == "misaligned" || msg.verdict == "unknown", t,
+          "unknown verdict '" + msg.verdict + "'");
+  Require(msg.grid_rows >= 0 && msg.grid_cols >= 0, t, "negative grid size");
+  Require(msg.matches >= 0 && msg.frames >= 0, t, "negative match or frame count");
+  const double figures[] = {msg.max_dy_px, msg.dy_median_px, msg.dy_p95_px};
+  Require(AllFinite(figures), t, "non-finite dy figures");
+  for (const auto& row : msg.grid_dy_px) Require(AllFinite(row), t, "non-finite region dy");
+  for (const auto& row : msg.grid_matches)
+    Require(std::all_of(row.begin(), row.end(), [](int32_t n) { return n >= 0; }), t,
+            "negative region match count");
+}
+
 void Validate(const widestereo::disparity_t& msg) {
   Validate(msg.disparity);
   Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,

@@ -3,6 +3,7 @@
 // meaning). Each throws DecodeError naming the type, field and reason.
 #pragma once
 
+#include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -22,6 +23,7 @@ void Validate(const widestereo::stereo_corners_t& msg);
 void Validate(const widestereo::camera_calibration_t& msg);
 void Validate(const widestereo::stereo_calibration_t& msg);
 void Validate(const widestereo::calibration_status_t& msg);
+void Validate(const widestereo::calibration_health_t& msg);
 void Validate(const widestereo::disparity_t& msg);
 void Validate(const widestereo::point_cloud_t& msg);
 void Validate(const widestereo::cloud_stats_t& msg);

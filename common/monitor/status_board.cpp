@@ -53,6 +53,8 @@ void StatusBoard::Add(const widestereo::process_status_t& status) {
 
 void StatusBoard::Add(const widestereo::calibration_status_t& status) { calibration_ = status; }
 
+void StatusBoard::Add(const widestereo::calibration_health_t& health) { health_ = health; }
+
 std::string StatusBoard::Render() const {
   std::ostringstream out;
   out << Format("%-18s %-12s %7s %9s  %-22s %9s %9s %8s %8s %8s\n", "PROCESS", "STATE", "PID",
@@ -80,6 +82,13 @@ std::string StatusBoard::Render() const {
                   CoveragePercent(c.coverage_left), CoveragePercent(c.coverage_right),
                   c.rms < 0 ? "-" : Format("%.3f px", c.rms).c_str());
     if (!c.hint.empty()) out << "hint: " << c.hint << "\n";
+  }
+  if (health_) {
+    const auto& h = *health_;
+    out << Format("\nhealth: %-10s median |dy| %s  p95 %s  (max %.2f px; %d matches in %d frames)\n",
+                  h.verdict.c_str(), h.dy_median_px < 0 ? "-" : Format("%.3f px", h.dy_median_px).c_str(),
+                  h.dy_p95_px < 0 ? "-" : Format("%.3f px", h.dy_p95_px).c_str(), h.max_dy_px, h.matches,
+                  h.frames);
   }
   return out.str();
 }

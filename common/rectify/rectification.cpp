@@ -23,6 +23,11 @@ void BouguetRotations(const StereoRig& rig, cv::Matx33d* R_left, cv::Matx33d* R_
   *R_right = cv::Matx33d(R2);
 }
 
+// K_rect^-1 (u, v, 1): the rectified frame's ray through pixel (u, v).
+cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v) {
+  return {(u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1};
+}
+
 void BuildMaps(const Camera& camera, const cv::Matx33d& R_rect, const Rectification& rect,
                cv::Mat maps[2]) {
   cv::Mat map_x(rect.size, CV_32FC1), map_y(rect.size, CV_32FC1);
@@ -32,7 +37,7 @@ void BuildMaps(const Camera& camera, const cv::Matx33d& R_rect, const Rectificat
       float* mx = map_x.ptr<float>(v);
       float* my = map_y.ptr<float>(v);
       for (int u = 0; u < rect.size.width; ++u) {
-        const cv::Vec3d ray = to_camera * cv::Vec3d((u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1);
+        const cv::Vec3d ray = to_camera * RectifiedRay(rect, u, v);
         const auto pixel = camera.Project(Eigen::Vector3d(ray[0], ray[1], ray[2]));
         mx[u] = pixel ? float((*pixel)[0]) : -1.f;
         my[u] = pixel ? float((*pixel)[1]) : -1.f;
@@ -88,6 +93,10 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
   if (!(p[2] > 0)) return false;
   *rectified = cv::Point2d(rect.f * p[0] / p[2] + rect.cx, rect.f * p[1] / p[2] + rect.cy);
   return true;
+}
+
+cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Point2d& pixel) {
+  return (left ? rect.R_left : rect.R_right).t() * RectifiedRay(rect, pixel.x, pixel.y);
 }
 
 }  // namespace ws

@@ -50,4 +50,8 @@ void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& 
 bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
                   const cv::Point2d& pixel, cv::Point2d* rectified);
 
+// The ray, in the left (right) camera's frame, that the rectified pixel
+// samples: R_i^T K_rect^-1 (u, v, 1), not normalised.
+cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Point2d& pixel);
+
 }  // namespace ws

@@ -5,6 +5,7 @@
 
 #include "lcm_io/channels.h"
 #include "rectify/match_node.h"
+#include "rectify/rectify_options.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-match",
@@ -26,8 +27,7 @@ int main(int argc, char** argv) {
   app.add_option("--uniqueness", m.uniqueness_ratio, "Uniqueness ratio, percent")->capture_default_str();
   app.add_option("--speckle-window", m.speckle_window, "Speckle filter window (0: off)")->capture_default_str();
   app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
-  app.add_option("--focal-scale", config.rectify.focal_scale,
-                 "Rectified focal length over the cameras' smallest (< 1 keeps more field)")->capture_default_str();
+  ws::AddRectifyOptions(app, config.rectify);
   app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
   app.add_option("--cloud-step", config.cloud.step,
                  "Every N-th pixel of every N-th row becomes a cloud point (1: all; 2 makes the "

@@ -11,7 +11,8 @@
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-status",
                      "Shows every widestereo process on the bus: message rates, drops, "
-                     "rejections, errors, and the calibration's state and coverage.");
+                     "rejections, errors, the calibration's state and coverage, and its health "
+                     "(stereo-health's verdict and median |dy|).");
   double duration_s = 0;
   cli.app().add_option("--duration", duration_s, "Exit after this many seconds (0: run until Ctrl-C)");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
         ws::channel::kProcessStatus, [&](const auto& m) { board.Add(m); });
     process.Subscribe<widestereo::calibration_status_t>(
         ws::channel::kCalibrationStatus, [&](const auto& m) { board.Add(m); });
+    process.Subscribe<widestereo::calibration_health_t>(
+        ws::channel::kCalibrationHealth, [&](const auto& m) { board.Add(m); });
     const bool tty = isatty(STDOUT_FILENO);
     auto show = [&] {
       std::printf("%s%s\n", tty ? "\033[H\033[2J" : "", board.Render().c_str());

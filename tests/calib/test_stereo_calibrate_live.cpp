@@ -51,11 +51,7 @@ struct Bus {
         this);
   }
   // Handles messages until `done` or `seconds` have passed; returns `done`.
-  bool Until(double seconds, const std::function<bool()>& done) {
-    const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-    while (!done() && Clock::now() < end) lcm.handleTimeout(10);
-    return done();
-  }
+  bool Until(double seconds, const std::function<bool()>& done) { return ws::test::HandleUntil(lcm, seconds, done); }
   lcm::LCM lcm;
   std::vector<widestereo::calibration_status_t> statuses;
   std::vector<Clock::time_point> status_times;

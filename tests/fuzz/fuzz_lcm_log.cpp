@@ -35,6 +35,7 @@ const std::map<std::string, Decoder>& Decoders() {
       {ch::kStereoCorners, DecodeAs<stereo_corners_t>},
       {ch::kStereoCommand, DecodeAs<command_t>},
       {ch::kCalibrationStatus, DecodeAs<calibration_status_t>},
+      {ch::kCalibrationHealth, DecodeAs<calibration_health_t>},
       {ch::kStereoCalibration, DecodeAs<stereo_calibration_t>},
       {ch::kStereoDisparity, DecodeAs<disparity_t>},
       {ch::kStereoCloud, DecodeAs<point_cloud_t>},

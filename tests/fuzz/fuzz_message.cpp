@@ -94,6 +94,7 @@ void Show(const Status& status) {
 }
 void Use(const process_status_t& status) { Show(status); }
 void Use(const calibration_status_t& status) { Show(status); }
+void Use(const calibration_health_t& health) { Show(health); }
 
 // stereo-cloud runs its filter chain on every cloud.
 void Use(const point_cloud_t& cloud) {

@@ -24,6 +24,7 @@
 #include "lcm_io/image_codec.h"
 #include "rectify/stereo_rig.h"
 #include "sim/sim_config.h"
+#include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -204,6 +205,27 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   calibration.rms = 0.3;
   calibration.hint = "move the board to the top left";
   seeds.Message("collecting", calibration);
+  calibration_health_t health{};
+  health.utime = 1;
+  health.frame_id = 7;
+  health.verdict = "misaligned";
+  health.max_dy_px = 0.3;
+  health.dy_median_px = 1.2;
+  health.dy_p95_px = 2.8;
+  health.matches = 960;
+  health.frames = 3;
+  health.grid_rows = 3;
+  health.grid_cols = 4;
+  health.grid_dy_px = {{-1.5, -0.5, 0.5, 1.5}, {-1.4, -0.4, 0.4, 1.4}, {-1.5, -0.5, 0.5, 1.5}};
+  health.grid_matches = {{20, 100, 130, 30}, {30, 150, 140, 70}, {10, 100, 120, 30}};
+  health.calibration = "calibration file config/calib/sim-default.yaml";
+  seeds.Message("misaligned", health);
+  health.verdict = "unknown";
+  health.dy_median_px = health.dy_p95_px = -1;
+  health.matches = health.frames = health.grid_rows = health.grid_cols = 0;
+  health.grid_dy_px.clear();
+  health.grid_matches.clear();
+  seeds.Message("unknown-no-grid", health);
   command_t command{};
   command.command = "solve";
   command.target = "stereo-calibrate";
@@ -269,7 +291,8 @@ void LogSeeds(Seeds& seeds, const std::vector<stereo_frame_t>& frames,
 }
 
 void ConfigSeeds(Seeds& seeds, const fs::path& source) {
-  for (const char* process : {"stereo-capture", "stereo-detect", "stereo-match", "stereo-calibrate", "stereo-cloud"})
+  for (const char* process :
+       {"stereo-capture", "stereo-detect", "stereo-match", "stereo-calibrate", "stereo-cloud", "stereo-health"})
     seeds.Copy("fuzz_yaml_config", source / "config" / (std::string(process) + ".yaml"));
   for (const auto& entry : fs::directory_iterator(source / "config" / "sim"))
     seeds.Copy("fuzz_sim_config", entry.path());

@@ -146,6 +146,12 @@ std::string UniqueUdpmUrl(int offset) {
          "?ttl=0";
 }
 
+bool HandleUntil(lcm::LCM& lcm, double seconds, const std::function<bool()>& done) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (!done() && std::chrono::steady_clock::now() < end) lcm.handleTimeout(10);
+  return done();
+}
+
 void WriteLog(const std::string& path, const std::vector<LogEvent>& events) {
   lcm::LogFile log(path, "w");
   if (!log.good()) throw std::runtime_error("cannot write " + path);

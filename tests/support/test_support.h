@@ -3,11 +3,16 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "widestereo/channel_counters_t.hpp"
 #include "widestereo/command_t.hpp"
+
+namespace lcm {
+class LCM;
+}
 
 namespace ws::test {
 
@@ -84,6 +89,9 @@ constexpr bool kMemoryBoundsMeaningful = true;
 // A udpm URL on this host (ttl=0) with a port unique to this test process, so
 // tests running at the same time do not hear each other.
 std::string UniqueUdpmUrl(int offset = 0);
+
+// Handles messages on `lcm` until `done` or `seconds` have passed; returns `done`.
+bool HandleUntil(lcm::LCM& lcm, double seconds, const std::function<bool()>& done);
 
 struct LogEvent {
   std::string channel;
