@@ -8,13 +8,16 @@
 namespace ws {
 namespace {
 
+// The coefficients' key, as in calibration files: alpha for the B-splines (bspline, bspline_theta), else k.
+const char* CoefficientKey(const std::string& kind) { return kind.rfind("bspline", 0) == 0 ? "alpha" : "k"; }
+
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m) {
   fs << "{";
   fs << "name" << name;
   fs << "kind" << m.distortion.kind;
   fs << "degree" << m.distortion.degree;
   fs << "knots" << m.distortion.knots;
-  fs << (m.distortion.kind == "bspline" ? "alpha" : "k") << m.distortion.coeffs;
+  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
   fs << "fx" << m.fx << "fy" << m.fy << "cx" << m.cx << "cy" << m.cy << "p1" << m.p1 << "p2" << m.p2;
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   fs << "K" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
@@ -91,7 +94,7 @@ CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::str
   m.distortion.kind = r.Text(node, "kind", where);
   m.distortion.degree = r.Int(node, "degree", where);
   m.distortion.knots = r.Reals(node, "knots", where);
-  m.distortion.coeffs = r.Reals(node, m.distortion.kind == "bspline" ? "alpha" : "k", where);
+  m.distortion.coeffs = r.Reals(node, CoefficientKey(m.distortion.kind), where);
   m.fx = r.Real(node, "fx", where);
   m.fy = r.Real(node, "fy", where);
   m.cx = r.Real(node, "cx", where);

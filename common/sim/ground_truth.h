@@ -6,7 +6,7 @@
 //
 //   config: "config/sim/default.yaml"     seed: 1
 //   cameras:                               # calibration-file style, "left" then "right"
-//     - { name: left, kind: bspline, degree: 3, knots: [...], alpha: [...],   (poly: k: [...])
+//     - { name: left, kind: bspline, degree: 3, knots: [...], alpha: [...],   (bspline_theta too; poly, kb4: k: [...])
 //         fx, fy, cx, cy, p1, p2, image_width, image_height, K: !!opencv-matrix }
 //   R: !!opencv-matrix, T: !!opencv-matrix     # X_right = R X_left + T (metres)
 //   board: "chessboard:9x6:0.05"               # --board spec; "" without board frames

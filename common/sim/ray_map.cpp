@@ -212,4 +212,13 @@ double RayMap::MaxInterpolationErrorPx(const Camera& camera, int samples_per_sid
   return worst;
 }
 
+std::vector<Eigen::Vector3d> RaysAround(double theta, int n) {
+  std::vector<Eigen::Vector3d> rays;
+  for (int i = 0; i < n; ++i) {
+    const double azimuth = 2 * M_PI * i / n;
+    rays.emplace_back(std::sin(theta) * std::cos(azimuth), std::sin(theta) * std::sin(azimuth), std::cos(theta));
+  }
+  return rays;
+}
+
 }  // namespace ws

@@ -55,4 +55,8 @@ class RayMap {
   std::vector<cv::Vec3f> rays_;
 };
 
+// n unit rays theta off the optical axis, evenly around it: the rim of a
+// lens's image circle when theta is its half field.
+std::vector<Eigen::Vector3d> RaysAround(double theta, int n);
+
 }  // namespace ws

@@ -19,6 +19,7 @@
 #include "models/lens_table.h"
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
+#include "sim/ray_map.h"
 
 namespace ws {
 namespace {
@@ -208,10 +209,8 @@ void CheckInvertible(Fields& fields, const std::string& path, const CameraModel&
   auto radius = [&](const cv::Point2d& p) { return std::hypot((p.x - model.cx) / model.fx, (p.y - model.cy) / model.fy); };
   double circle = std::numeric_limits<double>::infinity();
   if (max_theta < M_PI)
-    for (int i = 0; i < 64; ++i) {
-      const double azimuth = 2 * M_PI * i / 64;
-      const auto pixel = camera.Project(Eigen::Vector3d(std::sin(max_theta) * std::cos(azimuth),
-                                                        std::sin(max_theta) * std::sin(azimuth), std::cos(max_theta)));
+    for (const Eigen::Vector3d& ray : RaysAround(max_theta, 64)) {
+      const auto pixel = camera.Project(ray);
       if (!pixel) fields.Fail(path, "the lens model has no pixel for rays " + Number(max_theta * 180 / M_PI) +
                                         " degrees off axis (field_deg too wide for the model)");
       const cv::Point2d p((*pixel)[0], (*pixel)[1]);

@@ -64,9 +64,8 @@ class Projector {
     box_ = cv::Rect2d(0, 0, m.image_width - 1, m.image_height - 1);
     if (max_theta < M_PI) {
       cv::Point2d low(m.cx, m.cy), high = low;
-      for (int i = 0; i < 64; ++i) {
-        const double azimuth = 2 * M_PI * i / 64, s = std::sin(max_theta);
-        if (const auto p = camera.Project(Eigen::Vector3d(s * std::cos(azimuth), s * std::sin(azimuth), std::cos(max_theta)))) {
+      for (const Eigen::Vector3d& ray : RaysAround(max_theta, 64)) {
+        if (const auto p = camera.Project(ray)) {
           low = cv::Point2d(std::min(low.x, (*p)[0]), std::min(low.y, (*p)[1]));
           high = cv::Point2d(std::max(high.x, (*p)[0]), std::max(high.y, (*p)[1]));
         }
