@@ -400,6 +400,7 @@ SimTruth Simulator::Truth() const {
   truth.seed = config_.seed;
   truth.left = config_.left;
   truth.right = config_.right;
+  truth.max_theta = config_.max_theta;
   truth.R = config_.R;
   truth.T = config_.T;
   truth.board = config_.board ? config_.board->board.id : "";

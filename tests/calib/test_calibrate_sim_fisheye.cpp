@@ -33,7 +33,9 @@ TEST(CalibSimFisheye, RenderedDetectedAndCalibratedRecoversTheTruth) {
   for (const std::string model : {"bspline_theta", "kb4"}) {
     SCOPED_TRACE(model);
     // The knee (4.6 degrees wide) needs finer knots than the default 13 over
-    // the 100-degree field (as in test_calib_fisheye.cpp).
+    // the 100-degree field (as in test_calib_fisheye.cpp): here 13 give
+    // 0.15 / 0.15 px, 17 0.10 / 0.05 px, 21 0.09 / 0.05 px, 25 0.09 / 0.05 px
+    // (the rest is the detected corners' own error, ~0.06 px RMS).
     const auto run = CalibrateOnce(dir, corners, model, {"--model", model, "--knots", "21"});
     ASSERT_EQ(run.exit_code, 0) << run.output;
     const CalibrationFile file = ReadCalibrationFile(dir + "/" + model + ".yaml");
