@@ -81,7 +81,7 @@ TEST(SimFisheye, RaysReachBeyond90DegreesAndStopAtTheImageCircle) {
     EXPECT_GT(widest, 99.5);
     EXPECT_LT(worst_vertex * camera.model().fx, 1e-4);
     EXPECT_LT(interpolation_px, 2e-3);
-    // The image circle (radius ~455 px) inside the 1280 x 960 image: about 2/3 of it.
+    // The image circle (radius ~455 px) inside the 1280 x 960 image: about half of it.
     EXPECT_NEAR(inside / double((rays.vertex_rows() / 3 + 1) * (rays.vertex_cols() / 3 + 1)), 0.53, 0.05);
   }
   // Past the circle the image is black (noise clipped at 0), never the scene.
