@@ -1,5 +1,6 @@
 #include "sim/ground_truth.h"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -8,16 +9,20 @@
 namespace ws {
 namespace {
 
-void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m) {
+// The coefficients' key, as in calibration files: alpha for the B-splines (bspline, bspline_theta), else k.
+const char* CoefficientKey(const std::string& kind) { return kind.rfind("bspline", 0) == 0 ? "alpha" : "k"; }
+
+void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double max_theta) {
   fs << "{";
   fs << "name" << name;
   fs << "kind" << m.distortion.kind;
   fs << "degree" << m.distortion.degree;
   fs << "knots" << m.distortion.knots;
-  fs << (m.distortion.kind == "bspline" ? "alpha" : "k") << m.distortion.coeffs;
+  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
   fs << "fx" << m.fx << "fy" << m.fy << "cx" << m.cx << "cy" << m.cy << "p1" << m.p1 << "p2" << m.p2;
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   fs << "K" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
+  fs << "field_deg" << 2 * max_theta * 180 / M_PI;
   fs << "}";
 }
 
@@ -86,12 +91,19 @@ class Reader {
   std::string path_;
 };
 
-CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::string& where) {
+// The camera, and its half field (radians) from field_deg (pi without one).
+CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::string& where, double* max_theta) {
+  *max_theta = M_PI;
+  if (!node["field_deg"].isNone()) {
+    const double field_deg = r.Real(node, "field_deg", where);
+    if (!(field_deg > 0 && field_deg <= 360)) r.Fail(where + "field_deg", "must be greater than 0 and at most 360");
+    *max_theta = field_deg / 2 * M_PI / 180;
+  }
   CameraModel m;
   m.distortion.kind = r.Text(node, "kind", where);
   m.distortion.degree = r.Int(node, "degree", where);
   m.distortion.knots = r.Reals(node, "knots", where);
-  m.distortion.coeffs = r.Reals(node, m.distortion.kind == "bspline" ? "alpha" : "k", where);
+  m.distortion.coeffs = r.Reals(node, CoefficientKey(m.distortion.kind), where);
   m.fx = r.Real(node, "fx", where);
   m.fy = r.Real(node, "fy", where);
   m.cx = r.Real(node, "cx", where);
@@ -148,8 +160,8 @@ void WriteSimTruth(const std::string& path, const SimTruth& truth) {
   fs << "config" << truth.config;
   fs << "seed" << std::to_string(truth.seed);
   fs << "cameras" << "[";
-  WriteCamera(fs, "left", truth.left);
-  WriteCamera(fs, "right", truth.right);
+  WriteCamera(fs, "left", truth.left, truth.max_theta[0]);
+  WriteCamera(fs, "right", truth.right, truth.max_theta[1]);
   fs << "]";
   fs.writeComment("X_right = R X_left + T, metres");
   fs << "R" << cv::Mat(truth.R) << "T" << cv::Mat(truth.T);
@@ -196,8 +208,8 @@ SimTruth LoadSimTruth(const std::string& path) {
   }
   const cv::FileNode cameras = root["cameras"];
   if (!cameras.isSeq() || cameras.size() != 2) r.Fail("cameras", "must list the left and the right camera");
-  truth.left = ReadCamera(r, cameras[0], "cameras[0].");
-  truth.right = ReadCamera(r, cameras[1], "cameras[1].");
+  truth.left = ReadCamera(r, cameras[0], "cameras[0].", &truth.max_theta[0]);
+  truth.right = ReadCamera(r, cameras[1], "cameras[1].", &truth.max_theta[1]);
   truth.R = cv::Matx33d(r.Matrix(root, "R", "", 3, 3));
   truth.T = cv::Vec3d(r.Matrix(root, "T", "", 3, 1));
   truth.board = r.Text(root, "board", "");

@@ -6,8 +6,9 @@
 //
 //   config: "config/sim/default.yaml"     seed: 1
 //   cameras:                               # calibration-file style, "left" then "right"
-//     - { name: left, kind: bspline, degree: 3, knots: [...], alpha: [...],   (poly: k: [...])
-//         fx, fy, cx, cy, p1, p2, image_width, image_height, K: !!opencv-matrix }
+//     - { name: left, kind: bspline, degree: 3, knots: [...], alpha: [...],   (bspline_theta too; poly, kb4: k: [...])
+//         fx, fy, cx, cy, p1, p2, image_width, image_height, K: !!opencv-matrix,
+//         field_deg: 200 }     # the lens's full field (sim_config.h; 360: no limit; optional when reading)
 //   R: !!opencv-matrix, T: !!opencv-matrix     # X_right = R X_left + T (metres)
 //   board: "chessboard:9x6:0.05"               # --board spec; "" without board frames
 //   rendering: { supersample, blur_sigma, noise_sigma, black, white, background, gamma }
@@ -21,13 +22,15 @@
 //         wall_distance: 2.0, wall_normal: [nx, ny, nz], wall_offset: d }   # n . X = d
 //
 // Corner pixels are projected through the camera models (pixel centres at
-// integer coordinates). A corner is in_image when it is in front of the
-// camera, on the side of the board the camera sees, and inside
-// [0, W-1] x [0, H-1]. view is "full" when every corner is in the image and
+// integer coordinates). A corner is in_image when the lens images it (in
+// front of a pinhole camera, within an angle model's field), it is on the
+// side of the board the camera sees, and inside [0, W-1] x [0, H-1]. view is "full" when every corner is in the image and
 // the whole board with its white margin is too (the board a chessboard
 // detector should find), "partial" when some corners are, "none" otherwise.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -66,6 +69,7 @@ struct SimTruth {
   std::string config;
   uint64_t seed = 0;
   CameraModel left, right;
+  std::array<double, 2> max_theta{M_PI, M_PI};  // each lens's half field (SimConfig::max_theta)
   cv::Matx33d R = cv::Matx33d::eye();
   cv::Vec3d T{0, 0, 0};
   std::string board;

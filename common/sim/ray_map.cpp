@@ -98,10 +98,10 @@ class RadialInverse {
   std::vector<double> r_, slope_;
 };
 
-std::string Key(const CameraModel& m) {
+std::string Key(const CameraModel& m, double max_theta) {
   std::ostringstream out;
   out.precision(17);
-  out << m.image_width << ' ' << m.image_height << ' ' << m.fx << ' ' << m.fy << ' ' << m.cx << ' '
+  out << max_theta << ' ' << m.image_width << ' ' << m.image_height << ' ' << m.fx << ' ' << m.fy << ' ' << m.cx << ' '
       << m.cy << ' ' << m.p1 << ' ' << m.p2 << ' ' << m.distortion.kind << ' ' << m.distortion.degree;
   for (double k : m.distortion.knots) out << ' ' << k;
   out << " |";
@@ -111,9 +111,15 @@ std::string Key(const CameraModel& m) {
 
 }  // namespace
 
-RayMap::RayMap(const CameraModel& model)
+RayMap::RayMap(const CameraModel& model, double max_theta)
     : cols_(model.image_width + 1), rows_(model.image_height + 1), rays_(size_t(cols_) * rows_) {
   const Camera camera(model);  // validates
+  const double min_z = std::cos(max_theta);
+  auto store = [&](int i, int j, const double* ray) {
+    rays_[size_t(j) * cols_ + i] = ray && (max_theta >= M_PI || ray[2] >= min_z)
+                                       ? cv::Vec3f(float(ray[0]), float(ray[1]), float(ray[2]))
+                                       : cv::Vec3f(0, 0, 0);
+  };
   auto vertex = [&](int i, int j) { return cv::Vec2d(i - 0.5, j - 0.5); };
   if (model.p1 == 0 && model.p2 == 0) {
     double rd_max = 0;
@@ -125,22 +131,25 @@ RayMap::RayMap(const CameraModel& model)
     // The principal point may lie outside the image: then the farthest
     // vertex is still a corner, and the nearest does not matter.
     const RadialInverse inverse(model.distortion, rd_max * (1 + 1e-9), 16384);
+    // The ray of ideal coordinates: (x, y, 1) normalized, or by the angle (radial_coordinate.h).
+    const DistortionFunction function(model.distortion);
+    auto ray_of = [&](const double ideal[2], double ray[3]) {
+      return std::visit([&](const auto& m) { return std::decay_t<decltype(m)>::Coordinate::Ray(ideal, ray); },
+                        function.model());
+    };
     cv::parallel_for_(cv::Range(0, rows_), [&](const cv::Range& range) {
       for (int j = range.start; j < range.end; ++j)
         for (int i = 0; i < cols_; ++i) {
           const cv::Vec2d p = vertex(i, j);
           const double xd = (p[0] - model.cx) / model.fx, yd = (p[1] - model.cy) / model.fy;
           const double rd = std::hypot(xd, yd);
-          double r = 0;
-          cv::Vec3f& ray = rays_[size_t(j) * cols_ + i];
-          if (rd == 0) {
-            ray = cv::Vec3f(0, 0, 1);
-          } else if (inverse(rd, &r)) {
-            const double x = xd * r / rd, y = yd * r / rd, norm = std::sqrt(x * x + y * y + 1);
-            ray = cv::Vec3f(float(x / norm), float(y / norm), float(1 / norm));
-          } else {
-            ray = cv::Vec3f(0, 0, 0);
+          double r = 0, ray[3] = {0, 0, 1};
+          bool found = rd == 0;
+          if (!found && inverse(rd, &r)) {
+            const double ideal[2] = {xd * r / rd, yd * r / rd};
+            found = ray_of(ideal, ray);
           }
+          store(i, j, found ? ray : nullptr);
         }
     });
   } else {
@@ -149,24 +158,23 @@ RayMap::RayMap(const CameraModel& model)
         for (int i = 0; i < cols_; ++i) {
           const cv::Vec2d p = vertex(i, j);
           const auto ray = camera.Unproject(Eigen::Vector2d(p[0], p[1]));
-          rays_[size_t(j) * cols_ + i] =
-              ray ? cv::Vec3f(float((*ray)[0]), float((*ray)[1]), float((*ray)[2])) : cv::Vec3f(0, 0, 0);
+          store(i, j, ray ? ray->data() : nullptr);
         }
     });
   }
-  invalid_ = int(std::count_if(rays_.begin(), rays_.end(), [](const cv::Vec3f& r) { return !(r[2] > 0); }));
+  invalid_ = int(std::count_if(rays_.begin(), rays_.end(), [](const cv::Vec3f& r) { return !IsRay(r); }));
 }
 
-std::shared_ptr<const RayMap> RayMap::For(const CameraModel& model) {
+std::shared_ptr<const RayMap> RayMap::For(const CameraModel& model, double max_theta) {
   static std::mutex mutex;
   static std::deque<std::pair<std::string, std::shared_ptr<const RayMap>>> cache;
-  const std::string key = Key(model);
+  const std::string key = Key(model, max_theta);
   {
     std::lock_guard<std::mutex> lock(mutex);
     for (const auto& [k, map] : cache)
       if (k == key) return map;
   }
-  auto map = std::make_shared<const RayMap>(model);
+  auto map = std::make_shared<const RayMap>(model, max_theta);
   std::lock_guard<std::mutex> lock(mutex);
   for (const auto& [k, existing] : cache)
     if (k == key) return existing;
@@ -202,6 +210,15 @@ double RayMap::MaxInterpolationErrorPx(const Camera& camera, int samples_per_sid
     worst = std::max(worst, std::hypot((*pixel)[0] - p.x, (*pixel)[1] - p.y));
   }
   return worst;
+}
+
+std::vector<Eigen::Vector3d> RaysAround(double theta, int n) {
+  std::vector<Eigen::Vector3d> rays;
+  for (int i = 0; i < n; ++i) {
+    const double azimuth = 2 * M_PI * i / n;
+    rays.emplace_back(std::sin(theta) * std::cos(azimuth), std::sin(theta) * std::sin(azimuth), std::cos(theta));
+  }
+  return rays;
 }
 
 }  // namespace ws

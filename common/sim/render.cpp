@@ -175,7 +175,7 @@ cv::Mat RenderPlaneWith(const RayMap& rays, const cv::Matx33d& plane_to_camera, 
       for (int i = 0; i < cols; ++i) {
         const size_t k = size_t(j) * cols + i;
         const cv::Vec3f& r = rays.Ray(i, range.start + j);
-        valid[k] = r[2] > 0;
+        valid[k] = RayMap::IsRay(r);
         p[k] = M * cv::Vec3d(r[0], r[1], r[2]);
         s[k] = valid[k] ? sample(p[k]) : PatternSample{0, kInvalidRegion};
       }

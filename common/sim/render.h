@@ -7,8 +7,8 @@
 //
 // For every pixel the four corner rays are intersected with the plane (the
 // plane-to-camera homography H maps (u, v, 1) to a camera-frame point, so a
-// ray r meets the plane at (p0 / p2, p1 / p2) with p = H^-1 r, in front of
-// the camera when p2 > 0). When all four corners lie in one region the pixel
+// ray r meets the plane at (p0 / p2, p1 / p2) with p = H^-1 r, ahead along
+// the ray when p2 > 0: rays beyond 90 degrees too). When all four corners lie in one region the pixel
 // is that region's grey level: the pixel's footprint lies in the convex hull
 // of its corners' hits, so in the region. Otherwise the pixel averages
 // supersample x supersample points at the centres of a regular grid of
@@ -97,7 +97,8 @@ class DotWallPattern final : public PlanePattern {
 
 // The linear grey image (CV_32FC1, the ray map's size) of the plane whose
 // points (u, v, 0) map to camera points by `plane_to_camera` (H = [r1 r2 t]).
-// Pixels next to a ray the lens cannot give are 0.
+// Pixels next to a ray the lens cannot give (past a fisheye's image circle)
+// are 0.
 cv::Mat RenderPlane(const RayMap& rays, const cv::Matx33d& plane_to_camera, const PlanePattern& pattern,
                     int supersample);
 

@@ -6,6 +6,8 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
@@ -13,9 +15,11 @@
 
 #include "models/curve_fit.h"
 #include "models/distortion_function.h"
+#include "models/fisheye_lens.h"
 #include "models/lens_table.h"
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
+#include "sim/ray_map.h"
 
 namespace ws {
 namespace {
@@ -190,11 +194,29 @@ std::vector<double> ParseCoefficients(Fields& fields, const std::string& field, 
   return out;
 }
 
-// Every pixel of the image must see a ray: checked along the image border
-// (the radius grows outwards, so the border is where a lens folds first).
-void CheckInvertible(Fields& fields, const std::string& path, const CameraModel& model) {
+// Every pixel of the image inside the lens's image circle must see a ray:
+// checked along the circle (rays max_theta off axis, when the lens has one)
+// and along the image border (the radius grows outwards, so the border is
+// where a lens folds first); border pixels past the circle see nothing.
+void CheckInvertible(Fields& fields, const std::string& path, const CameraModel& model, double max_theta) {
   const Camera camera(model);
   const int w = model.image_width, h = model.image_height;
+  auto fail = [&](const cv::Point2d& p) {
+    fields.Fail(path, "the lens model cannot be inverted at pixel (" + Number(p.x) + ", " + Number(p.y) +
+                          "): its distortion curve folds inside the image (a field too wide for the model?)");
+  };
+  // The smallest normalized distorted radius of the circle: pixels nearer the centre are inside it.
+  auto radius = [&](const cv::Point2d& p) { return std::hypot((p.x - model.cx) / model.fx, (p.y - model.cy) / model.fy); };
+  double circle = std::numeric_limits<double>::infinity();
+  if (max_theta < M_PI)
+    for (const Eigen::Vector3d& ray : RaysAround(max_theta, 64)) {
+      const auto pixel = camera.Project(ray);
+      if (!pixel) fields.Fail(path, "the lens model has no pixel for rays " + Number(max_theta * 180 / M_PI) +
+                                        " degrees off axis (field_deg too wide for the model)");
+      const cv::Point2d p((*pixel)[0], (*pixel)[1]);
+      if (!camera.Unproject(*pixel)) fail(p);
+      circle = std::min(circle, radius(p));
+    }
   std::vector<cv::Point2d> border;
   for (int i = 0; i <= 64; ++i) {
     const double s = i / 64.0;
@@ -204,13 +226,16 @@ void CheckInvertible(Fields& fields, const std::string& path, const CameraModel&
     border.push_back({w - 0.5, s * (h - 1) + (1 - s) * -0.5});
   }
   for (const auto& p : border)
-    if (!camera.Unproject({p.x, p.y}))
-      fields.Fail(path, "the lens model cannot be inverted at pixel (" + Number(p.x) + ", " + Number(p.y) +
-                            "): its distortion curve folds inside the image (a field too wide for the model?)");
+    if (radius(p) < circle && !camera.Unproject({p.x, p.y})) fail(p);
 }
 
-CameraModel ParseCamera(Fields fields, const std::string& base_dir) {
+// The camera and its half field (radians) from a camera entry.
+std::pair<CameraModel, double> ParseCamera(Fields fields, const std::string& base_dir) {
   const std::string lens = fields.Text("lens", "theia");
+  if (lens == "fisheye-knee")
+    for (const char* own : {"fit", "focal_length_mm", "pixel_pitch_mm", "image_size"})
+      if (fields.Has(own))
+        fields.Fail(fields.Path(own), "the fisheye-knee lens has its own (override fx, fy, cx, cy instead)");
   const std::string fit = fields.Choice("fit", "bspline", {"bspline", "poly6", "poly12"});
   const double focal_mm = fields.Real("focal_length_mm", 1.3, 0, kBig, true);
   const double pitch_mm = fields.Real("pixel_pitch_mm", 0.00375, 0, kBig, true);
@@ -228,7 +253,11 @@ CameraModel ParseCamera(Fields fields, const std::string& base_dir) {
   const std::string kind = lens.substr(0, colon);
   const std::string arg = colon == std::string::npos ? "" : lens.substr(colon + 1);
   CameraModel model;
-  if (kind == "theia" || kind == "table" || kind == "table-percent") {
+  double field_deg = 360;
+  if (lens == "fisheye-knee") {
+    model = FisheyeKneeCamera();
+    field_deg = 200;
+  } else if (kind == "theia" || kind == "table" || kind == "table-percent") {
     if ((kind == "theia") != arg.empty())
       fields.Fail(lens_path, "'" + lens + "' is not theia, table:PATH or table-percent:PATH");
     LensTable table;
@@ -267,7 +296,7 @@ CameraModel ParseCamera(Fields fields, const std::string& base_dir) {
     model.cy = height / 2.0;
     model.distortion = Distortion{kind, 0, {}, ParseCoefficients(fields, lens_path, arg, kind == "poly6" ? 3 : 6)};
   } else {
-    fields.Fail(lens_path, "must be theia, table:PATH, table-percent:PATH, poly6:k1,k2,k3 or "
+    fields.Fail(lens_path, "must be theia, fisheye-knee, table:PATH, table-percent:PATH, poly6:k1,k2,k3 or "
                            "poly12:k1,...,k6, not '" + lens + "'");
   }
   model.fx = fields.Real("fx", model.fx, 0, kBig, true);
@@ -276,13 +305,18 @@ CameraModel ParseCamera(Fields fields, const std::string& base_dir) {
   model.cy = fields.Real("cy", model.cy, -kBig, kBig);
   model.p1 = fields.Real("p1", 0, -0.1, 0.1);
   model.p2 = fields.Real("p2", 0, -0.1, 0.1);
+  const bool angle = IsAngleModel(MakeModel(model.distortion, Coefficients::kAll));
+  field_deg = fields.Real("field_deg", field_deg, 0, angle ? 360 : 180, true);
+  if (!angle && field_deg == 180)
+    fields.Fail(fields.Path("field_deg"), "a pinhole model (" + model.distortion.kind + ") sees less than 180 degrees");
   fields.Finish();
+  const double max_theta = std::min(M_PI, field_deg / 2 * M_PI / 180);
   try {
-    CheckInvertible(fields, fields.Path("lens"), model);
+    CheckInvertible(fields, lens_path, model, max_theta);
   } catch (const std::invalid_argument& e) {
     fields.Fail(lens_path, e.what());
   }
-  return model;
+  return {model, max_theta};
 }
 
 cv::Matx33d RotationDeg(const std::vector<double>& degrees) {
@@ -376,8 +410,9 @@ SimConfig ParseSimConfig(const std::string& yaml, const std::string& source, con
   if (!top.Has("rig")) top.Fail("rig", "is required");
   Fields rig = top.Map("rig");
   if (!rig.Has("left")) rig.Fail("rig.left", "is required (the left camera)");
-  config.left = ParseCamera(rig.Map("left"), base_dir);
-  config.right = rig.Has("right") ? ParseCamera(rig.Map("right"), base_dir) : config.left;
+  std::tie(config.left, config.max_theta[0]) = ParseCamera(rig.Map("left"), base_dir);
+  std::tie(config.right, config.max_theta[1]) =
+      rig.Has("right") ? ParseCamera(rig.Map("right"), base_dir) : std::pair(config.left, config.max_theta[0]);
   config.R = rig.Has("rotation_deg") ? RotationDeg(rig.Reals("rotation_deg", 3, -30, 30)) : cv::Matx33d::eye();
   if (rig.Has("T")) {
     if (rig.Has("baseline")) rig.Fail("rig.T", "give either baseline or T, not both");

@@ -16,8 +16,11 @@
 //   rendering: {supersample: 4, blur_sigma: 0.6, noise_sigma: 1.0, ...}
 //
 // Camera fields:
-//   lens: theia | table:PATH | table-percent:PATH | poly6:k1,k2,k3 | poly12:k1,...,k6
+//   lens: theia | fisheye-knee | table:PATH | table-percent:PATH | poly6:k1,k2,k3 | poly12:k1,...,k6
 //     theia    the Theia-MY125M-like design table compiled into the library
+//     fisheye-knee  the 200-degree bspline_theta lens of models/fisheye_lens.h
+//              (1280 x 960, f = 300 px; its own image size and focal length:
+//              only fx, fy, cx, cy may change it), field_deg 200 by default
 //     table    a lens-design table (lens_table.h, heights in mm; PATH relative
 //              to the config file's folder), fitted with `fit`
 //     polyN    explicit coefficients on the normalized radius
@@ -26,12 +29,17 @@
 //   image_size: [W, H]                              (default 1280 x 960)
 //   fx, fy, cx, cy: override (pixels; cx, cy default to W/2, H/2)
 //   p1, p2: tangential distortion (default 0)
+//   field_deg: the lens's full field (degrees): rays farther than half of it
+//              off axis are not imaged, the pixels past its image circle are
+//              black (default: no limit; pinhole models see less than 180)
 //
 // Every field is checked; an unknown field, a missing required one or a bad
 // value throws SimConfigError naming the file, the field and the reason:
 //   "config/sim/x.yaml: rendering.supersample: must be a whole number from 1 to 16, not 0"
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -52,19 +60,22 @@ struct SimConfigError : std::runtime_error {
 // frame. Each pose aims the board's centre at a target position in one
 // camera's image: a grid of grid_cols x grid_rows positions spanning the whole
 // image, corners included (jittered by up to a quarter cell), for each camera
-// in turn (targets "both") or one camera. The board starts at a random depth,
-// turned a third of the way from parallel to the image plane towards facing
-// the camera, and is tilted and rolled at random, never so far that either
-// camera sees it more obliquely than 60 degrees. Then it slides from the
-// image centre towards its target until it touches the image border with
-// edge_margin_px to spare (its squares and white margin inside the aimed
-// camera's image); it is pushed back (up to depth_max) only when it is too
-// large for the image. The other camera may see the board only in part (the
-// ground truth says so).
+// in turn (targets "both") or one camera; for a lens with an image circle
+// (field_deg) the grid spans the circle's bounding box within the image. The
+// board starts at a random depth (along the optical axis; for an angle model,
+// the distance to the board's centre, which may be behind the image plane),
+// turned a third of the way (an angle model: 70 %) from parallel to the
+// image plane towards facing the camera, and is tilted and rolled at random,
+// never so far that either camera sees it more obliquely than 60 degrees.
+// Then it slides from the image centre towards its target until it touches
+// the image border with edge_margin_px to spare, or the image circle (its
+// squares and white margin inside the aimed camera's image); it is pushed back (up to
+// depth_max) only when it is too large for the image. The other camera may
+// see the board only in part (the ground truth says so).
 struct SimBoardScene {
   BoardSpec board;                  // detect/board_spec.h; the board has a white margin one square wide
   int poses = 30;
-  double depth_min = 0.4, depth_max = 1.1;  // metres, board centre along the optical axis
+  double depth_min = 0.4, depth_max = 1.1;  // metres (see above)
   double max_tilt_deg = 35;         // tilt of the board plane from parallel to the image plane
   double max_roll_deg = 20;         // turn about the board normal
   int grid_cols = 5, grid_rows = 3;
@@ -106,6 +117,9 @@ struct SimConfig {
   std::string source;  // the file it came from, for messages and labels ("" when built in code)
   uint64_t seed = 1;
   CameraModel left, right;
+  // Each lens's half field (radians, left then right): rays farther off axis
+  // are not imaged (field_deg / 2; pi: no limit).
+  std::array<double, 2> max_theta{M_PI, M_PI};
   cv::Matx33d R = cv::Matx33d::eye();  // X_right = R X_left + T
   cv::Vec3d T{-0.3, 0, 0};
   std::optional<SimBoardScene> board;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include <opencv2/calib3d.hpp>
@@ -13,9 +14,10 @@ constexpr double kDeg = CV_PI / 180;
 // Board poses: the largest angle between the board's normal and the line of
 // sight to its centre, in either camera (more oblique boards are hard to
 // detect), and how far the board turns from parallel to the image plane
-// towards facing the aimed camera before its random tilt.
+// towards facing the aimed camera before its random tilt (further for an
+// angle model, whose boards reach beyond 90 degrees off axis).
 constexpr double kMaxViewAngleDeg = 60;
-constexpr double kFaceFraction = 0.35;
+constexpr double kFaceFraction = 0.35, kFaceFractionAngle = 0.7;
 
 // Uniform numbers from a seeded 64-bit generator, the same on every platform
 // (std::uniform_real_distribution is not specified exactly).
@@ -41,42 +43,61 @@ bool InImage(const CameraModel& m, const cv::Point2d& p, double margin) {
   return p.x >= margin && p.y >= margin && p.x <= m.image_width - 1 - margin && p.y <= m.image_height - 1 - margin;
 }
 
-// Projection that knows where the lens model ends: a point whose ideal radius
-// exceeds the largest one the image border sees is outside the image,
-// whatever the model (extrapolated, perhaps folding back) says.
+// Projection that knows where the lens model ends: a point farther off axis
+// than the largest angle the image sees (the image border's, or the lens's
+// image circle) is outside the image, whatever the model (extrapolated,
+// perhaps folding back) says.
 class Projector {
  public:
-  explicit Projector(const Camera& camera) : camera_(camera) {
+  Projector(const Camera& camera, double max_theta) : camera_(camera), theta_limit_(0) {
     const CameraModel& m = camera.model();
     for (int i = 0; i <= 64; ++i) {
       const double a = i / 64.0;
       for (const cv::Point2d p : {cv::Point2d(a * (m.image_width - 1), 0), cv::Point2d(a * (m.image_width - 1), m.image_height - 1),
                                   cv::Point2d(0, a * (m.image_height - 1)), cv::Point2d(m.image_width - 1, a * (m.image_height - 1))}) {
         const auto ray = camera.Unproject(Eigen::Vector2d(p.x, p.y));
-        if (ray) r_limit_ = std::max(r_limit_, std::hypot((*ray)[0], (*ray)[1]) / (*ray)[2]);
+        if (ray) theta_limit_ = std::max(theta_limit_, OffAxis(ToCv(*ray)));
       }
+    }
+    theta_limit_ = std::min(theta_limit_, max_theta);
+    // The part of the image inside the image circle.
+    box_ = cv::Rect2d(0, 0, m.image_width - 1, m.image_height - 1);
+    if (max_theta < M_PI) {
+      cv::Point2d low(m.cx, m.cy), high = low;
+      for (const Eigen::Vector3d& ray : RaysAround(max_theta, 64)) {
+        if (const auto p = camera.Project(ray)) {
+          low = cv::Point2d(std::min(low.x, (*p)[0]), std::min(low.y, (*p)[1]));
+          high = cv::Point2d(std::max(high.x, (*p)[0]), std::max(high.y, (*p)[1]));
+        }
+      }
+      box_ &= cv::Rect2d(low, high);
     }
   }
   const Camera& camera() const { return camera_; }
   const CameraModel& model() const { return camera_.model(); }
+  // The part of the image the lens sees: the image, or its image circle's bounding box in it.
+  const cv::Rect2d& box() const { return box_; }
 
-  // The pixel of X: false when X is not in front of the camera. Beyond the
-  // image's largest radius (*beyond) the pinhole pixel stands in for it.
+  // The pixel of X: false when the model has none (a pinhole: X behind the
+  // camera). Beyond the image's largest angle (*beyond) the pixel of the
+  // model without distortion stands in for it.
   bool operator()(const cv::Vec3d& X, cv::Point2d* pixel, bool* beyond) const {
-    if (!(X[2] > 0)) return false;
-    const double x = X[0] / X[2], y = X[1] / X[2];
-    *beyond = std::hypot(x, y) > r_limit_ * (1 + 1e-9);
-    const CameraModel& m = camera_.model();
-    if (*beyond) {
-      *pixel = cv::Point2d(m.fx * x + m.cx, m.fy * y + m.cy);
-      return true;
-    }
     const auto p = camera_.Project(Eigen::Vector3d(X[0], X[1], X[2]));
     if (!p) return false;
+    *beyond = OffAxis(X) > theta_limit_ * (1 + 1e-9);
     *pixel = cv::Point2d((*p)[0], (*p)[1]);
+    if (*beyond) {
+      double ideal[2] = {0, 0};
+      if (camera_.IsAngleModel())
+        ws::Theta::Ideal(X.val, ideal);
+      else
+        TanTheta::Ideal(X.val, ideal);
+      const CameraModel& m = camera_.model();
+      *pixel = cv::Point2d(m.fx * ideal[0] + m.cx, m.fy * ideal[1] + m.cy);
+    }
     return true;
   }
-  // The model's pixel of X (NaN behind the camera), and whether it is in the
+  // The model's pixel of X (NaN where it has none), and whether it is in the
   // image `margin` pixels inside.
   bool InImage(const cv::Vec3d& X, double margin, cv::Point2d* pixel) const {
     bool beyond = false;
@@ -91,10 +112,19 @@ class Projector {
     }
     return ws::InImage(model(), *pixel, margin);
   }
+  // The ray of a pixel the lens sees.
+  std::optional<cv::Vec3d> Ray(const cv::Point2d& pixel) const {
+    const auto ray = camera_.Unproject(Eigen::Vector2d(pixel.x, pixel.y));
+    if (!ray || OffAxis(ToCv(*ray)) > theta_limit_ * (1 + 1e-9)) return std::nullopt;
+    return ToCv(*ray);
+  }
 
  private:
+  static double OffAxis(const cv::Vec3d& X) { return std::atan2(std::hypot(X[0], X[1]), X[2]); }
+
   const Camera& camera_;
-  double r_limit_ = 0;
+  double theta_limit_;
+  cv::Rect2d box_;
 };
 
 // Points along the outline of the board's squares grown by `grow` squares on
@@ -171,8 +201,8 @@ std::vector<SimFrame> PlanBoardFrames(const SimConfig& config, const Projector* 
     int gx = cell % scene.grid_cols;
     if (gy % 2 == 1) gx = scene.grid_cols - 1 - gx;  // serpentine: the board moves to a neighbour
     const Projector& project = projectors[cam];
-    const Camera& camera = project.camera();
-    const CameraModel& m = camera.model();
+    const CameraModel& m = project.model();
+    const bool angle = project.camera().IsAngleModel();
     // Target position: the grid, jittered by up to a quarter cell (more on later rounds).
     const double jitter = round == 0 ? 0.25 : 0.5;
     auto fraction = [&](int g, int n) {
@@ -180,7 +210,8 @@ std::vector<SimFrame> PlanBoardFrames(const SimConfig& config, const Projector* 
       return std::clamp((g + random.Uniform(-jitter, jitter)) / (n - 1), 0.0, 1.0);
     };
     const double fx = fraction(gx, scene.grid_cols), fy = fraction(gy, scene.grid_rows);
-    cv::Point2d target(fx * (m.image_width - 1), fy * (m.image_height - 1));
+    const cv::Rect2d& box = project.box();
+    cv::Point2d target(box.x + fx * box.width, box.y + fy * box.height);
     double depth = random.Uniform(scene.depth_min, scene.depth_max);
     double tilt = random.Uniform(0, scene.max_tilt_deg) * kDeg;
     const double tilt_direction = random.Uniform(0, 2 * CV_PI);
@@ -191,16 +222,18 @@ std::vector<SimFrame> PlanBoardFrames(const SimConfig& config, const Projector* 
     cv::Matx33d R;
     cv::Vec3d t;
     auto pose_at = [&](const cv::Point2d& at) {
-      const auto ray = camera.Unproject(Eigen::Vector2d(at.x, at.y));
+      const auto ray = project.Ray(at);
       if (!ray) return false;
-      const cv::Vec3d direction = ToCv(*ray);
+      const cv::Vec3d direction = *ray;
       const cv::Vec3d axis = cv::Vec3d(0, 0, 1).cross(direction);
-      const double angle = std::atan2(cv::norm(axis), direction[2]);
-      const cv::Matx33d face = cv::norm(axis) > 1e-12 ? Rotation(axis / cv::norm(axis) * (angle * kFaceFraction))
-                                                      : cv::Matx33d::eye();
+      const double off_axis = std::atan2(cv::norm(axis), direction[2]);
+      const double face_fraction = angle ? kFaceFractionAngle : kFaceFraction;
+      const cv::Matx33d face = cv::norm(axis) > 1e-12
+                                   ? Rotation(axis / cv::norm(axis) * (off_axis * face_fraction))
+                                   : cv::Matx33d::eye();
       R = face * Rotation(cv::Vec3d(std::cos(tilt_direction), std::sin(tilt_direction), 0) * tilt) *
           Rotation(cv::Vec3d(0, 0, roll));
-      t = direction * (depth / direction[2]) - R * centre;
+      t = direction * (angle ? depth : depth / direction[2]) - R * centre;
       // The line of sight from either camera to the board's centre.
       const cv::Vec3d normal(R(0, 2), R(1, 2), R(2, 2));
       const cv::Vec3d c = R * centre + t;
@@ -263,9 +296,9 @@ Simulator::Simulator(SimConfig config)
     : config_(std::move(config)),
       left_(config_.left),
       right_(config_.right),
-      left_rays_(RayMap::For(config_.left)),
-      right_rays_(RayMap::For(config_.right)) {
-  const Projector projectors[2] = {Projector(left_), Projector(right_)};
+      left_rays_(RayMap::For(config_.left, config_.max_theta[0])),
+      right_rays_(RayMap::For(config_.right, config_.max_theta[1])) {
+  const Projector projectors[2] = {Projector(left_, config_.max_theta[0]), Projector(right_, config_.max_theta[1])};
   if (config_.board) {
     frames_ = PlanBoardFrames(config_, projectors);
     board_front_ = std::make_unique<BoardPattern>(config_.board->board, config_.rendering, true);
@@ -319,7 +352,7 @@ std::pair<cv::Mat, cv::Mat> Simulator::Render(int frame) const {
 
 SimViewTruth Simulator::ViewTruth(int frame, int index) const {
   const BoardSpec& board = config_.board->board;
-  const Projector project(camera(index));
+  const Projector project(camera(index), config_.max_theta[size_t(index)]);
   cv::Matx33d R;
   cv::Vec3d t;
   PlaneInCamera(frame, index, &R, &t);
@@ -367,6 +400,7 @@ SimTruth Simulator::Truth() const {
   truth.seed = config_.seed;
   truth.left = config_.left;
   truth.right = config_.right;
+  truth.max_theta = config_.max_theta;
   truth.R = config_.R;
   truth.T = config_.T;
   truth.board = config_.board ? config_.board->board.id : "";

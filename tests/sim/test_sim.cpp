@@ -69,7 +69,7 @@ TEST(SimConfig, DefaultFileDescribesTheRigAndScene) {
 }
 
 TEST(SimConfig, EveryShippedConfigLoads) {
-  for (const std::string name : {"default.yaml", "wall.yaml", "poly6.yaml", "charuco.yaml"}) {
+  for (const std::string name : {"default.yaml", "wall.yaml", "poly6.yaml", "charuco.yaml", "fisheye.yaml"}) {
     SCOPED_TRACE(name);
     const SimConfig config = LoadSimConfig(ConfigPath(name));
     EXPECT_NO_THROW(Simulator{config});
@@ -123,7 +123,7 @@ TEST(SimConfig, BadConfigIsAClearErrorNamingFileAndField) {
       {"rig: {baseline: -0.3, left: {lens: theia}}\n" + scene, {"rig.baseline", "greater than 0", "-0.3"}},
       {"rig: {baseline: 0.3, T: [-0.3, 0, 0], left: {lens: theia}}\n" + scene, {"rig.T", "either baseline or T"}},
       {"rig: {baseline: 0.3}\n" + scene, {"rig.left", "is required"}},
-      {"rig: {baseline: 0.3, left: {lens: fisheye}}\n" + scene, {"rig.left.lens", "must be theia, table:PATH"}},
+      {"rig: {baseline: 0.3, left: {lens: fisheye}}\n" + scene, {"rig.left.lens", "must be theia, fisheye-knee, table:PATH"}},
       {"rig: {baseline: 0.3, left: {lens: 'poly6:0.1,0.2'}}\n" + scene, {"rig.left.lens", "3 comma-separated"}},
       {"rig: {baseline: 0.3, left: {lens: 'poly6:0.1,x,0'}}\n" + scene, {"rig.left.lens", "'x' is not a number"}},
       {"rig: {baseline: 0.3, left: {lens: 'table:no/such.csv'}}\n" + scene, {"rig.left.lens", "no/such.csv"}},
