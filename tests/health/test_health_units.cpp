@@ -54,7 +54,7 @@ TEST(RectifiedDy, RowsAreThoseOfTheRectificationStereoMatchBuilds) {
   double om[3];
   ceres::RotationMatrixToAngleAxis(rig.R.data(), om);  // column-major, as Eigen stores it
   const Eigen::Vector3d t = rig.T.normalized();
-  for (const cv::Vec3d ray : {cv::Vec3d(0, 0, 1), cv::Vec3d(0.8, -0.6, 1), cv::Vec3d(-1.5, 1.1, 1)}) {
+  for (const cv::Vec3d& ray : {cv::Vec3d(0, 0, 1), cv::Vec3d(0.8, -0.6, 1), cv::Vec3d(-1.5, 1.1, 1)}) {
     const cv::Vec3d pl = rect.R_left * ray, pr = rect.R_right * ray;
     double y_l, y_r;
     ws::RectifiedRows(om, t.data(), ray.val, ray.val, &y_l, &y_r);
