@@ -29,4 +29,20 @@ StereoData ReadCorners(const std::string& corners_log);
 
 nlohmann::json ReadJson(const std::string& path);
 
+// One camera's non-empty views as OpenCV's calibration input (Point3f /
+// Point2f for cv::calibrateCamera, Point3d / Point2d for cv::fisheye).
+template <class ObjectPoint, class ImagePoint>
+void OpenCvViews(const CameraData& camera, std::vector<std::vector<ObjectPoint>>* object,
+                 std::vector<std::vector<ImagePoint>>* image) {
+  for (const BoardView& view : camera.views) {
+    if (view.empty()) continue;
+    object->emplace_back();
+    image->emplace_back();
+    for (int i = 0; i < view.size(); ++i) {
+      object->back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+      image->back().emplace_back(view.image[i].x(), view.image[i].y());
+    }
+  }
+}
+
 }  // namespace ws::calib::test

@@ -10,6 +10,7 @@
 
 #include "calib/calib_file.h"
 #include "calib/synthetic_rig.h"
+#include "opencv_fisheye.h"
 #include "test_support.h"
 
 namespace {
@@ -118,16 +119,8 @@ TEST(CalibFile, Kb4LoadsIntoOpenCvFisheye) {
     for (double phi = 0; phi < 6.28; phi += 0.7)
       points.emplace_back(std::sin(deg * M_PI / 180) * std::cos(phi),
                           std::sin(deg * M_PI / 180) * std::sin(phi), std::cos(deg * M_PI / 180));
-  std::vector<cv::Point2d> opencv;
-  cv::fisheye::projectPoints(points, opencv, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D);
-  const Camera camera(ReadCalibrationFile(path).left);
-  double worst = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const auto pixel = camera.Project({points[i].x, points[i].y, points[i].z});
-    ASSERT_TRUE(pixel);
-    worst = std::max(worst, std::hypot(pixel->x() - opencv[i].x, pixel->y() - opencv[i].y));
-  }
-  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(test::WorstGapToOpenCvFisheye(Camera(ReadCalibrationFile(path).left), points, K, D),
+            1e-9);
 }
 
 // A valid file's text with `from` replaced by `to` must fail naming `field`.

@@ -38,15 +38,7 @@ struct OpenCvFisheye {
 OpenCvFisheye OpenCvFisheyeRms(const CameraData& camera) {
   std::vector<std::vector<cv::Point3d>> object;
   std::vector<std::vector<cv::Point2d>> image;
-  for (const calib::BoardView& view : camera.views) {
-    if (view.empty()) continue;
-    object.emplace_back();
-    image.emplace_back();
-    for (int i = 0; i < view.size(); ++i) {
-      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
-      image.back().emplace_back(view.image[i].x(), view.image[i].y());
-    }
-  }
+  OpenCvViews(camera, &object, &image);
   cv::Matx33d K;
   cv::Vec4d D;
   std::vector<cv::Vec3d> rvecs, tvecs;

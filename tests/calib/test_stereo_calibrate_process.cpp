@@ -29,15 +29,7 @@ using ws::test::TempDir;
 double OpenCvRms(const CameraData& camera) {
   std::vector<std::vector<cv::Point3f>> object;
   std::vector<std::vector<cv::Point2f>> image;
-  for (const calib::BoardView& view : camera.views) {
-    if (view.empty()) continue;
-    object.emplace_back();
-    image.emplace_back();
-    for (int i = 0; i < view.size(); ++i) {
-      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
-      image.back().emplace_back(view.image[i].x(), view.image[i].y());
-    }
-  }
+  OpenCvViews(camera, &object, &image);
   cv::Mat K, distortion;
   std::vector<cv::Mat> rvecs, tvecs;
   return cv::calibrateCamera(object, image, cv::Size(camera.image_width, camera.image_height), K,

@@ -13,6 +13,7 @@
 #include "models/camera_model.h"
 #include "models/fisheye_lens.h"
 #include "models/radial_coordinate.h"
+#include "opencv_fisheye.h"
 
 namespace ws {
 namespace {
@@ -50,16 +51,7 @@ TEST(Kb4, ProjectsExactlyAsOpenCvFisheye) {
   }
   points.emplace_back(0, 0, 1);  // on the axis
   const cv::Matx33d K(model.fx, 0, model.cx, 0, model.fy, model.cy, 0, 0, 1);
-  std::vector<cv::Point2d> opencv;
-  cv::fisheye::projectPoints(points, opencv, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K,
-                             model.distortion.coeffs);
-  double worst = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const auto pixel = camera.Project({points[i].x, points[i].y, points[i].z});
-    ASSERT_TRUE(pixel);
-    worst = std::max(worst, std::hypot(pixel->x() - opencv[i].x, pixel->y() - opencv[i].y));
-  }
-  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(test::WorstGapToOpenCvFisheye(camera, points, K, model.distortion.coeffs), 1e-9);
 }
 
 TEST(Kb4, HasNoTangentialTerms) {
