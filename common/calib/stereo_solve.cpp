@@ -128,10 +128,10 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     outcome = solve_extrinsics();
     if (joint) outcome = solve_joint();
   }
-  // The joint solve is kept only if sharing the board poses costs what it
-  // should; otherwise the pairs were not exposed together closely enough
-  // for it, and each camera keeps its own views' solution (the paper's flow).
-  if (joint && JointFitsAsWellAsAlone(problem, mono, out.views)) {
+  // Where some pairs showed that the cameras were not exposed together, the
+  // joint solve is kept only if sharing the board poses costs what it should;
+  // otherwise each camera keeps its own views' solution (the paper's flow).
+  if (joint && (out.inconsistent_views.empty() || JointFitsAsWellAsAlone(problem, mono, out.views))) {
     Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
                      outcome.message + ")");
     for (int c = 0; c < 2; ++c)
