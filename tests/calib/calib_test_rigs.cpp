@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace ws::calib::test {
 
@@ -121,6 +122,28 @@ ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& 
   }
   error.rotation_rad = Eigen::Vector3d(q[0], q[1], q[2]).norm();
   return error;
+}
+
+void ExpectCamerasMatchTruth(const SyntheticRigOptions& truth, const SyntheticRig& rig,
+                             const StereoCalibration& result) {
+  const CameraCalibration* cameras[2] = {&result.left, &result.right};
+  const CameraModel* true_models[2] = {&truth.left, &truth.right};
+  const CameraData* data[2] = {&rig.data.left, &rig.data.right};
+  for (int c = 0; c < 2; ++c) {
+    const CameraCalibration& camera = *cameras[c];
+    const double floor = TruthRms(truth, rig, c);
+    const ProjectionError error = MaxProjectionError(*true_models[c], camera.model, *data[c]);
+    std::printf(
+        "%s %s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
+        "(%.4f px without the best rotation of %.1e rad), %d of %zu views, largest observed "
+        "radius %.3f\n",
+        result.model.c_str(), camera.name.c_str(), camera.rms_px, floor, error.turned_px,
+        error.direct_px, error.rotation_rad, camera.views, data[c]->views.size(),
+        camera.max_observed_radius);
+    EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << camera.name;
+    EXPECT_LE(error.turned_px, 0.1) << camera.name;
+    ExpectParametersWithin(*true_models[c], camera, 3.0, false);
+  }
 }
 
 void ExpectParametersWithin(const CameraModel& truth, const CameraCalibration& estimate,

@@ -44,6 +44,13 @@ struct ProjectionError {
 ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& estimate,
                                    const CameraData& observed);
 
+// Expects each camera of the calibration of `rig` at its noise floor (RMS
+// within 10 % of TruthRms), within 0.1 px of the truth's projection over the
+// observed field (MaxProjectionError) and with fx fy cx cy p1 p2 within 3
+// reported sigma of the truth; prints the figures.
+void ExpectCamerasMatchTruth(const SyntheticRigOptions& truth, const SyntheticRig& rig,
+                             const StereoCalibration& result);
+
 // Expects each of fx fy cx cy p1 p2 (and, when `with_coeffs`, the model's
 // coefficients) of the estimate within `sigmas` reported standard deviations
 // of the truth.

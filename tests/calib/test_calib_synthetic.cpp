@@ -33,24 +33,10 @@ TEST(CalibSynthetic, MustacheBsplineMatchesTheTruth) {
   const SyntheticRigOptions truth = MustacheRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
   const StereoCalibration result = CalibrateStereo(rig.data, CalibrationOptions());
-  const CameraCalibration* cameras[2] = {&result.left, &result.right};
-  const CameraModel* true_models[2] = {&truth.left, &truth.right};
-  const CameraData* data[2] = {&rig.data.left, &rig.data.right};
-  for (int c = 0; c < 2; ++c) {
-    const CameraCalibration& camera = *cameras[c];
-    const double floor = TruthRms(truth, rig, c);
-    const ProjectionError error = MaxProjectionError(*true_models[c], camera.model, *data[c]);
-    std::printf(
-        "%s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
-        "(%.4f px without the best rotation of %.1e rad), %d views, largest observed "
-        "radius %.3f\n",
-        camera.name.c_str(), camera.rms_px, floor, error.turned_px, error.direct_px,
-        error.rotation_rad, camera.views, camera.max_observed_radius);
-    EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << camera.name;
-    EXPECT_LE(error.turned_px, 0.1) << camera.name;
-    EXPECT_EQ(camera.outliers, 0);
-    ExpectParametersWithin(*true_models[c], camera, 3.0, false);
-    EXPECT_TRUE(MonotoneToImageCorners(camera.model, 2.6)) << camera.name;
+  ExpectCamerasMatchTruth(truth, rig, result);
+  for (const CameraCalibration* camera : {&result.left, &result.right}) {
+    EXPECT_EQ(camera->outliers, 0);
+    EXPECT_TRUE(MonotoneToImageCorners(camera->model, 2.6)) << camera->name;
   }
   const double baseline_error = std::abs(result.T.norm() / truth.T.norm() - 1);
   std::printf("baseline %.6f m (true %.6f): error %.4f %%, stereo rms %.4f px over %d views\n",
