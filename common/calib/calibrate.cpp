@@ -27,8 +27,8 @@ void CheckOptions(const CalibrationOptions& options) {
 CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options) {
   CheckOptions(options);
   MonoState state;
-  SolveMono(data, options, &state);
-  return CameraResult(state.problem, 0, state.prepared, state.outcome.stddev_camera[0],
+  SolveMono(data, ExtentOf({&data}), options, &state);
+  return CameraResult(state.problem, 0, state.prepared, state.outcome,
                       state.init_method, options);
 }
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "calib/board_warp.h"
 #include "calib/calib_data.h"
 #include "calib/options.h"
 #include "calib/pose.h"
@@ -45,6 +46,8 @@ struct CameraCalibration {
   std::vector<std::string> param_names;   // fx fy cx cy p1 p2, then the model's coefficients
   std::vector<double> stddev;             // same order; empty without covariance
   std::string init_method;                // ZhangIntrinsics' method
+  BoardWarp board_warp;                   // the board the fit assumed (free: estimated)
+  std::vector<double> board_warp_stddev;  // x2, y2; empty without covariance
   double max_observed_radius = 0;         // largest ideal radius of an inlier corner
   std::vector<CornerResidual> residuals;  // every corner, outliers flagged
   ResidualGrid grid;

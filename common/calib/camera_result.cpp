@@ -7,7 +7,7 @@
 namespace ws::calib {
 
 CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
-                               const std::vector<double>& stddev, const std::string& init_method,
+                               const SolveOutcome& outcome, const std::string& init_method,
                                const CalibrationOptions& options) {
   const CameraBlock& camera = problem.cameras[c];
   CameraCalibration out;
@@ -45,7 +45,9 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
                             ": left out, its corners do not project under the solved camera");
   out.invalid_points = p.invalid_points;
   out.param_names = ParamNames(camera);
-  out.stddev = stddev;
+  out.stddev = outcome.stddev_camera[c];
+  out.board_warp = problem.warp;
+  out.board_warp_stddev = outcome.stddev_warp;
   out.init_method = init_method;
   out.grid =
       MakeResidualGrid(out.residuals, p.width, p.height, options.grid_rows, options.grid_cols);

@@ -16,8 +16,9 @@ namespace ws::calib {
 // Throws CalibrationError when its distortion curve folds back inside the
 // observed field (r (1 + D(r)) not increasing: two directions on one pixel)
 // or fewer than options.min_views views fit it.
+// The standard deviations are the outcome's (of this problem's solve).
 CameraCalibration CameraResult(const Problem& problem, int camera, const Prepared& prepared,
-                               const std::vector<double>& stddev, const std::string& init_method,
+                               const SolveOutcome& outcome, const std::string& init_method,
                                const CalibrationOptions& options);
 
 }  // namespace ws::calib

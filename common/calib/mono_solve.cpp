@@ -39,6 +39,8 @@ int MarkDisc(const CameraBlock& camera, const Prepared& p, double fraction, int 
 Problem MaskedProblem(const CameraBlock& camera, MonoState* s, Inliers* mask, int min_points) {
   Problem problem;
   problem.cameras.push_back(camera);
+  problem.warp = s->warp;
+  problem.warp.free = false;
   const Prepared& p = s->prepared;
   for (size_t v = 0; v < p.views.size(); ++v)
     if (p.usable[v] && std::count((*mask)[v].begin(), (*mask)[v].end(), 1) >= min_points)
@@ -82,18 +84,26 @@ SolveSettings StageSettings(const CalibrationOptions& options, const std::string
   return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
 }
 
-// The last stages on every inlier corner: the camera's final problem,
-// solved with outlier rejection (and standard deviations).
+// The last stages on every inlier corner: the camera's final problem (and
+// the board's warp with options.board_warp), solved with outlier rejection
+// (and standard deviations).
 void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, const std::string& what,
               MonoState* s) {
   s->problem = MaskedProblem(camera, s, &s->inliers, 1);
+  s->problem.warp.free = options.board_warp;
   s->outcome = SolveWithRejection(s->problem, options, what);
+  s->warp = s->problem.warp;
+  if (options.board_warp)
+    Say(options, what + ": board bow x2 " + Fixed(1e3 * s->warp.data[0], 3) + " mm, y2 " +
+                     Fixed(1e3 * s->warp.data[1], 3) + " mm");
 }
 
 }  // namespace
 
-void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoState* s) {
+void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
+               MonoState* s) {
   s->prepared = Prepare(data, options);
+  s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
   RequireViews(p, options.min_views);
   const Init init = Initialize(p, options);

@@ -27,12 +27,16 @@ struct MonoState {
   Prepared prepared;
   Inliers inliers;          // per view, per corner: used (outliers cleared)
   std::vector<Pose> poses;  // board -> camera, per view
+  BoardWarp warp;           // the board as the last solve left it (flat unless estimated)
   Problem problem;          // the last solve: the camera and its usable views
   SolveOutcome outcome;
   std::string init_method;  // PinholeInit::method
 };
 
-// Calibrates the camera of `data` into *state. Throws CalibrationError.
-void SolveMono(const CameraData& data, const CalibrationOptions& options, MonoState* state);
+// Calibrates the camera of `data` into *state; `board` is the extent of the
+// board (board_warp.h), the warp estimated in the final solve with
+// options.board_warp. Throws CalibrationError.
+void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
+               MonoState* state);
 
 }  // namespace ws::calib

@@ -55,6 +55,9 @@ struct CalibrationOptions {
   double min_view_angle_deg = 5.0;  // the board normals must spread at least this much
   StereoFlow flow = StereoFlow::kJoint;
   bool covariance = true;  // parameter standard deviations
+  // Estimate the board's deflection (board_warp.h) with each camera's final
+  // solve and the joint solve; otherwise the board is flat.
+  bool board_warp = false;
   int max_iterations = 100;
   int grid_rows = 6, grid_cols = 8;  // the residual pattern per image region
   // Receives one line per stage (initialisation, each solve, r_max), for

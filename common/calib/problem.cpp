@@ -45,6 +45,7 @@ class ParameterArena {
       add(camera.coeffs.data(), static_cast<int>(camera.coeffs.size()));
     }
     add(problem.extrinsic.data.data(), 6);
+    add(problem.warp.data.data(), 2);
     for (Observation& o : problem.observations) add(o.pose->data.data(), 6);
   }
   double* operator[](double* block) { return values_.data() + index_.at(block); }
@@ -60,6 +61,8 @@ class ParameterArena {
   std::vector<std::pair<double*, int>> blocks_;
 };
 
+constexpr int kExtrinsic = -1, kWarp = -2;  // Built::owner of the rig's blocks
+
 // The Ceres problem of a Problem, and which of its blocks are what (arena
 // pointers).
 struct Built {
@@ -69,8 +72,8 @@ struct Built {
   std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
   int data_residuals = 0;
   std::vector<double*> poses;        // board poses
-  std::vector<double*> free_blocks;  // fully free camera blocks and the extrinsic
-  std::vector<int> owner;            // per free block: its camera, -1 for the extrinsic
+  std::vector<double*> free_blocks;  // free camera blocks, the extrinsic, the warp
+  std::vector<int> owner;  // per free block: its camera, kExtrinsic or kWarp
   std::vector<std::vector<int>> held;  // per free block: entries a manifold holds constant
 };
 
@@ -84,7 +87,8 @@ std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem
   for (int i = 0; i < o.corners->size(); ++i) {
     if (!(*o.inliers)[i]) continue;
     if (per_corner && groups.back().size() > 0) groups.emplace_back();
-    groups.back().Add(o.corners->object[i], o.corners->image[i]);
+    groups.back().Add(o.corners->object[i], o.corners->image[i],
+                      WarpBasis(problem.warp.extent, o.corners->object[i]));
   }
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
   if (groups.front().size() == 0) return costs;
@@ -104,7 +108,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   for (Observation& o : problem.observations) {
     CameraBlock& camera = problem.cameras[o.camera];
     std::vector<double*> blocks{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
-                                arena[o.pose->data.data()]};
+                                arena[problem.warp.data.data()], arena[o.pose->data.data()]};
     if (o.via_extrinsic) blocks.push_back(arena[problem.extrinsic.data.data()]);
     auto costs = ObservationCosts(problem, o, per_corner);
     bool valid = true;
@@ -169,9 +173,17 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       cp.SetParameterBlockConstant(extrinsic);
     } else {
       built->free_blocks.push_back(extrinsic);
-      built->owner.push_back(-1);
+      built->owner.push_back(kExtrinsic);
       built->held.emplace_back();
     }
+  }
+  double* warp = arena[problem.warp.data.data()];
+  if (problem.warp.free) {
+    built->free_blocks.push_back(warp);
+    built->owner.push_back(kWarp);
+    built->held.emplace_back();
+  } else if (cp.HasParameterBlock(warp)) {
+    cp.SetParameterBlockConstant(warp);
   }
 }
 
@@ -249,8 +261,10 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
   for (size_t b = 0; b < built.free_blocks.size(); ++b) {
     const int size = built.ceres.ParameterBlockSize(built.free_blocks[b]);
     const std::vector<int>& held = built.held[b];
-    std::vector<double>& out =
-        built.owner[b] < 0 ? outcome->stddev_extrinsic : outcome->stddev_camera[built.owner[b]];
+    const int owner = built.owner[b];
+    std::vector<double>& out = owner == kExtrinsic ? outcome->stddev_extrinsic
+                               : owner == kWarp    ? outcome->stddev_warp
+                                                   : outcome->stddev_camera[owner];
     for (int k = 0; k < size; ++k) {  // a held entry is exact: sigma 0
       const bool exact = std::find(held.begin(), held.end(), k) != held.end();
       out.push_back(exact ? 0.0 : std::sqrt(std::max(0.0, (*covariance)(offset, offset))));
@@ -268,7 +282,7 @@ std::vector<CornerResidual> Residuals(const Problem& problem, int camera) {
     const Eigen::Matrix3d R = pose.R();
     const Eigen::Vector3d t = pose.t();
     for (int i = 0; i < o.corners->size(); ++i) {
-      const auto pixel = ProjectPoint(block, R * o.corners->object[i] + t);
+      const auto pixel = ProjectPoint(block, R * Warped(problem.warp, o.corners->object[i]) + t);
       CornerResidual r;
       r.view = o.view;
       r.index = i;

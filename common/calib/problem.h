@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "calib/board_warp.h"
 #include "calib/calib_data.h"
 #include "calib/camera_block.h"
 #include "calib/pose.h"
@@ -36,6 +37,7 @@ struct Problem {
   Pose extrinsic;  // left -> right camera
   bool extrinsic_used = false;
   bool extrinsic_fixed = false;
+  BoardWarp warp;  // the board's deflection, shared by every observation (held unless free)
   std::vector<std::pair<int, int>> left_out;  // (camera, view) that could not be evaluated
 };
 
@@ -53,6 +55,7 @@ struct SolveOutcome {
   // not computed or not determined by the data.
   std::vector<double> stddev_camera[2];
   std::vector<double> stddev_extrinsic;
+  std::vector<double> stddev_warp;  // x2, y2 when the warp was free
 };
 
 // The board -> camera pose of an observation (through the extrinsic for a
@@ -70,7 +73,8 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings);
 // (covariance.h), into outcome.
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome);
 
-// Every corner of camera `camera` with its residual (outliers flagged).
+// Every corner of camera `camera` with its residual (outliers flagged), the
+// board displaced by the problem's warp.
 std::vector<CornerResidual> Residuals(const Problem& problem, int camera);
 
 }  // namespace ws::calib

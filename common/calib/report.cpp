@@ -54,6 +54,17 @@ Json CameraReport(const CameraCalibration& c) {
   j["skipped"] = c.skipped;
   j["init_method"] = c.init_method;
   j["max_observed_radius"] = c.max_observed_radius;
+  if (c.board_warp.free) {  // board_warp.h; millimetres
+    Json warp;
+    warp["x2_mm"] = 1e3 * c.board_warp.data[0];
+    warp["y2_mm"] = 1e3 * c.board_warp.data[1];
+    warp["centre_mm"] = 1e3 * c.board_warp.Centre();
+    if (c.board_warp_stddev.size() == 2) {
+      warp["stddev_x2_mm"] = 1e3 * c.board_warp_stddev[0];
+      warp["stddev_y2_mm"] = 1e3 * c.board_warp_stddev[1];
+    }
+    j["board_warp"] = warp;
+  }
   const ResidualGrid& g = c.grid;
   Json grid;
   grid["rows"] = g.rows;

@@ -11,6 +11,7 @@
 //   coeffs[N]      the model's estimated coefficients (N = model.NumCoeffs())
 //   pose[6]        board -> camera (pose.h)
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
+//   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
 //
 // The coefficient block's size must be known at compile time for fast
 // automatic differentiation: it is for N up to kMaxFixedCoeffs (every poly
@@ -40,32 +41,37 @@ inline constexpr int kMaxFixedCoeffs = 24;
 struct ViewPoints {
   std::vector<double> object;  // 3 per corner
   std::vector<double> image;   // 2 per corner
+  std::vector<double> warp;    // 2 per corner: the corner's WarpBasis (board_warp.h)
   // A corner whose ideal radius exceeds this makes the evaluation fail, so
   // that the solver never takes a step into the region where a distortion
   // curve may fold back (a corner seen inside the image cannot lie beyond the
   // image's largest ideal radius).
   double max_radius = 1e6;
   int size() const { return static_cast<int>(image.size() / 2); }
-  void Add(const Eigen::Vector3d& X, const Eigen::Vector2d& x) {
+  void Add(const Eigen::Vector3d& X, const Eigen::Vector2d& x, const Eigen::Vector2d& basis) {
     object.insert(object.end(), {X.x(), X.y(), X.z()});
     image.insert(image.end(), {x.x(), x.y()});
+    warp.insert(warp.end(), {basis.x(), basis.y()});
   }
 };
 
-// Projects the view's corners through `model` after `rotation` (row-major
-// 3x3) and `translation`, writing projected - observed. False if a corner
+// Projects the view's corners, displaced by the board's `warp`, through
+// `model` after `rotation` (row-major 3x3) and `translation`, writing
+// projected - observed. False if a corner
 // has no projection (a pinhole model: behind the camera) or its ideal radius
 // (radial_coordinate.h) exceeds points.max_radius.
 template <class Model, typename T>
 bool ViewResiduals(const Model& model, const ViewPoints& points, const T* intrinsics,
-                   const T* coeffs, const T* rotation, const T* translation, T* residuals) {
+                   const T* coeffs, const T* warp, const T* rotation, const T* translation,
+                   T* residuals) {
   const int n = points.size();
   for (int i = 0; i < n; ++i) {
     const double* X = &points.object[3 * i];
+    const T z = X[2] + warp[0] * points.warp[2 * i] + warp[1] * points.warp[2 * i + 1];
     T camera[3];
     for (int r = 0; r < 3; ++r)
-      camera[r] = rotation[3 * r] * X[0] + rotation[3 * r + 1] * X[1] + rotation[3 * r + 2] * X[2] +
-                  translation[r];
+      camera[r] =
+          rotation[3 * r] * X[0] + rotation[3 * r + 1] * X[1] + rotation[3 * r + 2] * z + translation[r];
     const double point[3] = {ScalarPart(camera[0]), ScalarPart(camera[1]), ScalarPart(camera[2])};
     if (!(ws::IdealRadius<typename Model::Coordinate>(point) <= points.max_radius)) return false;
     T pixel[2];
@@ -83,14 +89,15 @@ struct ViewResidual {
   ViewPoints points;
 
   template <typename T>
-  bool operator()(const T* intrinsics, const T* coeffs, const T* pose, T* residuals) const {
+  bool operator()(const T* intrinsics, const T* coeffs, const T* warp, const T* pose,
+                  T* residuals) const {
     T R[9];
     ceres::AngleAxisToRotationMatrix(pose, ceres::RowMajorAdapter3x3(R));
-    return ViewResiduals(*model, points, intrinsics, coeffs, R, pose + 3, residuals);
+    return ViewResiduals(*model, points, intrinsics, coeffs, warp, R, pose + 3, residuals);
   }
   template <typename T>
   bool operator()(T const* const* p, T* residuals) const {
-    return (*this)(p[0], p[1], p[2], residuals);
+    return (*this)(p[0], p[1], p[2], p[3], residuals);
   }
 };
 
@@ -102,8 +109,8 @@ struct StereoViewResidual {
   ViewPoints points;
 
   template <typename T>
-  bool operator()(const T* intrinsics, const T* coeffs, const T* pose, const T* extrinsic,
-                  T* residuals) const {
+  bool operator()(const T* intrinsics, const T* coeffs, const T* warp, const T* pose,
+                  const T* extrinsic, T* residuals) const {
     T Rb[9], Re[9], R[9], t[3];
     ceres::AngleAxisToRotationMatrix(pose, ceres::RowMajorAdapter3x3(Rb));
     ceres::AngleAxisToRotationMatrix(extrinsic, ceres::RowMajorAdapter3x3(Re));
@@ -113,11 +120,11 @@ struct StereoViewResidual {
       t[r] = Re[3 * r] * pose[3] + Re[3 * r + 1] * pose[4] + Re[3 * r + 2] * pose[5] +
              extrinsic[3 + r];
     }
-    return ViewResiduals(*model, points, intrinsics, coeffs, R, t, residuals);
+    return ViewResiduals(*model, points, intrinsics, coeffs, warp, R, t, residuals);
   }
   template <typename T>
   bool operator()(T const* const* p, T* residuals) const {
-    return (*this)(p[0], p[1], p[2], p[3], residuals);
+    return (*this)(p[0], p[1], p[2], p[3], p[4], residuals);
   }
 };
 
@@ -145,7 +152,7 @@ ceres::CostFunction* DispatchCoeffs(int n, const Make& make) {
 
 }  // namespace detail
 
-// Cost function of ViewResidual over (intrinsics, coeffs, pose).
+// Cost function of ViewResidual over (intrinsics, coeffs, warp, pose).
 template <class Model>
 ceres::CostFunction* MakeViewCost(const Model& model, ViewPoints points) {
   using F = ViewResidual<Model>;
@@ -156,17 +163,17 @@ ceres::CostFunction* MakeViewCost(const Model& model, ViewPoints points) {
         constexpr int N = decltype(size)::value;
         if constexpr (N == 0) {
           auto* cost = new ceres::DynamicAutoDiffCostFunction<F, 8>(new F{&model, points});
-          for (int block : {int(kNumIntrinsics), n, 6}) cost->AddParameterBlock(block);
+          for (int block : {int(kNumIntrinsics), n, 2, 6}) cost->AddParameterBlock(block);
           cost->SetNumResiduals(residuals);
           return cost;
         } else {
-          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 6>(
+          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 2, 6>(
               new F{&model, points}, residuals);
         }
       });
 }
 
-// Cost function of StereoViewResidual over (intrinsics, coeffs, pose, extrinsic).
+// Cost function of StereoViewResidual over (intrinsics, coeffs, warp, pose, extrinsic).
 template <class Model>
 ceres::CostFunction* MakeStereoViewCost(const Model& model, ViewPoints points) {
   using F = StereoViewResidual<Model>;
@@ -177,11 +184,11 @@ ceres::CostFunction* MakeStereoViewCost(const Model& model, ViewPoints points) {
         constexpr int N = decltype(size)::value;
         if constexpr (N == 0) {
           auto* cost = new ceres::DynamicAutoDiffCostFunction<F, 8>(new F{&model, points});
-          for (int block : {int(kNumIntrinsics), n, 6, 6}) cost->AddParameterBlock(block);
+          for (int block : {int(kNumIntrinsics), n, 2, 6, 6}) cost->AddParameterBlock(block);
           cost->SetNumResiduals(residuals);
           return cost;
         } else {
-          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 6, 6>(
+          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 2, 6, 6>(
               new F{&model, points}, residuals);
         }
       });

@@ -42,14 +42,15 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   if (data.left.views.size() != data.right.views.size())
     throw CalibrationError("the left and right cameras have different numbers of views");
   MonoState mono[2];
-  SolveMono(data.left, options, &mono[0]);
-  SolveMono(data.right, options, &mono[1]);
+  const BoardExtent board = ExtentOf({&data.left, &data.right});
+  SolveMono(data.left, board, options, &mono[0]);
+  SolveMono(data.right, board, options, &mono[1]);
   StereoCalibration out;
   out.model = options.model;
   out.flow = options.flow;
   for (int c = 0; c < 2; ++c)
     (c == 0 ? out.left : out.right) =
-        CameraResult(mono[c].problem, 0, mono[c].prepared, mono[c].outcome.stddev_camera[0],
+        CameraResult(mono[c].problem, 0, mono[c].prepared, mono[c].outcome,
                      mono[c].init_method, options);
 
   const int n = data.size();
@@ -72,6 +73,11 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   problem.cameras = {mono[0].problem.cameras[0], mono[1].problem.cameras[0]};
   problem.extrinsic = AverageExtrinsic(left_poses, right_poses);
   problem.extrinsic_used = true;
+  // One board: R, T with the mean of the cameras' own estimates of its warp,
+  // the joint solve estimating it.
+  problem.warp = mono[0].warp;
+  for (int k = 0; k < 2; ++k) problem.warp.data[k] = 0.5 * (mono[0].warp.data[k] + mono[1].warp.data[k]);
+  const BoardWarp mean_warp = problem.warp;
   std::vector<Pose> poses[2] = {mono[0].poses, mono[1].poses};
   Inliers inliers[2] = {mono[0].inliers, mono[1].inliers};
   // The stereo views (and with all_views every other usable view), the right
@@ -98,11 +104,13 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
       poses[c] = mono[c].poses;
       inliers[c] = mono[c].inliers;
     }
+    problem.warp = mean_warp;
     observe(false);
     return SolveWithRejection(problem, extrinsic_options, "stereo extrinsics");
   };
   auto solve_joint = [&] {
     for (auto& camera : problem.cameras) camera.fixed = false;
+    problem.warp.free = options.board_warp;
     observe(true);
     return SolveWithRejection(problem, options, "joint stereo solve");
   };
@@ -135,8 +143,8 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
                      outcome.message + ")");
     for (int c = 0; c < 2; ++c)
-      (c == 0 ? out.left : out.right) = CameraResult(
-          problem, c, mono[c].prepared, outcome.stddev_camera[c], mono[c].init_method, options);
+      (c == 0 ? out.left : out.right) =
+          CameraResult(problem, c, mono[c].prepared, outcome, mono[c].init_method, options);
   } else if (joint) {
     outcome = solve_extrinsics();
     out.flow = StereoFlow::kPaper;

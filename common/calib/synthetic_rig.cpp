@@ -50,12 +50,14 @@ bool Inside(const Eigen::Vector2d& p, const CameraModel& c, double margin) {
          p.y() <= c.image_height - 0.5 - margin;
 }
 
-// The corners of the board under `pose` that `camera` sees inside its image.
+// The corners of the board under `pose` that `camera` sees inside its image:
+// their flat board coordinates `object`, imaged where the (bowed) board has
+// them, `shape`.
 BoardView See(const Camera& camera, const Pose& pose, const std::vector<Eigen::Vector3d>& object,
-              double margin, double max_theta) {
+              const std::vector<Eigen::Vector3d>& shape, double margin, double max_theta) {
   BoardView view;
   for (int id = 0; id < static_cast<int>(object.size()); ++id) {
-    const Eigen::Vector3d X = pose * object[id];
+    const Eigen::Vector3d X = pose * shape[id];
     // Rays more than 85 degrees off axis are never imaged by a pinhole
     // model's lens; an angle model's reach as far as its image circle.
     if (!camera.IsAngleModel() && (X.z() <= 0.05 || X.head<2>().norm() > 11 * X.z())) continue;
@@ -85,6 +87,9 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
       object.emplace_back(c * options.square, r * options.square, 0);
   const Eigen::Vector3d centre((options.board_cols - 1) * options.square / 2,
                                (options.board_rows - 1) * options.square / 2, 0);
+  const BoardWarp warp{options.board_warp, {0, 2 * centre.x(), 0, 2 * centre.y()}, false};
+  std::vector<Eigen::Vector3d> shape;
+  for (const Eigen::Vector3d& X : object) shape.push_back(Warped(warp, X));
   const int total = static_cast<int>(object.size());
   const double max_theta = options.max_theta_deg * M_PI / 180;
 
@@ -122,13 +127,13 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
           Eigen::AngleAxisd(tilt, tilt_axis).toRotationMatrix() * facing *
           Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()).toRotationMatrix();
       const Pose pose = Pose::FromRt(R, distance * z - R * centre);
-      BoardView lv = See(left, pose, object, options.edge_margin_px, max_theta);
+      BoardView lv = See(left, pose, object, shape, options.edge_margin_px, max_theta);
       if (lv.size() < options.min_visible * total) continue;
       const Pose right_pose =
           Pose::FromRt(extrinsic.R() * pose.R(), extrinsic.R() * pose.t() + extrinsic.t());
       BoardView rv;
       if (options.stereo) {
-        rv = See(right, right_pose, object, options.edge_margin_px, max_theta);
+        rv = See(right, right_pose, object, shape, options.edge_margin_px, max_theta);
         if (rv.size() < options.min_visible * total) rv = BoardView();
       }
       for (auto* view : {&lv, &rv})

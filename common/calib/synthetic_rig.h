@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "calib/board_warp.h"
 #include "calib/calib_data.h"
 #include "calib/pose.h"
 #include "models/camera_model.h"
@@ -41,6 +42,9 @@ struct SyntheticRigOptions {
   double min_visible = 0.5;
   double edge_margin_px = 3;  // corners closer to the image border are not detected
   double max_theta_deg = 180;  // the lens's half field: rays farther off axis are not imaged
+  // The board's true bow {x2, y2} (board_warp.h, metres, over the board's
+  // extent); the corners' object points stay flat, as a detector gives them.
+  std::array<double, 2> board_warp{};
 };
 
 struct SyntheticRig {

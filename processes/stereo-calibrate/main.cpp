@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
          "Leave out corners farther than this many sigma from their projection (0: keep all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  app.add_flag("--board-warp", calib.board_warp,
+               "Estimate the board's bow (mrcal's calobject_warp paraboloid; reported in mm) "
+               "with everything else");
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
       ->capture_default_str();
