@@ -67,6 +67,9 @@ struct StereoCalibration {
   // between the exposures, a misordered right image): out of R, T, each
   // camera keeps its view.
   std::vector<int> inconsistent_views;
+  // Views whose right image numbered a symmetric board's corners from the
+  // other end (half_turn.h): renumbered, not fitted.
+  std::vector<int> half_turned_views;
   std::vector<double> view_rms;  // per input view; negative: not a stereo view
   std::vector<std::string> extrinsic_names;  // rx ry rz tx ty tz
   // Angle-axis radians, metres. In the paper's flow they are those of R, T

@@ -102,6 +102,7 @@ Json StereoReport(const StereoCalibration& s) {
   stereo["baseline_m"] = s.T.norm();
   stereo["views"] = s.views;
   stereo["inconsistent_views"] = s.inconsistent_views;
+  stereo["half_turned_views"] = s.half_turned_views;
   stereo["view_rms"] = ViewRmsJson(s.view_rms);
   Json stddev = Json::object();
   for (size_t i = 0; i < s.extrinsic_stddev.size() && i < s.extrinsic_names.size(); ++i)

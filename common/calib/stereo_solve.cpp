@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "calib/camera_result.h"
+#include "calib/half_turn.h"
 #include "calib/mono_solve.h"
 #include "calib/outliers.h"
 #include "calib/pair_consistency.h"
@@ -45,19 +46,25 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   const BoardExtent board = ExtentOf({&data.left, &data.right});
   SolveMono(data.left, board, options, &mono[0]);
   SolveMono(data.right, board, options, &mono[1]);
+  const int n = data.size();
+  std::vector<bool> is_stereo(n, false);
+  for (int v = 0; v < n; ++v)
+    is_stereo[v] = mono[0].prepared.usable[v] && mono[1].prepared.usable[v];
   StereoCalibration out;
   out.model = options.model;
   out.flow = options.flow;
+  out.half_turned_views = MakeHalfTurnsConsistent(board, is_stereo, mono[0], &mono[1]);
+  for (int v : out.half_turned_views)
+    Say(options, "view " + std::to_string(v) +
+                     ": the right image's corners were numbered half-turned (a symmetric "
+                     "board), renumbered to match the left's");
   for (int c = 0; c < 2; ++c)
     (c == 0 ? out.left : out.right) =
         CameraResult(mono[c].problem, 0, mono[c].prepared, mono[c].outcome,
                      mono[c].init_method, options);
 
-  const int n = data.size();
-  std::vector<bool> is_stereo(n, false);
   std::vector<Pose> left_poses, right_poses;
   for (int v = 0; v < n; ++v) {
-    is_stereo[v] = mono[0].prepared.usable[v] && mono[1].prepared.usable[v];
     if (!is_stereo[v]) continue;
     left_poses.push_back(mono[0].poses[v]);
     right_poses.push_back(mono[1].poses[v]);
