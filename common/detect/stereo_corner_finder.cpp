@@ -52,7 +52,13 @@ widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_f
   corners.utime = frame.utime;
   corners.frame_id = frame.frame_id;
   corners.left = FindInImage(frame.left);
-  corners.right = FindInImage(frame.right);
+  // A one-camera rig's frame has no right image: no corners and no size.
+  if (IsNoImage(frame.right)) {
+    corners.right.board_id = board_.id;
+    corners.right.image_width = corners.right.image_height = corners.right.n = 0;
+  } else {
+    corners.right = FindInImage(frame.right);
+  }
   return corners;
 }
 

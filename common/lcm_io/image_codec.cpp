@@ -49,6 +49,19 @@ Compression ParseCompression(const std::string& name) {
   throw std::invalid_argument("compression must be none, jpeg or png, not '" + name + "'");
 }
 
+bool IsNoImage(const image_t& msg) {
+  return msg.width == 0 && msg.height == 0 && msg.size == 0 && msg.data.empty();
+}
+
+image_t NoImage(int64_t utime) {
+  image_t msg;
+  msg.utime = utime;
+  msg.width = msg.height = msg.row_stride = msg.size = 0;
+  msg.pixelformat = image_t::PIXEL_FORMAT_GRAY;
+  msg.nmetadata = 0;
+  return msg;
+}
+
 void ValidateImage(const image_t& msg) {
   if (!ImageSizeAcceptable(msg.width, msg.height))
     Reject("bad image size " + std::to_string(msg.width) + "x" + std::to_string(msg.height));

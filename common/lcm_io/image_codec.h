@@ -24,6 +24,12 @@ Compression ParseCompression(const std::string& name);
 // most 65536 pixels a side and 2^28 pixels in all.
 bool ImageSizeAcceptable(int64_t width, int64_t height);
 
+// Whether the message is no image at all (width = height = size = 0): the
+// missing camera of a one-camera rig (stereo_frame_t).
+bool IsNoImage(const widestereo::image_t& msg);
+// The no-image message.
+widestereo::image_t NoImage(int64_t utime);
+
 // Checks that width, height, row_stride, size and the payload agree for the
 // message's pixel format, before any pixel is touched. Throws DecodeError.
 void ValidateImage(const widestereo::image_t& msg);

@@ -42,7 +42,7 @@ void Validate(const widestereo::image_t& msg) { ValidateImage(msg); }
 
 void Validate(const widestereo::stereo_frame_t& msg) {
   Validate(msg.left);
-  Validate(msg.right);
+  if (!IsNoImage(msg.right)) Validate(msg.right);  // a one-camera rig sends no right image
 }
 
 void Validate(const widestereo::camera_corners_t& msg) {

@@ -45,7 +45,7 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
     }
     process.SetState("capturing");
     const int64_t id = frame_id++;
-    if (pair->left.empty() || pair->right.empty()) {
+    if (pair->left.empty() || (pair->right.empty() && !source.Mono())) {
       process.ReportError("frame " + std::to_string(id) + " lost: " + pair->label);
       process.Tick();
       continue;
@@ -57,7 +57,9 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
                                         : WallMicros();
     process.ObserveTime(frame.utime);
     frame.left = MatToImage(pair->left, frame.utime, options.compression, options.jpeg_quality);
-    frame.right = MatToImage(pair->right, frame.utime, options.compression, options.jpeg_quality);
+    frame.right = source.Mono() ? NoImage(frame.utime)
+                                : MatToImage(pair->right, frame.utime, options.compression,
+                                             options.jpeg_quality);
     process.Publish(channel::kStereoImages, frame);
     process.log().Detail("frame " + std::to_string(id) + ": " + pair->label);
     process.Tick();

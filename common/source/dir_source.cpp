@@ -31,12 +31,30 @@ cv::Mat ReadImage(const std::string& path) {
 
 }  // namespace
 
-std::vector<ImagePairPaths> FindImagePairs(const std::string& dir) {
+fs::directory_iterator OpenDir(const std::string& dir) {
   std::error_code error;
   fs::directory_iterator it(dir, error);
   if (error) throw std::runtime_error("cannot read image directory " + dir + ": " + error.message());
+  return it;
+}
+
+void SortByLeft(std::vector<ImagePairPaths>* pairs) {
+  std::sort(pairs->begin(), pairs->end(),
+            [](const ImagePairPaths& a, const ImagePairPaths& b) { return a.left < b.left; });
+}
+
+std::vector<ImagePairPaths> FindImages(const std::string& dir) {
+  std::vector<ImagePairPaths> images;
+  for (const auto& entry : OpenDir(dir))
+    if (entry.is_regular_file() && IsImage(entry.path())) images.push_back({entry.path().string(), ""});
+  if (images.empty()) throw std::runtime_error("no images in " + dir);
+  SortByLeft(&images);
+  return images;
+}
+
+std::vector<ImagePairPaths> FindImagePairs(const std::string& dir) {
   std::vector<ImagePairPaths> pairs;
-  for (const auto& entry : it) {
+  for (const auto& entry : OpenDir(dir)) {
     const std::string name = entry.path().filename().string();
     const size_t at = name.find("left");
     if (!entry.is_regular_file() || !IsImage(entry.path()) || at == std::string::npos) continue;
@@ -46,13 +64,12 @@ std::vector<ImagePairPaths> FindImagePairs(const std::string& dir) {
   if (pairs.empty())
     throw std::runtime_error("no left/right image pairs in " + dir +
                              " (names must differ only in 'left' and 'right')");
-  std::sort(pairs.begin(), pairs.end(),
-            [](const ImagePairPaths& a, const ImagePairPaths& b) { return a.left < b.left; });
+  SortByLeft(&pairs);
   return pairs;
 }
 
-DirSource::DirSource(const std::string& dir, bool loop)
-    : dir_(dir), pairs_(FindImagePairs(dir)), loop_(loop) {}
+DirSource::DirSource(const std::string& dir, bool loop, bool mono)
+    : dir_(dir), mono_(mono), pairs_(mono ? FindImages(dir) : FindImagePairs(dir)), loop_(loop) {}
 
 std::optional<StereoPair> DirSource::Next() {
   if (next_ == pairs_.size()) {
@@ -64,11 +81,16 @@ std::optional<StereoPair> DirSource::Next() {
   const ImagePairPaths& paths = pairs_[next_++];
   StereoPair pair;
   pair.left = ReadImage(paths.left);
-  pair.right = ReadImage(paths.right);
-  pair.label = fs::path(paths.left).filename().string() + " + " +
-               fs::path(paths.right).filename().string();
-  if (pair.left.empty() || pair.right.empty() || pair.left.size() != pair.right.size() ||
-      pair.left.type() != pair.right.type()) {
+  pair.label = fs::path(paths.left).filename().string();
+  if (!mono_) {
+    pair.right = ReadImage(paths.right);
+    pair.label += " + " + fs::path(paths.right).filename().string();
+  }
+  const bool readable = mono_ ? !pair.left.empty()
+                              : !pair.left.empty() && !pair.right.empty() &&
+                                    pair.left.size() == pair.right.size() &&
+                                    pair.left.type() == pair.right.type();
+  if (!readable) {
     pair.label = "unreadable, or two images of different size or type: " + pair.label;
     pair.left = pair.right = cv::Mat();
     ++unreadable_;

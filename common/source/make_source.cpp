@@ -20,7 +20,9 @@ std::unique_ptr<StereoSource> MakeStereoSource(const std::string& spec, const So
       throw std::invalid_argument("aravis: needs the cameras' settings: --rig config/rig/NAME.yaml");
     return std::make_unique<AravisSource>(arg, options.rig_config);
   }
-  if (kind == "dir") return std::make_unique<DirSource>(arg, options.loop);
+  if (options.mono && kind != "dir")
+    throw std::invalid_argument("--mono is for dir: sources (a folder of one camera's images)");
+  if (kind == "dir") return std::make_unique<DirSource>(arg, options.loop, options.mono);
   if (kind == "sim") return MakeSimSource(arg, options.loop);
   throw std::invalid_argument("unknown source kind '" + kind +
                               "' (use aravis:LEFT_ID,RIGHT_ID, dir:PATH or sim:CONFIG.yaml)");

@@ -10,6 +10,7 @@ namespace ws {
 
 struct SourceOptions {
   bool loop = false;          // dir: and sim: start again at the end
+  bool mono = false;          // dir: every image is a left image (a one-camera rig)
   std::string rig_config;     // aravis: camera settings (config/rig/*.yaml)
 };
 

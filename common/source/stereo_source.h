@@ -43,6 +43,8 @@ class StereoSource {
   virtual std::vector<std::string> TakeEvents() { return {}; }
   // True when pairs come at the source's own pace (cameras): no rate limit.
   virtual bool Paced() const { return false; }
+  // True for a one-camera rig: every pair has a left image only.
+  virtual bool Mono() const { return false; }
 };
 
 }  // namespace ws

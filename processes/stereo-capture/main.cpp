@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   app.add_option("--count", capture.count, "Stop after N pairs (0: when the source ends)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--loop", source_options.loop, "dir: and sim: start again after the last pair");
+  app.add_flag("--mono", source_options.mono,
+               "A one-camera rig: every image of the dir: folder, in name order, is sent as the "
+               "left image of a frame with no right image");
   app.add_option("--rig", source_options.rig_config, "Camera settings for aravis: (config/rig/*.yaml)");
   app.add_option("--compression", compression, "none, jpeg or png")
       ->check(CLI::IsMember({"none", "jpeg", "png"}));
