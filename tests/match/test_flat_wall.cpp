@@ -9,14 +9,9 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "lcm_io/channels.h"
-#include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
-#include "sim/ground_truth.h"
 #include "test_support.h"
-#include "wall_analysis.h"
-#include "widestereo/cloud_stats_t.hpp"
-#include "widestereo/disparity_t.hpp"
+#include "wall_chain.h"
 
 namespace {
 
@@ -25,79 +20,19 @@ using namespace ws::test;
 constexpr int kFrames = 2;
 constexpr const char* kNumDisparities = "64";  // the wall is at 52 px
 
-struct WallRun {
-  std::vector<DisparityErrors> disparity;  // per frame
-  std::vector<WallFit> wall;               // per frame
-};
-
 class FlatWall : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::string(TempDir("flat-wall"));
-    const auto r = RunCommand({"stereo-capture", "--source",
-                               "sim:config/sim/wall.yaml?truth=" + *dir_ + "/truth.yaml", "--count",
-                               std::to_string(kFrames), "--rate", "10", "--frame-clock", "--log-dir",
-                               *dir_, "--out-url", "file://" + *dir_ + "/images.lcmlog?mode=w"},
-                              120);
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    truth_ = new ws::SimTruth(ws::LoadSimTruth(*dir_ + "/truth.yaml"));
+    truth_ = new ws::SimTruth(CaptureWall(*dir_, "config/sim/wall.yaml", kFrames));
   }
   static void TearDownTestSuite() {
     delete truth_;
     delete dir_;
   }
 
-  // stereo-match with a calibration file of `rig`, then stereo-cloud, on
-  // the captured images; measured against the truth.
   static WallRun Run(const ws::StereoRig& rig, const std::string& name) {
-    const std::string calib = *dir_ + "/" + name + ".yaml";
-    const std::string match = *dir_ + "/" + name + "-match.lcmlog";
-    const std::string cloud = *dir_ + "/" + name + "-cloud.lcmlog";
-    WriteCalibrationFile(calib, rig);
-    auto r = RunCommand({"stereo-match", "--log-dir", *dir_, "--config", "config/stereo-match.yaml",
-                         "--calib", calib, "--num-disparities", kNumDisparities, "--in-url",
-                         "file://" + *dir_ + "/images.lcmlog?speed=0", "--out-url", "file://" + match + "?mode=w"},
-                        120);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-    r = RunCommand({"stereo-cloud", "--log-dir", *dir_, "--config", "config/stereo-cloud.yaml", "--in-url",
-                    "file://" + match + "?speed=0", "--out-url", "file://" + cloud + "?mode=w"},
-                   120);
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-
-    // The truth, seen through the true rig's rectification (the frame the
-    // cloud is in only differs by the calibration's own rectifying rotation,
-    // which is the same here: both calibrations share R and T).
-    const ws::StereoRig true_rig = RigFromTruth(*truth_);
-    const ws::Rectification rect = ws::BuildRectification(true_rig);
-    const ws::SimFrameTruth& wall = truth_->frames.front();
-    const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);
-    const cv::Vec3d normal = rect.R_left * wall.wall_normal;
-
-    const auto match_events = ReadLog(match);
-    const auto disparities = Messages<widestereo::disparity_t>(match_events, ws::channel::kStereoDisparity);
-    const auto cloud_events = ReadLog(cloud);
-    const auto clouds = Messages<widestereo::point_cloud_t>(cloud_events, ws::channel::kStereoCloudFiltered);
-    const auto stats = Messages<widestereo::cloud_stats_t>(cloud_events, ws::channel::kCloudStats);
-    EXPECT_EQ(disparities.size(), size_t(kFrames));
-    EXPECT_EQ(clouds.size(), size_t(kFrames));
-    EXPECT_EQ(stats.size(), size_t(kFrames));
-    WallRun run;
-    for (size_t i = 0; i < std::min({disparities.size(), clouds.size(), stats.size()}); ++i) {
-      EXPECT_TRUE(stats[i].plane_found) << name << " frame " << i;
-      run.disparity.push_back(CompareDisparity(ws::ImageToMat(disparities[i].disparity), true_disparity));
-      run.wall.push_back(MeasureWall(clouds[i], stats[i], rect, true_disparity, normal, wall.wall_offset,
-                                     0.02));
-      const auto& d = run.disparity.back();
-      const auto& w = run.wall.back();
-      std::printf("[ wall ] %-7s frame %zu: disparity density %.3f, bias %+.3f px, sigma %.3f px, bad %.4f | "
-                  "plane %.4f m, tilt %.2f mrad, inlier RMS %.2f mm, inliers %.3f, RMS to truth %.2f mm, "
-                  "coverage %.3f | stages",
-                  name.c_str(), i, d.density, d.bias, d.sigma, d.bad_rate, w.offset, 1000 * w.tilt_rad,
-                  1000 * w.inlier_rms, w.inlier_fraction, 1000 * w.rms_to_truth, w.coverage);
-      for (int s = 0; s < stats[i].nstages; ++s) std::printf(" %d", stats[i].stage_points[s]);
-      std::printf("\n");
-    }
-    return run;
+    return RunWallChain(*dir_, *truth_, rig, name, kFrames, kNumDisparities);
   }
 
   static std::string* dir_;

@@ -1,0 +1,81 @@
+#include "wall_chain.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "match_fixtures.h"
+#include "test_support.h"
+#include "widestereo/cloud_stats_t.hpp"
+#include "widestereo/disparity_t.hpp"
+
+namespace ws::test {
+
+SimTruth CaptureWall(const std::string& dir, const std::string& config, int frames) {
+  const auto r = RunCommand({"stereo-capture", "--source", "sim:" + config + "?truth=" + dir + "/truth.yaml",
+                             "--count", std::to_string(frames), "--rate", "10", "--frame-clock",
+                             "--log-dir", dir, "--out-url", "file://" + dir + "/images.lcmlog?mode=w"},
+                            120);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return LoadSimTruth(dir + "/truth.yaml");
+}
+
+WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
+                     const std::string& name, int frames, const std::string& num_disparities,
+                     double focal_scale) {
+  const std::string calib = dir + "/" + name + ".yaml";
+  const std::string match = dir + "/" + name + "-match.lcmlog";
+  const std::string cloud = dir + "/" + name + "-cloud.lcmlog";
+  WriteCalibrationFile(calib, rig);
+  auto r = RunCommand({"stereo-match", "--log-dir", dir, "--config", "config/stereo-match.yaml",
+                       "--calib", calib, "--num-disparities", num_disparities, "--focal-scale",
+                       std::to_string(focal_scale), "--in-url",
+                       "file://" + dir + "/images.lcmlog?speed=0", "--out-url", "file://" + match + "?mode=w"},
+                      120);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  r = RunCommand({"stereo-cloud", "--log-dir", dir, "--config", "config/stereo-cloud.yaml", "--in-url",
+                  "file://" + match + "?speed=0", "--out-url", "file://" + cloud + "?mode=w"},
+                 120);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+
+  // The truth, seen through the true rig's rectification (the frame the
+  // cloud is in only differs by the calibration's own rectifying rotation,
+  // which is the same here: both calibrations share R and T).
+  const StereoRig true_rig = RigFromTruth(truth);
+  const Rectification rect = BuildRectification(true_rig, RectifyOptions{focal_scale, {}});
+  const SimFrameTruth& wall = truth.frames.front();
+  const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);
+  const cv::Vec3d normal = rect.R_left * wall.wall_normal;
+
+  const auto match_events = ReadLog(match);
+  const auto disparities = Messages<widestereo::disparity_t>(match_events, channel::kStereoDisparity);
+  const auto cloud_events = ReadLog(cloud);
+  const auto clouds = Messages<widestereo::point_cloud_t>(cloud_events, channel::kStereoCloudFiltered);
+  const auto stats = Messages<widestereo::cloud_stats_t>(cloud_events, channel::kCloudStats);
+  EXPECT_EQ(disparities.size(), size_t(frames));
+  EXPECT_EQ(clouds.size(), size_t(frames));
+  EXPECT_EQ(stats.size(), size_t(frames));
+  WallRun run;
+  for (size_t i = 0; i < std::min({disparities.size(), clouds.size(), stats.size()}); ++i) {
+    EXPECT_TRUE(stats[i].plane_found) << name << " frame " << i;
+    run.disparity.push_back(CompareDisparity(ImageToMat(disparities[i].disparity), true_disparity));
+    run.wall.push_back(MeasureWall(clouds[i], stats[i], rect, true_disparity, normal, wall.wall_offset,
+                                   0.02));
+    const auto& d = run.disparity.back();
+    const auto& w = run.wall.back();
+    std::printf("[ wall ] %-7s frame %zu: disparity density %.3f, bias %+.3f px, sigma %.3f px, bad %.4f | "
+                "plane %.4f m, tilt %.2f mrad, inlier RMS %.2f mm, inliers %.3f, RMS to truth %.2f mm, "
+                "coverage %.3f | stages",
+                name.c_str(), i, d.density, d.bias, d.sigma, d.bad_rate, w.offset, 1000 * w.tilt_rad,
+                1000 * w.inlier_rms, w.inlier_fraction, 1000 * w.rms_to_truth, w.coverage);
+    for (int s = 0; s < stats[i].nstages; ++s) std::printf(" %d", stats[i].stage_points[s]);
+    std::printf("\n");
+  }
+  return run;
+}
+
+
+}  // namespace ws::test

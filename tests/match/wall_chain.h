@@ -1,0 +1,33 @@
+// The flat-wall chain as processes over file:// logs, for the wall tests:
+// stereo-capture renders a simulator wall scene, stereo-match with a
+// calibration file of a rig, then stereo-cloud; each frame measured against
+// the simulator's truth (wall_analysis.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rectify/stereo_rig.h"
+#include "sim/ground_truth.h"
+#include "wall_analysis.h"
+
+namespace ws::test {
+
+// stereo-capture --source sim:CONFIG --count frames into DIR/images.lcmlog;
+// the simulator's truth.
+SimTruth CaptureWall(const std::string& dir, const std::string& config, int frames);
+
+struct WallRun {
+  std::vector<DisparityErrors> disparity;  // per frame
+  std::vector<WallFit> wall;               // per frame
+};
+
+// stereo-match --calib (the rig written as DIR/NAME.yaml) --num-disparities
+// --focal-scale on DIR/images.lcmlog, then stereo-cloud; every frame's
+// disparity and wall against the truth seen through the true rig's
+// rectification with the same RectifyOptions (printed).
+WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
+                     const std::string& name, int frames, const std::string& num_disparities,
+                     double focal_scale = 1.0);
+
+}  // namespace ws::test
