@@ -15,6 +15,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "calib/calibrate.h"
+#include "calib/heldout.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
 #include "widestereo/stereo_corners_t.hpp"
@@ -74,6 +75,38 @@ Row OpenCvFisheye(const CameraData& data, const CameraModel* camera, double max_
   return row;
 }
 
+// Every other view: even views train each camera alone, odd views test it
+// (BabelCalib's protocol: the camera fixed, each test pose fitted, every
+// corner; the board as the training estimated it); cv::fisheye is given no
+// test here.
+void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_sigma) {
+  std::printf("held out (train: even views, test: odd views; test RMS px over every corner)\n");
+  const CameraData* cameras[2] = {&data.left, &data.right};
+  for (const std::string kind : {"kb4", "bspline_theta"})
+    for (int s = 0; s < 2; ++s) {
+      CalibrationOptions options;
+      options.model = kind;
+      options.knots = knots;
+      if (s == 1) {
+        options.outlier_sigma = outlier_sigma;
+        options.board_warp = true;
+      }
+      std::printf("%-52s", (kind + (s ? ", outlier rejection + board warp" : "")).c_str());
+      for (int c = 0; c < (mono ? 1 : 2); ++c) {
+        CameraData train = *cameras[c], test = *cameras[c];
+        for (size_t v = 0; v < train.views.size(); ++v) (v % 2 ? train : test).views[v] = BoardView();
+        try {
+          const CameraCalibration fit = CalibrateCamera(train, options);
+          const HeldOutFit held = FitHeldOutViews(fit.model, test, 6, fit.board_warp);
+          std::printf("   train %.4f (%2d) test %.4f (%2d)", fit.rms_px, fit.views, held.rms_px, held.views);
+        } catch (const CalibrationError& e) {
+          std::printf("   failed: %s", e.what());
+        }
+      }
+      std::printf("\n");
+    }
+}
+
 void Print(const std::vector<Row>& rows, bool mono) {
   std::printf("%-52s %30s", "model", "left: RMS px (views, outliers %)");
   if (!mono) std::printf(" %31s", "right");
@@ -106,11 +139,14 @@ int main(int argc, char** argv) {
   int knots = 21;
   double opencv_max_theta_deg = 88;
   double outlier_sigma = 6;
+  bool heldout = false;
   cli.app().add_option("--knots", knots, "bspline_theta's (and bspline's) estimated coefficients");
   cli.app().add_option("--opencv-max-theta", opencv_max_theta_deg,
                        "cv::fisheye gets the views whose corners lie below this angle (degrees)");
   cli.app().add_option("--outlier-sigma", outlier_sigma,
                        "The second setting's outlier rejection (with --board-warp)");
+  cli.app().add_flag("--heldout", heldout,
+                     "Also train on the even views and test on the odd ones (held-out RMS)");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
   try {
     ws::Process process(cli.options());
@@ -161,6 +197,7 @@ int main(int argc, char** argv) {
       opencv = OpenCvFisheye(*cameras[c], theta_camera[c], opencv_max_theta_deg * M_PI / 180, c, opencv);
     rows.push_back(opencv);
     Print(rows, mono);
+    if (heldout) PrintHeldOut(data, mono, knots, outlier_sigma);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_fisheye_models: %s\n", e.what());

@@ -5,7 +5,9 @@
 # --outlier-sigma 6 --board-warp), beside cv::fisheye::calibrate and mrcal
 # 2.2's LENSMODEL_SPLINED_STEREOGRAPHIC (mrcal-calibrate-cameras, its own
 # outlier rejection and board warp) on the very same corners, and
-# BabelCalib's train/test RMS (the RealBabelCalib test).
+# BabelCalib's train/test RMS (the RealBabelCalib test); and held out
+# (BabelCalib's protocol, the same for both tools): trained on the even
+# views and tested on the odd ones (babelcalib: its own train / test split).
 #   bench/fisheye/run.sh [ros] [babelcalib] [sim]     (default: all three)
 # The real sets are read from ../shared/data (absent: that set is skipped).
 # mrcal's spline: its documented choice for a 180+ degree lens, 16 x 12
@@ -19,26 +21,38 @@ SETS=${*:-ros babelcalib sim}
 OUT=$(mktemp -d /tmp/bench-fisheye-XXXX)
 url() { echo "file://$1?$2"; }
 
-# mrcal on DIR/corners.lcmlog: WIDTH HEIGHT FOV_X_DEG FOCAL_PX CAMERAS...
-mrcal_fit() {
-  local dir=$1 width=$2 height=$3 fov=$4 focal=$5; shift 5
+# DIR/corners.lcmlog as DIR/corners-{left,right}.vnl; sets GRID_SIZE, GRID_SPACING.
+export_vnl() {
   local grid
-  grid=$($BENCH/export_corners_vnl --in-url "$(url "$dir/corners.lcmlog" speed=0)" \
-    --prefix "$dir/corners" --log-dir "$dir" --quiet | tail -1)
-  read -r _ size _ spacing <<<"$grid"
-  for camera in "$@"; do
-    mkdir -p "$dir/mrcal-$camera"
-    if mrcal-calibrate-cameras --corners-cache "$dir/corners-$camera.vnl" \
-      --lensmodel "LENSMODEL_SPLINED_STEREOGRAPHIC_order=3_Nx=16_Ny=12_fov_x_deg=$fov" \
-      --focal "$focal" --imagersize "$width" "$height" --object-spacing "$spacing" \
-      --object-width-n "${size%x*}" --object-height-n "${size#*x}" --outdir "$dir/mrcal-$camera" \
-      "$camera-*.png" > "$dir/mrcal-$camera/mrcal.out" 2>&1; then
-      /usr/bin/python3 bench/fisheye/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera"
-    else
-      echo "mrcal $camera: failed ($(tail -1 "$dir/mrcal-$camera/mrcal.out"))"
-    fi
-  done
+  grid=$($BENCH/export_corners_vnl --in-url "$(url "$1/corners.lcmlog" speed=0)" \
+    --prefix "$1/${2:-corners}" --log-dir "$1" --quiet | tail -1)
+  read -r _ GRID_SIZE _ GRID_SPACING <<<"$grid"
 }
+
+# mrcal-calibrate-cameras on VNL into OUTDIR: WIDTH HEIGHT FOV_X_DEG FOCAL_PX CAMERA
+mrcal_solve() {
+  local vnl=$1 outdir=$2 width=$3 height=$4 fov=$5 focal=$6 camera=$7
+  mkdir -p "$outdir"
+  mrcal-calibrate-cameras --corners-cache "$vnl" \
+    --lensmodel "LENSMODEL_SPLINED_STEREOGRAPHIC_order=3_Nx=16_Ny=12_fov_x_deg=$fov" \
+    --focal "$focal" --imagersize "$width" "$height" --object-spacing "$GRID_SPACING" \
+    --object-width-n "${GRID_SIZE%x*}" --object-height-n "${GRID_SIZE#*x}" --outdir "$outdir" \
+    "$camera-*.png" > "$outdir/mrcal.out" 2>&1 || { echo "mrcal $camera: failed ($(tail -1 "$outdir/mrcal.out"))"; return 1; }
+}
+
+# mrcal on every view of DIR's corners, then trained on TRAIN.vnl and tested
+# on TEST.vnl: DIR WIDTH HEIGHT FOV FOCAL CAMERA TRAIN TEST
+mrcal_fit() {
+  local dir=$1 camera=$6
+  mrcal_solve "$dir/corners-$camera.vnl" "$dir/mrcal-$camera" "${@:2:4}" "$camera" &&
+    /usr/bin/python3 bench/fisheye/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera"
+  mrcal_solve "$7" "$dir/mrcal-train-$camera" "${@:2:4}" "$camera" &&
+    /usr/bin/python3 bench/fisheye/mrcal_heldout.py "$dir/mrcal-train-$camera/camera-0.cameramodel" "$8" \
+      "${GRID_SIZE%x*}" "${GRID_SIZE#*x}" "$GRID_SPACING" "$camera"
+}
+
+# VNL's views of even (0) or odd (1) frame ids.
+every_other() { awk -v odd="$2" 'NR == 1 || (substr($1, length($1) - 4, 1) % 2 == odd)' "$1"; }
 
 table() {
   $BENCH/bench_fisheye_models --in-url "$(url "$1/corners.lcmlog" speed=0)" --log-dir "$1" --quiet "${@:2}" 2> >(grep "cv::fisheye" || true)
@@ -54,15 +68,26 @@ for set in $SETS; do
       $BIN/stereo-capture --source dir:$DATA/fisheye-stereo-ros --frame-clock --out-url "$(url "$dir/images.lcmlog" mode=w)" --log-dir "$dir" --quiet
       $BIN/stereo-detect --board chessboard:8x6:0.04 --in-url "$(url "$dir/images.lcmlog" speed=0)" \
         --out-url "$(url "$dir/corners.lcmlog" mode=w)" --log-dir "$dir" --quiet
-      table "$dir"
-      mrcal_fit "$dir" 800 503 200 250 left right ;;
+      table "$dir" --heldout
+      export_vnl "$dir"
+      for camera in left right; do
+        every_other "$dir/corners-$camera.vnl" 0 > "$dir/train-$camera.vnl"
+        every_other "$dir/corners-$camera.vnl" 1 > "$dir/test-$camera.vnl"
+        mrcal_fit "$dir" 800 503 200 250 $camera "$dir/train-$camera.vnl" "$dir/test-$camera.vnl"
+      done ;;
     babelcalib)
       [ -d $DATA/babelcalib-ov-plane ] || { echo "== babelcalib: $DATA/babelcalib-ov-plane absent, skipped"; continue; }
       echo "== babelcalib-ov-plane, train views (1280 x 800, one camera)"
       $BIN/stereo-import-corners --babelcalib $DATA/babelcalib-ov-plane/ov_plane.dsc --log-dir "$dir" --quiet \
         --out-url "$(url "$dir/corners.lcmlog" mode=w)" $DATA/babelcalib-ov-plane/corners/train/*.orpc
       table "$dir"
-      mrcal_fit "$dir" 1280 800 200 300 left ;;
+      mkdir -p "$dir/test"
+      $BIN/stereo-import-corners --babelcalib $DATA/babelcalib-ov-plane/ov_plane.dsc --log-dir "$dir/test" --quiet \
+        --out-url "$(url "$dir/test/corners.lcmlog" mode=w)" $DATA/babelcalib-ov-plane/corners/test/*.orpc
+      build/tests/test_calib_real_fisheye --gtest_filter='RealBabelCalib.TrainTest*' | grep -E "^(kb4|bspline_theta) "
+      export_vnl "$dir/test"
+      export_vnl "$dir"
+      mrcal_fit "$dir" 1280 800 200 300 left "$dir/corners-left.vnl" "$dir/test/corners-left.vnl" ;;
     sim)
       echo "== simulated 200-degree knee-lens rig (config/sim/fisheye.yaml, rendered and detected)"
       $BIN/stereo-capture --source sim:config/sim/fisheye.yaml --frame-clock --rate 5 \
@@ -70,8 +95,13 @@ for set in $SETS; do
       $BIN/stereo-detect --board chessboard:9x6:0.05 --in-url "$(url "$dir/images.lcmlog" speed=0)" \
         --out-url "$(url "$dir/corners.lcmlog" mode=w)" --log-dir "$dir" --quiet
       rm -f "$dir/images.lcmlog"
-      table "$dir"
-      mrcal_fit "$dir" 1280 960 200 300 left right ;;
+      table "$dir" --heldout
+      export_vnl "$dir"
+      for camera in left right; do
+        every_other "$dir/corners-$camera.vnl" 0 > "$dir/train-$camera.vnl"
+        every_other "$dir/corners-$camera.vnl" 1 > "$dir/test-$camera.vnl"
+        mrcal_fit "$dir" 1280 960 200 300 $camera "$dir/train-$camera.vnl" "$dir/test-$camera.vnl"
+      done ;;
     *) echo "unknown set '$set' (ros, babelcalib, sim)"; exit 2 ;;
   esac
 done

@@ -16,7 +16,8 @@ CameraBlock FixedBlock(const CameraModel& model) {
   return block;
 }
 
-HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int min_points) {
+HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int min_points,
+                           const BoardWarp& warp) {
   const CameraBlock camera = FixedBlock(model);
   HeldOutFit fit;
   fit.view_rms.assign(data.views.size(), -1.0);
@@ -27,7 +28,7 @@ HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int
     const std::vector<char> all(view.size(), 1);
     double best = std::numeric_limits<double>::infinity();
     for (Pose pose : PlanarPoseCandidates(camera, view, all))
-      best = std::min(best, RefinePose(camera, view, all, &pose));
+      best = std::min(best, RefinePose(camera, view, all, &pose, warp));
     if (!std::isfinite(best)) continue;
     fit.view_rms[v] = best;
     sum += best * best * view.size();

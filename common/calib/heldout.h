@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "calib/board_warp.h"
 #include "calib/calib_data.h"
 #include "calib/camera_block.h"
 #include "models/camera_model.h"
@@ -23,7 +24,9 @@ struct HeldOutFit {
 CameraBlock FixedBlock(const CameraModel& model);
 
 // Every non-empty view with at least min_points corners posed under the
-// fixed camera: from each planar start (pose_fit.h), refined, the best kept.
-HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, int min_points = 6);
+// fixed camera and board shape (a calibration's board_warp; flat by
+// default): from each planar start (pose_fit.h), refined, the best kept.
+HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, int min_points = 6,
+                           const BoardWarp& warp = BoardWarp());
 
 }  // namespace ws::calib

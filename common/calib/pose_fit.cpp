@@ -11,12 +11,14 @@
 namespace ws::calib {
 
 double RefinePose(const CameraBlock& camera, const BoardView& view, const std::vector<char>& mask,
-                  Pose* pose) {
+                  Pose* pose, const BoardWarp& warp) {
   const Pose before = *pose;
   std::vector<char> inliers = mask;
   Problem one;
   one.cameras.push_back(camera);
   one.cameras[0].fixed = true;
+  one.warp = warp;
+  one.warp.free = false;
   one.observations.push_back({0, 0, &view, &inliers, pose, false});
   try {
     Solve(one, SolveSettings{"pose", 30});

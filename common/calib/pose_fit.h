@@ -13,10 +13,10 @@
 namespace ws::calib {
 
 // Fits the pose of one view from *pose on the corners of `mask`, the camera
-// fixed; returns the view's RMS, or infinity (and *pose unchanged) when the
-// fit fails.
+// and the board's shape (board_warp.h; flat by default) fixed; returns the
+// view's RMS, or infinity (and *pose unchanged) when the fit fails.
 double RefinePose(const CameraBlock& camera, const BoardView& view, const std::vector<char>& mask,
-                  Pose* pose);
+                  Pose* pose, const BoardWarp& warp = BoardWarp());
 
 // Both planar PnP solutions (IPPE) of the view's corners in mask, undistorted
 // by the camera; none when fewer than 4 corners can be undistorted. For an
