@@ -54,6 +54,19 @@ mrcal_fit() {
 # VNL's views of even (0) or odd (1) frame ids.
 every_other() { awk -v odd="$2" 'NR == 1 || (substr($1, length($1) - 4, 1) % 2 == odd)' "$1"; }
 
+# A stereo set's table (with held-out), then mrcal on each camera, trained
+# on the even views and tested on the odd ones: DIR WIDTH HEIGHT FOV FOCAL
+stereo_set() {
+  local dir=$1
+  table "$dir" --heldout
+  export_vnl "$dir"
+  for camera in left right; do
+    every_other "$dir/corners-$camera.vnl" 0 > "$dir/train-$camera.vnl"
+    every_other "$dir/corners-$camera.vnl" 1 > "$dir/test-$camera.vnl"
+    mrcal_fit "$dir" "${@:2:4}" $camera "$dir/train-$camera.vnl" "$dir/test-$camera.vnl"
+  done
+}
+
 table() {
   $BENCH/bench_fisheye_models --in-url "$(url "$1/corners.lcmlog" speed=0)" --log-dir "$1" --quiet "${@:2}" 2> >(grep "cv::fisheye" || true)
 }
@@ -68,13 +81,7 @@ for set in $SETS; do
       $BIN/stereo-capture --source dir:$DATA/fisheye-stereo-ros --frame-clock --out-url "$(url "$dir/images.lcmlog" mode=w)" --log-dir "$dir" --quiet
       $BIN/stereo-detect --board chessboard:8x6:0.04 --in-url "$(url "$dir/images.lcmlog" speed=0)" \
         --out-url "$(url "$dir/corners.lcmlog" mode=w)" --log-dir "$dir" --quiet
-      table "$dir" --heldout
-      export_vnl "$dir"
-      for camera in left right; do
-        every_other "$dir/corners-$camera.vnl" 0 > "$dir/train-$camera.vnl"
-        every_other "$dir/corners-$camera.vnl" 1 > "$dir/test-$camera.vnl"
-        mrcal_fit "$dir" 800 503 200 250 $camera "$dir/train-$camera.vnl" "$dir/test-$camera.vnl"
-      done ;;
+      stereo_set "$dir" 800 503 200 250 ;;
     babelcalib)
       [ -d $DATA/babelcalib-ov-plane ] || { echo "== babelcalib: $DATA/babelcalib-ov-plane absent, skipped"; continue; }
       echo "== babelcalib-ov-plane, train views (1280 x 800, one camera)"
@@ -95,13 +102,7 @@ for set in $SETS; do
       $BIN/stereo-detect --board chessboard:9x6:0.05 --in-url "$(url "$dir/images.lcmlog" speed=0)" \
         --out-url "$(url "$dir/corners.lcmlog" mode=w)" --log-dir "$dir" --quiet
       rm -f "$dir/images.lcmlog"
-      table "$dir" --heldout
-      export_vnl "$dir"
-      for camera in left right; do
-        every_other "$dir/corners-$camera.vnl" 0 > "$dir/train-$camera.vnl"
-        every_other "$dir/corners-$camera.vnl" 1 > "$dir/test-$camera.vnl"
-        mrcal_fit "$dir" 1280 960 200 300 $camera "$dir/train-$camera.vnl" "$dir/test-$camera.vnl"
-      done ;;
+      stereo_set "$dir" 1280 960 200 300 ;;
     *) echo "unknown set '$set' (ros, babelcalib, sim)"; exit 2 ;;
   esac
 done
