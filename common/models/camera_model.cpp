@@ -42,6 +42,17 @@ std::optional<Eigen::Vector2d> Camera::Project(const Eigen::Vector3d& point) con
   return pixel;
 }
 
+bool Camera::InField(const Eigen::Vector3d& direction) const {
+  const std::vector<double>& knots = model_.distortion.knots;
+  if (knots.empty()) return true;
+  const double radius = std::visit(
+      [&](const auto& model) {
+        return ws::IdealRadius<typename std::decay_t<decltype(model)>::Coordinate>(direction.data());
+      },
+      distortion_.model());
+  return radius <= knots.back();
+}
+
 std::optional<Eigen::Vector3d> Camera::Unproject(const Eigen::Vector2d& pixel) const {
   Eigen::Vector3d ray;
   const bool found = std::visit(

@@ -57,6 +57,11 @@ class Camera {
   // (r = tan(theta), or theta for angle models).
   double DistortionCurve(double r) const { return distortion_(r); }
   bool IsAngleModel() const { return ws::IsAngleModel(distortion_.model()); }
+  // Whether a camera-frame direction lies in the field the model describes:
+  // its ideal radius (radial_coordinate.h) up to a B-spline's last knot (the
+  // calibrated field, times a margin; past it the last cubic piece goes on
+  // untamed); any direction the model projects for the polynomials.
+  bool InField(const Eigen::Vector3d& direction) const;
 
  private:
   CameraModel model_;

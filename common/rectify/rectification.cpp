@@ -1,6 +1,7 @@
 #include "rectify/rectification.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <opencv2/calib3d.hpp>
@@ -23,28 +24,72 @@ void BouguetRotations(const StereoRig& rig, cv::Matx33d* R_left, cv::Matx33d* R_
   *R_right = cv::Matx33d(R2);
 }
 
-// K_rect^-1 (u, v, 1): the rectified frame's ray through pixel (u, v).
+// The rectified frame's ray through pixel (u, v): K_rect^-1 (u, v, 1), or
+// the lat-lon ray of (psi, phi) = ((u - cx) / f, (v - cy) / f).
 cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v) {
-  return {(u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1};
+  if (rect.mode == RectificationMode::kPinhole) return {(u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1};
+  const double psi = (u - rect.cx) / rect.f, phi = (v - rect.cy) / rect.f;
+  return {std::sin(psi), std::cos(psi) * std::sin(phi), std::cos(psi) * std::cos(phi)};
+}
+
+// The lat-lon angles (psi, phi) of a ray in the rectified frame.
+cv::Vec2d LatLon(const cv::Vec3d& p) {
+  return {std::asin(std::clamp(p[0] / cv::norm(p), -1.0, 1.0)), std::atan2(p[1], p[2])};
 }
 
 void BuildMaps(const Camera& camera, const cv::Matx33d& R_rect, const Rectification& rect,
-               cv::Mat maps[2]) {
+               cv::Mat maps[2], cv::Mat* valid) {
   cv::Mat map_x(rect.size, CV_32FC1), map_y(rect.size, CV_32FC1);
+  *valid = cv::Mat(rect.size, CV_8UC1);
   const cv::Matx33d to_camera = R_rect.t();
+  const cv::Size input(camera.model().image_width, camera.model().image_height);
   cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
     for (int v = rows.start; v < rows.end; ++v) {
       float* mx = map_x.ptr<float>(v);
       float* my = map_y.ptr<float>(v);
+      uint8_t* ok = valid->ptr<uint8_t>(v);
       for (int u = 0; u < rect.size.width; ++u) {
-        const cv::Vec3d ray = to_camera * RectifiedRay(rect, u, v);
-        const auto pixel = camera.Project(Eigen::Vector3d(ray[0], ray[1], ray[2]));
-        mx[u] = pixel ? float((*pixel)[0]) : -1.f;
-        my[u] = pixel ? float((*pixel)[1]) : -1.f;
+        const cv::Vec3d r = to_camera * RectifiedRay(rect, u, v);
+        const Eigen::Vector3d ray(r[0], r[1], r[2]);
+        const auto pixel = camera.Project(ray);
+        const bool inside = pixel && camera.InField(ray) && (*pixel)[0] >= -0.5 && (*pixel)[1] >= -0.5 &&
+                            (*pixel)[0] <= input.width - 0.5 && (*pixel)[1] <= input.height - 0.5;
+        mx[u] = inside ? float((*pixel)[0]) : -1.f;
+        my[u] = inside ? float((*pixel)[1]) : -1.f;
+        ok[u] = inside ? 255 : 0;
       }
     }
   });
   cv::convertMaps(map_x, map_y, maps[0], maps[1], CV_16SC2);
+}
+
+// The (psi, phi) box of the rays of a camera's pixels (sampled about 200
+// times across the image) in its model's field turned by R_rect: psi over the rays of the
+// central row (phi within `band` of 0), phi over those of the central
+// column (psi within `band`), band the angle of 3 samples at the centre.
+// Elsewhere a lens past 180 degrees wraps: its rays behind the cameras near
+// the baseline have phi near 180 degrees (and near the epipoles, where |psi|
+// nears 90 degrees, phi is not defined).
+cv::Vec4d FieldBox(const Camera& camera, const cv::Matx33d& R_rect) {
+  const CameraModel& m = camera.model();
+  const double step = std::max(m.image_width, m.image_height) / 200.0;
+  const double band = 3 * step / std::min(m.fx, m.fy);
+  cv::Vec4d box(INFINITY, -INFINITY, INFINITY, -INFINITY);  // psi min, max, phi min, max
+  for (double v = 0; v < m.image_height; v += step)
+    for (double u = 0; u < m.image_width; u += step) {
+      const auto ray = camera.Unproject(Eigen::Vector2d(u, v));
+      if (!ray || !camera.InField(*ray)) continue;
+      const cv::Vec2d a = LatLon(R_rect * cv::Vec3d((*ray)[0], (*ray)[1], (*ray)[2]));
+      if (std::abs(a[1]) <= band) box[0] = std::min(box[0], a[0]), box[1] = std::max(box[1], a[0]);
+      if (std::abs(a[0]) <= band) box[2] = std::min(box[2], a[1]), box[3] = std::max(box[3], a[1]);
+    }
+  return box;
+}
+
+// The two cameras' boxes intersected.
+cv::Vec4d CommonBox(const StereoRig& rig, const cv::Matx33d& R_left, const cv::Matx33d& R_right) {
+  const cv::Vec4d l = FieldBox(Camera(rig.left), R_left), r = FieldBox(Camera(rig.right), R_right);
+  return {std::max(l[0], r[0]), std::min(l[1], r[1]), std::max(l[2], r[2]), std::min(l[3], r[3])};
 }
 
 }  // namespace
@@ -56,23 +101,37 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
   if (rect.input_size != cv::Size(rig.right.image_width, rig.right.image_height))
     throw std::invalid_argument("the two cameras of the rig have different image sizes");
   if (!(options.focal_scale > 0)) throw std::invalid_argument("focal_scale must be positive");
-  rect.size = options.size.empty() ? rect.input_size : options.size;
+  rect.mode = options.mode;
   BouguetRotations(rig, &rect.R_left, &rect.R_right);
   rect.f = options.focal_scale * std::min({rig.left.fx, rig.left.fy, rig.right.fx, rig.right.fy});
-  rect.cx = (rect.size.width - 1) / 2.0;
-  rect.cy = (rect.size.height - 1) / 2.0;
+  if (rect.mode == RectificationMode::kPinhole) {
+    rect.size = options.size.empty() ? rect.input_size : options.size;
+    rect.cx = (rect.size.width - 1) / 2.0;
+    rect.cy = (rect.size.height - 1) / 2.0;
+  } else {
+    const cv::Vec4d box = CommonBox(rig, rect.R_left, rect.R_right);
+    if (!(box[1] > box[0] && box[3] > box[2]))
+      throw std::invalid_argument("the two cameras of the rig see no common field");
+    rect.size = options.size.empty() ? cv::Size(int(std::ceil((box[1] - box[0]) * rect.f)) + 1,
+                                                int(std::ceil((box[3] - box[2]) * rect.f)) + 1)
+                                     : options.size;
+    // The box's centre at the image's centre.
+    rect.cx = (rect.size.width - 1) / 2.0 - rect.f * 0.5 * (box[0] + box[1]);
+    rect.cy = (rect.size.height - 1) / 2.0 - rect.f * 0.5 * (box[2] + box[3]);
+  }
   // The right camera's centre in the rectified frame is at (-baseline, 0, 0).
   const cv::Vec3d t = rect.R_right * cv::Vec3d(rig.T(0), rig.T(1), rig.T(2));
   rect.baseline = -t[0];
   if (!(rect.baseline > 0))
     throw std::invalid_argument("the right camera must be to the right of the left one (T.x < 0)");
   // Z = f b / d for disparity d = u_left - u_right (cv::reprojectImageTo3D's Q).
-  rect.Q = cv::Matx44d(1, 0, 0, -rect.cx,
-                       0, 1, 0, -rect.cy,
-                       0, 0, 0, rect.f,
-                       0, 0, 1 / rect.baseline, 0);
-  BuildMaps(left, rect.R_left, rect, rect.map_left);
-  BuildMaps(right, rect.R_right, rect, rect.map_right);
+  if (rect.mode == RectificationMode::kPinhole)
+    rect.Q = cv::Matx44d(1, 0, 0, -rect.cx,
+                         0, 1, 0, -rect.cy,
+                         0, 0, 0, rect.f,
+                         0, 0, 1 / rect.baseline, 0);
+  BuildMaps(left, rect.R_left, rect, rect.map_left, &rect.valid_left);
+  BuildMaps(right, rect.R_right, rect, rect.map_right, &rect.valid_right);
   return rect;
 }
 
@@ -90,6 +149,11 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
   const auto ray = camera.Unproject(Eigen::Vector2d(pixel.x, pixel.y));
   if (!ray) return false;
   const cv::Vec3d p = (left ? rect.R_left : rect.R_right) * cv::Vec3d((*ray)[0], (*ray)[1], (*ray)[2]);
+  if (rect.mode == RectificationMode::kLatLon) {
+    const cv::Vec2d a = LatLon(p);
+    *rectified = cv::Point2d(rect.f * a[0] + rect.cx, rect.f * a[1] + rect.cy);
+    return true;
+  }
   if (!(p[2] > 0)) return false;
   *rectified = cv::Point2d(rect.f * p[0] / p[2] + rect.cx, rect.f * p[1] / p[2] + rect.cy);
   return true;
@@ -97,6 +161,13 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
 
 cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Point2d& pixel) {
   return (left ? rect.R_left : rect.R_right).t() * RectifiedRay(rect, pixel.x, pixel.y);
+}
+
+cv::Vec2d CommonField(const StereoRig& rig) {
+  cv::Matx33d R_left, R_right;
+  BouguetRotations(rig, &R_left, &R_right);
+  const cv::Vec4d box = CommonBox(rig, R_left, R_right);
+  return {std::max(0.0, box[1] - box[0]), std::max(0.0, box[3] - box[2])};
 }
 
 }  // namespace ws

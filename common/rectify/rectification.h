@@ -11,6 +11,21 @@
 // For a super-wide, low-distortion lens the input images are already close to
 // pinhole, so this keeps nearly the whole field at the centre's resolution.
 //
+// Lat-lon (mrcal-stereo's rectification, for fields a plane cannot hold, 180
+// degrees and beyond): in the same rectified frame (x along the baseline),
+// a ray p = (x, y, z) has the elevation of its epipolar plane about the
+// baseline, phi = atan2(y, z), and its azimuth within that plane,
+// psi = asin(x / |p|); the rectified pixel is
+//   u = cx + f psi,  v = cy + f phi      (f in pixels per radian),
+// and back, the ray of (u, v) is (sin psi, cos psi sin phi, cos psi cos phi).
+// Both cameras' centres lie on the baseline, so a point has the same phi,
+// the same row, in both images; the disparity u_left - u_right is the angle
+// psi_left - psi_right times f. f = focal_scale * min(fx, fy) as above (the
+// cameras' resolution at the centre), and the image spans the common field:
+// the (psi, phi) box both cameras see (each camera's pixels that unproject,
+// sampled, turned into the rectified frame, their boxes intersected), or
+// `size` about its centre.
+//
 // Maps: for every rectified pixel p, the ray R_i^T K_rect^-1 p is projected
 // through camera i's own model (models/projection.h); the float maps are
 // converted to OpenCV's fixed-point maps (CV_16SC2 + CV_16UC1) for cv::remap.
@@ -22,19 +37,27 @@
 
 namespace ws {
 
+enum class RectificationMode { kPinhole, kLatLon };
+
 struct RectifyOptions {
   double focal_scale = 1.0;
-  cv::Size size;  // empty: the input image size
+  cv::Size size;  // empty: the input image size (pinhole), the common field (lat-lon)
+  RectificationMode mode = RectificationMode::kPinhole;
 };
 
 struct Rectification {
+  RectificationMode mode = RectificationMode::kPinhole;
   cv::Size input_size;
   cv::Size size;
   cv::Matx33d R_left, R_right;  // camera frame -> rectified frame
-  double f = 0, cx = 0, cy = 0;
+  double f = 0, cx = 0, cy = 0;  // pinhole: K_rect; lat-lon: pixels per radian and (psi, phi) = 0
   double baseline = 0;          // metres, > 0
-  cv::Matx44d Q;                // (u, v, d, 1) -> homogeneous left-rectified point
+  cv::Matx44d Q;                // pinhole: (u, v, d, 1) -> homogeneous left-rectified point; lat-lon: 0
   cv::Mat map_left[2], map_right[2];  // fixed-point remap tables
+  // Per rectified pixel, 255 where it samples a pixel of the input image
+  // (inside the lens's image), 0 where it does not: there the rectified
+  // image holds no data (the remap's constant border), not a neighbour's.
+  cv::Mat valid_left, valid_right;
 };
 
 // Throws std::invalid_argument if the cameras' image sizes differ or the
@@ -51,7 +74,12 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
                   const cv::Point2d& pixel, cv::Point2d* rectified);
 
 // The ray, in the left (right) camera's frame, that the rectified pixel
-// samples: R_i^T K_rect^-1 (u, v, 1), not normalised.
+// samples: R_i^T K_rect^-1 (u, v, 1) (pinhole) or R_i^T times the lat-lon
+// ray above; not normalised.
 cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Point2d& pixel);
+
+// The horizontal and vertical extent (radians) of the field both cameras of
+// the rig see, as lat-lon angles psi and phi in Bouguet's rectified frame.
+cv::Vec2d CommonField(const StereoRig& rig);
 
 }  // namespace ws

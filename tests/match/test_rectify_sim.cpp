@@ -80,6 +80,28 @@ class RowErrors {
   int n_ = 0;
 };
 
+// Rectifies the true corners of every board frame that both cameras see
+// (those with no rectified pixel, a pinhole's rays behind it, are counted in
+// *unrepresentable).
+RowErrors RowsOfTrueCorners(const ws::SimTruth& truth, const ws::StereoRig& rig,
+                         const ws::RectifyOptions& options, int* unrepresentable = nullptr) {
+  const ws::Rectification rect = ws::BuildRectification(rig, options);
+  RowErrors rows(rect.size);
+  for (const ws::SimFrameTruth& frame : truth.frames) {
+    if (frame.kind != "board") continue;
+    for (size_t id = 0; id < frame.left.corners.size(); ++id) {
+      if (!frame.left.in_image[id] || !frame.right.in_image[id]) continue;
+      cv::Point2d l, r;
+      const bool both = ws::RectifyPoint(rect, rig, true, frame.left.corners[id], &l) &&
+                        ws::RectifyPoint(rect, rig, false, frame.right.corners[id], &r);
+      if (unrepresentable) *unrepresentable += !both;
+      else EXPECT_TRUE(both);
+      if (both) rows.Add(l, r);
+    }
+  }
+  return rows;
+}
+
 class RectificationQuality : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -91,21 +113,8 @@ class RectificationQuality : public ::testing::Test {
     delete simulator_;
   }
 
-  // Rectifies the true corners of every board frame that both cameras see.
   static RowErrors TrueCornerRows(const ws::StereoRig& rig) {
-    const ws::Rectification rect = ws::BuildRectification(rig);
-    RowErrors rows(rect.size);
-    for (const ws::SimFrameTruth& frame : truth_->frames) {
-      if (frame.kind != "board") continue;
-      for (size_t id = 0; id < frame.left.corners.size(); ++id) {
-        if (!frame.left.in_image[id] || !frame.right.in_image[id]) continue;
-        cv::Point2d l, r;
-        EXPECT_TRUE(ws::RectifyPoint(rect, rig, true, frame.left.corners[id], &l));
-        EXPECT_TRUE(ws::RectifyPoint(rect, rig, false, frame.right.corners[id], &r));
-        rows.Add(l, r);
-      }
-    }
-    return rows;
+    return RowsOfTrueCorners(*truth_, rig, ws::RectifyOptions());
   }
 
   static ws::Simulator* simulator_;
@@ -169,5 +178,133 @@ TEST_F(RectificationQuality, DetectedCornersShareARowAcrossTheWholeField) {
   EXPECT_LT(rows.rms(), 0.1);
   EXPECT_LT(rows.worst_region_mean(), 0.05);
 }
+
+// Lat-lon rectification (rectification.h) of the simulator's 200-degree
+// fisheye rig (config/sim/fisheye.yaml): every true corner pair, those past
+// 90 degrees off axis included, lands on one rectified row; a pinhole
+// rectification of the same rig cannot hold the corners behind its plane.
+namespace latlon {
+
+const ws::Simulator& FisheyeSimulator() {
+  static const ws::Simulator simulator(ws::LoadSimConfig("config/sim/fisheye.yaml"));
+  return simulator;
+}
+
+const ws::RectifyOptions kLatLon{1.0, {}, ws::RectificationMode::kLatLon};
+
+TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
+  const ws::SimTruth truth = FisheyeSimulator().Truth();
+  const ws::StereoRig rig = RigFromTruth(truth);
+  const cv::Vec2d field = ws::CommonField(rig);
+  const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
+  std::printf("[ rectify ] fisheye rig: common field %.1f x %.1f degrees, lat-lon image %d x %d at "
+              "%.1f px per radian\n",
+              field[0] * 180 / M_PI, field[1] * 180 / M_PI, rect.size.width, rect.size.height, rect.f);
+  int lost = 0;
+  const RowErrors rows = RowsOfTrueCorners(truth, rig, kLatLon, &lost);
+  rows.Print("true corners, fisheye rig, lat-lon");
+  EXPECT_EQ(lost, 0);
+  EXPECT_GT(rows.count(), 1000);
+  EXPECT_LT(rows.worst(), 0.01);
+  // Corners past 90 degrees off either camera's axis are among them.
+  int beyond_90 = 0;
+  for (const ws::SimFrameTruth& frame : truth.frames)
+    for (size_t id = 0; frame.kind == "board" && id < frame.left.corners.size(); ++id) {
+      if (!frame.left.in_image[id] || !frame.right.in_image[id]) continue;
+      const auto ray = ws::Camera(rig.left).Unproject(
+          Eigen::Vector2d(frame.left.corners[id].x, frame.left.corners[id].y));
+      beyond_90 += ray && (*ray)[2] < 0;
+    }
+  std::printf("[ rectify ] %d of the pairs lie beyond 90 degrees off the left camera's axis\n", beyond_90);
+  EXPECT_GT(beyond_90, 0);
+
+  int behind_the_plane = 0;
+  RowsOfTrueCorners(truth, rig, ws::RectifyOptions(), &behind_the_plane);
+  std::printf("[ rectify ] pinhole rectification of the same rig: %d pairs have no rectified pixel\n",
+              behind_the_plane);
+  EXPECT_GT(behind_the_plane, 0);
+}
+
+// The common field fills its lat-lon image; one half as large again about
+// it reaches past the lenses' field (the model's last knot): those pixels
+// are marked invalid and hold no image.
+TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
+  const ws::StereoRig rig = RigFromTruth(FisheyeSimulator().Truth());
+  const ws::Rectification fitted = ws::BuildRectification(rig, kLatLon);
+  ws::RectifyOptions larger = kLatLon;
+  larger.size = cv::Size(fitted.size.width * 3 / 2, fitted.size.height * 3 / 2);
+  const ws::Rectification rect = ws::BuildRectification(rig, larger);
+  const cv::Mat white(rect.input_size, CV_8UC1, cv::Scalar(255));
+  cv::Mat images[2];
+  ws::RectifyPair(rect, white, white, &images[0], &images[1]);
+  for (int c = 0; c < 2; ++c) {
+    const cv::Mat& valid = c ? rect.valid_right : rect.valid_left;
+    const cv::Mat& fitted_valid = c ? fitted.valid_right : fitted.valid_left;
+    ASSERT_EQ(valid.size(), rect.size);
+    const double fraction = cv::countNonZero(valid) / double(rect.size.area());
+    const double fitted_fraction = cv::countNonZero(fitted_valid) / double(fitted.size.area());
+    std::printf("[ rectify ] valid fraction: common field %.3f, 1.5 times as large %.3f\n",
+                fitted_fraction, fraction);
+    EXPECT_GT(fitted_fraction, 0.95);
+    EXPECT_LT(fraction, 0.9);
+    cv::Mat outside, inside;
+    cv::bitwise_and(images[c], ~valid, outside);
+    EXPECT_EQ(cv::countNonZero(outside), 0) << "an invalid pixel holds image";
+    cv::bitwise_and(images[c] < 255, valid, inside);
+    EXPECT_LT(cv::countNonZero(inside), 0.01 * cv::countNonZero(valid)) << "valid pixels hold the image";
+  }
+}
+
+TEST(LatLonRectification, DetectedCornersShareARow) {
+  const ws::Simulator& simulator = FisheyeSimulator();
+  const ws::SimTruth truth = simulator.Truth();
+  const ws::StereoRig rig = RigFromTruth(truth);
+  const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
+  const auto detector = ws::MakeCornerDetector(simulator.config().board->board);
+  std::vector<int> frames;
+  for (const ws::SimFrameTruth& frame : truth.frames)
+    if (frame.kind == "board" && frame.left.view == ws::BoardView::full &&
+        frame.right.view == ws::BoardView::full)
+      frames.push_back(frame.index);
+  ASSERT_GE(frames.size(), 8u);
+  // Near the epipoles (psi -> +-90 degrees) every epipolar plane meets: a
+  // row there spans an angle cos(psi) times a row at the centre, and a
+  // corner's detection error grows in rows by 1 / cos(psi).
+  RowErrors rows(rect.size), central(rect.size);
+  std::mutex mutex;
+  cv::parallel_for_(cv::Range(0, int(frames.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      const auto [left, right] = simulator.Render(frames[size_t(i)]);
+      const ws::BoardCorners l = detector->Detect(left), r = detector->Detect(right);
+      std::lock_guard<std::mutex> lock(mutex);
+      for (size_t a = 0; a < l.ids.size(); ++a)
+        for (size_t b = 0; b < r.ids.size(); ++b) {
+          if (l.ids[a] != r.ids[b]) continue;
+          cv::Point2d lr, rr;
+          ASSERT_TRUE(ws::RectifyPoint(rect, rig, true, l.points[a], &lr));
+          ASSERT_TRUE(ws::RectifyPoint(rect, rig, false, r.points[b], &rr));
+          rows.Add(lr, rr);
+          const double psi = std::max(std::abs(lr.x - rect.cx), std::abs(rr.x - rect.cx)) / rect.f;
+          if (psi <= M_PI / 3) central.Add(lr, rr);
+        }
+    }
+  });
+  rows.Print("detected corners, fisheye rig, lat-lon");
+  central.Print("detected corners within 60 degrees of the baseline's normal");
+  EXPECT_GT(central.count(), 200);
+  EXPECT_LT(central.rms(), 0.1);
+  EXPECT_LT(central.worst_region_mean(), 0.05) << "no part of the field off on average";
+}
+
+TEST(LatLonRectification, CommonFieldOfTheDemoRigAndTheFisheyeRig) {
+  const cv::Vec2d demo = ws::CommonField(RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth()));
+  const cv::Vec2d fisheye = ws::CommonField(RigFromTruth(FisheyeSimulator().Truth()));
+  std::printf("[ rectify ] common field: demo rig %.1f x %.1f degrees, fisheye rig %.1f x %.1f degrees\n",
+              demo[0] * 180 / M_PI, demo[1] * 180 / M_PI, fisheye[0] * 180 / M_PI, fisheye[1] * 180 / M_PI);
+  EXPECT_GT(fisheye[0], demo[0]);
+  EXPECT_GT(fisheye[0], M_PI * 150 / 180);
+}
+
+}  // namespace latlon
 
 }  // namespace
