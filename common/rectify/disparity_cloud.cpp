@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "rectify/ray_triangulation.h"
+
 namespace ws {
 namespace {
 
@@ -14,16 +16,14 @@ namespace {
 void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min_disparity,
                   const cv::Mat& gray, const CloudSampling& sampling, int begin, int end,
                   widestereo::point_cloud_t* cloud) {
-  const double fb = rect.f * rect.baseline;
   for (int v = begin; v < end; ++v) {
     if (v % sampling.step != 0) continue;
     const float* d = disparity.ptr<float>(v);
     for (int u = 0; u < disparity.cols; u += sampling.step) {
       if (!(d[u] >= min_disparity && d[u] > 0)) continue;
-      const double z = fb / d[u];
-      if (z > sampling.max_depth) continue;
-      cloud->xyz.push_back({float((u - rect.cx) * z / rect.f), float((v - rect.cy) * z / rect.f),
-                            float(z)});
+      const auto X = TriangulateDisparity(rect, u, v, d[u]);
+      if (!X || cv::norm(*X) > sampling.max_depth) continue;
+      cloud->xyz.push_back({float((*X)[0]), float((*X)[1]), float((*X)[2])});
       if (!gray.empty()) cloud->intensity.push_back(gray.at<uint8_t>(v, u));
     }
   }

@@ -1,7 +1,9 @@
 // The 3-D points of a disparity image, in the left rectified camera frame
-// (x right, y down, z forward, metres): Z = f b / d, X = (u - cx) Z / f,
-// Y = (v - cy) Z / f. Only valid disparities (>= min_disparity, > 0) with
-// Z <= max_depth become points; OpenCV's "missing" marker never does.
+// (x right, y down, z forward, metres), from the two rays of each match
+// (ray_triangulation.h; pinhole: Z = f b / d, X = (u - cx) Z / f,
+// Y = (v - cy) Z / f). Only valid disparities (>= min_disparity, > 0) at
+// most max_depth from the camera become points; OpenCV's "missing" marker
+// never does.
 // step > 1 keeps every step-th pixel of every step-th row: a megapixel
 // frame's full cloud is a 13 MB message, too much for a busy network.
 #pragma once
@@ -14,7 +16,7 @@
 namespace ws {
 
 struct CloudSampling {
-  double max_depth = 20.0;  // metres; farther points are left out
+  double max_depth = 20.0;  // metres from the left camera; farther points are left out
   int step = 1;             // pixels between points, in u and in v
 };
 

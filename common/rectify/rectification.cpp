@@ -24,14 +24,6 @@ void BouguetRotations(const StereoRig& rig, cv::Matx33d* R_left, cv::Matx33d* R_
   *R_right = cv::Matx33d(R2);
 }
 
-// The rectified frame's ray through pixel (u, v): K_rect^-1 (u, v, 1), or
-// the lat-lon ray of (psi, phi) = ((u - cx) / f, (v - cy) / f).
-cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v) {
-  if (rect.mode == RectificationMode::kPinhole) return {(u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1};
-  const double psi = (u - rect.cx) / rect.f, phi = (v - rect.cy) / rect.f;
-  return {std::sin(psi), std::cos(psi) * std::sin(phi), std::cos(psi) * std::cos(phi)};
-}
-
 // The lat-lon angles (psi, phi) of a ray in the rectified frame.
 cv::Vec2d LatLon(const cv::Vec3d& p) {
   return {std::asin(std::clamp(p[0] / cv::norm(p), -1.0, 1.0)), std::atan2(p[1], p[2])};
@@ -157,6 +149,12 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
   if (!(p[2] > 0)) return false;
   *rectified = cv::Point2d(rect.f * p[0] / p[2] + rect.cx, rect.f * p[1] / p[2] + rect.cy);
   return true;
+}
+
+cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v) {
+  if (rect.mode == RectificationMode::kPinhole) return {(u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1};
+  const double psi = (u - rect.cx) / rect.f, phi = (v - rect.cy) / rect.f;
+  return {std::sin(psi), std::cos(psi) * std::sin(phi), std::cos(psi) * std::cos(phi)};
 }
 
 cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Point2d& pixel) {

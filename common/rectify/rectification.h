@@ -73,6 +73,10 @@ void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& 
 bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
                   const cv::Point2d& pixel, cv::Point2d* rectified);
 
+// The ray of rectified pixel (u, v) in the rectified frame (the same for
+// both images): K_rect^-1 (u, v, 1) (pinhole) or the lat-lon ray above.
+cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v);
+
 // The ray, in the left (right) camera's frame, that the rectified pixel
 // samples: R_i^T K_rect^-1 (u, v, 1) (pinhole) or R_i^T times the lat-lon
 // ray above; not normalised.

@@ -1,0 +1,81 @@
+// Triangulation from rays (rectify/ray_triangulation.h): a point seen by both
+// cameras, rectified, comes back from its disparity, for pinhole and
+// lat-lon rectification (beyond 90 degrees off axis too for lat-lon).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "match_fixtures.h"
+#include "rectify/ray_triangulation.h"
+#include "sim/simulator.h"
+
+namespace {
+
+using namespace ws::test;
+
+// Points at 0.5-10 m in random directions of the left rectified frame that
+// both cameras image: each triangulated from its rectified disparity.
+// Returns how many were checked.
+int CheckRoundTrip(const ws::StereoRig& rig, ws::RectificationMode mode, double max_theta) {
+  const ws::Rectification rect = ws::BuildRectification(rig, {1.0, {}, mode});
+  const ws::Camera left(rig.left), right(rig.right);
+  const cv::Matx33d R = [&] {
+    cv::Matx33d m;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m(r, c) = rig.R(r, c);
+    return m;
+  }();
+  const cv::Vec3d T(rig.T(0), rig.T(1), rig.T(2));
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1), range(0.5, 10);
+  int checked = 0;
+  for (int k = 0; k < 4000; ++k) {
+    cv::Vec3d dir(unit(random), unit(random), unit(random));
+    dir /= cv::norm(dir);
+    const cv::Vec3d P = range(random) * dir;  // left rectified frame
+    const cv::Vec3d X_left = rect.R_left.t() * P, X_right = R * X_left + T;
+    if (std::acos(X_left[2] / cv::norm(X_left)) > max_theta ||
+        std::acos(X_right[2] / cv::norm(X_right)) > max_theta)
+      continue;
+    const auto pl = left.Project({X_left[0], X_left[1], X_left[2]});
+    const auto pr = right.Project({X_right[0], X_right[1], X_right[2]});
+    if (!pl || !pr) continue;
+    cv::Point2d l, r;
+    if (!ws::RectifyPoint(rect, rig, true, {(*pl)[0], (*pl)[1]}, &l) ||
+        !ws::RectifyPoint(rect, rig, false, {(*pr)[0], (*pr)[1]}, &r))
+      continue;
+    EXPECT_NEAR(l.y, r.y, 1e-6);
+    const auto X = ws::TriangulateDisparity(rect, l.x, l.y, l.x - r.x);
+    if (!X) continue;  // near an epipole the two rays are parallel
+    EXPECT_LT(cv::norm(*X - P), 1e-6 * cv::norm(P)) << "point " << P;
+    ++checked;
+  }
+  return checked;
+}
+
+TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
+  const ws::StereoRig demo = RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
+  const ws::StereoRig fisheye = RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kPinhole, M_PI / 3), 200);
+  EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kLatLon, M_PI / 3), 200);
+  EXPECT_GT(CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI * 100 / 180), 500);
+  // Only the lat-lon image holds points past 90 degrees.
+  EXPECT_GT(CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI * 100 / 180),
+            CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI / 2));
+}
+
+TEST(RayTriangulation, PinholeIsFbOverD) {
+  const ws::StereoRig demo = RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
+  const ws::Rectification rect = ws::BuildRectification(demo);
+  const auto X = ws::TriangulateDisparity(rect, 100.5, 700.25, 37.5);
+  ASSERT_TRUE(X);
+  const double z = rect.f * rect.baseline / 37.5;
+  EXPECT_NEAR((*X)[2], z, 1e-12 * z);
+  EXPECT_NEAR((*X)[0], (100.5 - rect.cx) * z / rect.f, 1e-12 * z);
+  EXPECT_NEAR((*X)[1], (700.25 - rect.cy) * z / rect.f, 1e-12 * z);
+  EXPECT_FALSE(ws::TriangulateDisparity(rect, 100, 100, 0));
+  EXPECT_FALSE(ws::TriangulateDisparity(rect, 100, 100, -3));
+}
+
+}  // namespace
