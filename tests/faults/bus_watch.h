@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <lcm/lcm-cpp.hpp>
@@ -37,6 +38,10 @@ class BusWatch {
   widestereo::channel_counters_t Counters(const std::string& channel) const;
   const std::vector<std::vector<uint8_t>>& Payloads(const std::string& channel) {
     return payloads_[channel];
+  }
+  // The payloads kept on `channel` so far, forgotten here.
+  std::vector<std::vector<uint8_t>> TakePayloads(const std::string& channel) {
+    return std::exchange(payloads_[channel], {});
   }
 
  private:

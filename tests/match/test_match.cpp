@@ -10,7 +10,7 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "models/theia_lens.h"
-#include "rectify/match_node.h"
+#include "match/match_node.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/process_status_t.hpp"
@@ -156,6 +156,7 @@ TEST(MatchPipeline, AloeGivesWhatBareOpenCvSgbmGives) {
                                 Event(ws::channel::kStereoImages, frame)});
 
   ws::MatcherConfig config;  // the pipeline's settings, but for the range
+  config.kind = "sgbm3way";  // stereo-match's default
   config.num_disparities = 224;
   const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--num-disparities", "224",
                              "--max-depth", "1000", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
