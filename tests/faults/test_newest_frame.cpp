@@ -44,10 +44,7 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
                    "--matcher", "sgbm", "--num-disparities", "128", "--cloud-step", "8"});
   BusWatch bus(url, "stereo-match");
   bus.Collect(ch::kStereoDisparity);
-  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
-  bus.Publish(ch::kStereoCalibration, IdentityCalibration(1280, 960, 1000, 0.1));
-  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->state == "matching"; }))
-      << process.Output();
+  ASSERT_TRUE(StartMatching(bus, IdentityCalibration(1280, 960, 1000, 0.1))) << process.Output();
 
   cv::Mat texture(960, 1280, CV_8UC1);
   cv::randu(texture, 0, 256);

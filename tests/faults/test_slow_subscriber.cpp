@@ -31,10 +31,7 @@ TEST(SlowSubscriber, StereoMatchDropsAndCountsWhatItCannotKeepUpWith) {
                    "--num-disparities", "128"});
   BusWatch bus(url, "stereo-match");
   bus.Collect(ch::kStereoDisparity);
-  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << process.Output();
-  bus.Publish(ch::kStereoCalibration, IdentityCalibration(1280, 960, 1000, 0.1));
-  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->state == "matching"; }))
-      << process.Output();
+  ASSERT_TRUE(StartMatching(bus, IdentityCalibration(1280, 960, 1000, 0.1))) << process.Output();
   const int pid = bus.status()->pid;
   const long resident_before_kb = ResidentKb(pid, "VmRSS");
 

@@ -48,11 +48,12 @@ class FlatWall : public ::testing::Test {
   }
 
   // stereo-match with a calibration file of `rig` (its settings from
-  // `match_config`, then `match_args`), then stereo-cloud, on the captured
-  // images; measured against the truth.
+  // `match_config`, then `match_args`), then stereo-cloud (`cloud_config`),
+  // on the captured images; measured against the truth.
   static WallRun Run(const ws::StereoRig& rig, const std::string& name,
                      const std::vector<std::string>& match_args = {},
-                     const std::string& match_config = "config/stereo-match.yaml") {
+                     const std::string& match_config = "config/stereo-match.yaml",
+                     const std::string& cloud_config = "config/stereo-cloud.yaml") {
     const std::string calib = *dir_ + "/" + name + ".yaml";
     const std::string match = *dir_ + "/" + name + "-match.lcmlog";
     const std::string cloud = *dir_ + "/" + name + "-cloud.lcmlog";
@@ -64,7 +65,7 @@ class FlatWall : public ::testing::Test {
     argv.insert(argv.end(), match_args.begin(), match_args.end());
     auto r = RunCommand(argv, 120);
     EXPECT_EQ(r.exit_code, 0) << r.output;
-    r = RunCommand({"stereo-cloud", "--log-dir", *dir_, "--config", "config/stereo-cloud.yaml", "--in-url",
+    r = RunCommand({"stereo-cloud", "--log-dir", *dir_, "--config", cloud_config, "--in-url",
                     "file://" + match + "?speed=0", "--out-url", "file://" + cloud + "?mode=w"},
                    120);
     EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -168,17 +169,18 @@ TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
   struct Mode {
     std::string name;
     std::vector<std::string> args;
-    std::string config = "config/stereo-match.yaml";
+    std::string match_config = "config/stereo-match.yaml";
+    std::string cloud_config = "config/stereo-cloud.yaml";
   };
   const std::vector<Mode> modes = {
       {"sgbm", {"--matcher", "sgbm"}},
       {"sgbm3way", {"--matcher", "sgbm3way"}},
       {"bm", {"--matcher", "bm", "--block-size", "15"}},
       {"sgbm3way-d2", {"--matcher", "sgbm3way", "--downscale", "2"}},
-      {"live", {}, "config/stereo-match-live.yaml"}};
+      {"live", {}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml"}};
   std::vector<WallRun> runs;
   for (const Mode& mode : modes) {
-    runs.push_back(Run(rig, mode.name, mode.args, mode.config));
+    runs.push_back(Run(rig, mode.name, mode.args, mode.match_config, mode.cloud_config));
     ASSERT_EQ(runs.back().wall.size(), size_t(kFrames)) << mode.name;
   }
   for (size_t m = 0; m < modes.size(); ++m) {
