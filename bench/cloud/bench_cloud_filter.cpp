@@ -128,9 +128,10 @@ void BenchOutliers(const widestereo::point_cloud_t& msg, int runs) {
               Median(ours_cpu) / Median(pcl_cpu), ours_kept, pcl_kept);
 }
 
-void Bench(const char* name, const Camera& camera, int runs) {
-  const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
-  const ws::CloudFilter filter{ws::CloudFilterConfig{}};
+// The chain with `config`, `runs` times: the median time per stage.
+void BenchChain(const char* name, const widestereo::point_cloud_t& cloud, const ws::CloudFilterConfig& config,
+                int runs) {
+  const ws::CloudFilter filter{config};
   std::vector<widestereo::cloud_stats_t> stats;
   std::vector<double> cpu_ms;  // the chain is single-threaded: CPU time is its time alone
   for (int run = 0; run < runs; ++run) {
@@ -138,9 +139,7 @@ void Bench(const char* name, const Camera& camera, int runs) {
     stats.push_back(filter.Run(cloud).stats);
     cpu_ms.push_back(1000.0 * double(std::clock() - start) / CLOCKS_PER_SEC);
   }
-  std::printf("\n%s: %dx%d = %d points, %d runs, default config (leaf 1 cm)\n", name, camera.width,
-              camera.height, cloud.npoints, runs);
-  std::printf("  %-12s %10s %12s\n", "stage", "points", "median ms");
+  std::printf("  %s\n  %-12s %10s %12s\n", name, "stage", "points", "median ms");
   double total = 0;
   for (int stage = 0; stage < stats[0].nstages; ++stage) {
     std::vector<double> ms;
@@ -155,6 +154,18 @@ void Bench(const char* name, const Camera& camera, int runs) {
   std::printf("  plane: %s, normal (%.3f, %.3f, %.3f), offset %.3f m, inlier RMS %.1f mm\n",
               last.plane_found ? "found" : "not found", last.plane_normal[0], last.plane_normal[1],
               last.plane_normal[2], last.plane_offset, 1000 * last.inlier_rms);
+}
+
+// The default chain against the one before issue #16 (RANSAC on every
+// point), then our outlier stage against PCL's.
+void Bench(const char* name, const Camera& camera, int runs) {
+  const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
+  std::printf("\n%s: %dx%d = %d points, %d runs (leaf 1 cm)\n", name, camera.width, camera.height,
+              cloud.npoints, runs);
+  ws::CloudFilterConfig before;
+  before.plane_ransac_points = 0;
+  BenchChain("before #16: RANSAC on every point", cloud, before, runs);
+  BenchChain("default: RANSAC on a subsample, refit on every inlier", cloud, ws::CloudFilterConfig{}, runs);
   BenchOutliers(cloud, runs);
 }
 
@@ -167,6 +178,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   // Rectified 100-degree horizontal field: focal = (width / 2) / tan(50 deg).
+  // stereo-match's live cloud: 1280x960 every 4th pixel and row.
+  Bench("77 k", {320, 240, 160 / std::tan(50 * M_PI / 180)}, runs);
   Bench("0.3 M", {640, 480, 320 / std::tan(50 * M_PI / 180)}, runs);
   Bench("1 M", {1280, 800, 640 / std::tan(50 * M_PI / 180)}, runs);
   return 0;

@@ -16,7 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lcm_io/image_codec.h"
-#include "rectify/match_node.h"
+#include "match/match_node.h"
 #include "sim/simulator.h"
 
 namespace {

@@ -180,8 +180,9 @@ int main(int argc, char** argv) {
     return Child{name, Spawn(args, out + "/" + name + ".out")};
   };
   std::vector<Child> children = {
-      command("stereo-cloud", {}),
-      command("stereo-match", {"--calib", calib, "--cloud-step", "2"}),
+      // The run launch's live settings (config/launch/run.yaml).
+      command("stereo-cloud", {"--config", "config/stereo-cloud-live.yaml"}),
+      command("stereo-match", {"--config", "config/stereo-match-live.yaml", "--calib", calib}),
       command("stereo-calibrate", {"--out", out + "/calibration.yaml"}),
       command("stereo-detect", {"--board", sim.board ? sim.board->board.id : "chessboard:9x6:0.05"}),
   };

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   int64_t first_utime = 0, pairs = 0, first_id = -1, last_id = -1;
   std::vector<double> latency_ms;
   std::map<std::string, widestereo::process_status_t> status;
+  // Each process's first heartbeat after the first pair, and when it came.
+  std::map<std::string, std::pair<widestereo::process_status_t, int64_t>> first_status, last_status;
   process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
     if (first_id < 0) first_id = f.frame_id, first_utime = ws::WallMicros();
     last_id = f.frame_id;
@@ -71,7 +73,12 @@ int main(int argc, char** argv) {
                                                  latency_ms.push_back((ws::WallMicros() - c.utime) * 1e-3);
                                                });
   process.Subscribe<widestereo::process_status_t>(
-      ws::channel::kProcessStatus, [&](const widestereo::process_status_t& s) { status[s.name] = s; });
+      ws::channel::kProcessStatus, [&](const widestereo::process_status_t& s) {
+        status[s.name] = s;
+        if (first_id < 0) return;
+        first_status.try_emplace(s.name, s, ws::WallMicros());
+        last_status[s.name] = {s, ws::WallMicros()};
+      });
   process.Every(200000, [&] {
     if (first_id >= 0 && ws::WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
   });
@@ -80,12 +87,25 @@ int main(int argc, char** argv) {
   const int64_t due = last_id - first_id + 1;
   std::printf("\n%.0f s: %lld pairs of STEREO_IMAGES received here, %lld lost in transit (frame-id gaps)\n", duration_s,
               (long long)pairs, (long long)(due - pairs));
-  std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
-              Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));
   for (const auto& [name, s] : status)
     for (const auto& c : s.channels)
       if (c.received || c.dropped || c.rejected)
         std::printf("  %-16s %-22s received %6lld dropped %6lld rejected %lld\n", name.c_str(), c.channel.c_str(),
                     (long long)c.received, (long long)c.dropped, (long long)c.rejected);
+  std::printf("stage rates (published, between each process's first and last heartbeat of the run):\n");
+  for (const auto& [name, last] : last_status) {
+    const auto& [first, first_us] = first_status.at(name);
+    const double seconds = (last.second - first_us) * 1e-6;
+    for (const auto& c : last.first.channels) {
+      int64_t published_before = 0;  // a channel first published later is not in the first heartbeat
+      for (const auto& c0 : first.channels)
+        if (c0.channel == c.channel) published_before = c0.published;
+      if (c.published > published_before && seconds > 0)
+        std::printf("  %-16s %-22s %5.1f Hz\n", name.c_str(), c.channel.c_str(),
+                    double(c.published - published_before) / seconds);
+    }
+  }
+  std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
+              Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));
   return rc;
 }

@@ -66,7 +66,7 @@ CloudFilterResult CloudFilter::Run(const widestereo::point_cloud_t& msg) const {
   PlaneFit plane;
   if (config_.plane_enabled)
     plane = FitPlane(cloud, config_.plane_distance, config_.plane_max_iterations,
-                     config_.plane_min_inliers);
+                     config_.plane_min_inliers, config_.plane_ransac_points);
   if (!plane.note.empty()) result.notes.push_back("plane: " + plane.note);
   clock.Lap("plane", plane.inliers);
 

@@ -45,6 +45,7 @@ void ValidateCloudFilterConfig(const CloudFilterConfig& config) {
   RequirePositive("--plane-distance", config.plane_distance);
   RequireAtLeast("--plane-max-iterations", config.plane_max_iterations, 1);
   RequireAtLeast("--plane-min-inliers", config.plane_min_inliers, 3);  // a plane needs 3 points
+  RequireAtLeast("--plane-ransac-points", config.plane_ransac_points, 0);
 }
 
 }  // namespace ws

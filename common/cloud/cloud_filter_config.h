@@ -28,6 +28,7 @@ struct CloudFilterConfig {
   double plane_distance = 0.02;      // --plane-distance, metres: RANSAC inlier threshold
   int plane_max_iterations = 1000;   // --plane-max-iterations
   int plane_min_inliers = 100;       // --plane-min-inliers: fewer inliers than this, no plane
+  int plane_ransac_points = 20000;   // --plane-ransac-points: RANSAC on at most this many (0: all)
 };
 
 // Throws ConfigError "--NAME: REASON" for the first value out of range.

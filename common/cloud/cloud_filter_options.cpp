@@ -20,6 +20,8 @@ void AddCloudFilterOptions(CLI::App& app, CloudFilterConfig* c) {
   add("--plane-distance", &c->plane_distance, "Plane: RANSAC inlier threshold, metres");
   add("--plane-max-iterations", &c->plane_max_iterations, "Plane: RANSAC iterations");
   add("--plane-min-inliers", &c->plane_min_inliers, "Plane: fewer inliers than this is no plane");
+  add("--plane-ransac-points", &c->plane_ransac_points,
+      "Plane: RANSAC on at most this many points (every k-th), refit on the whole cloud (0: all)");
 }
 
 }  // namespace ws

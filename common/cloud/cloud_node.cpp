@@ -48,7 +48,13 @@ std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult
 }  // namespace
 
 CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
-    : process_(process), filter_(filter), save_(std::move(save)) {
+    : process_(process),
+      filter_(filter),
+      save_(std::move(save)),
+      stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
+                                  : NewestFirst<widestereo::point_cloud_t>::Policy::newest,
+             [this](widestereo::point_cloud_t& msg) { Filter(msg); },
+             [this](const widestereo::point_cloud_t&) { process_.Counters(channel::kStereoCloud).dropped++; }) {
   if (save_.save_every < 0)
     throw ConfigError("--save-every: must be >= 0, got " + std::to_string(save_.save_every));
   if (!save_.pcd_dir.empty()) {
@@ -58,10 +64,20 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
       throw std::runtime_error("--pcd-dir: cannot create '" + save_.pcd_dir + "': " + error.message());
   }
   process_.SetState("filtering");
+  process_.AtExit([this] { stage_.Drain(); });
 }
 
-void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) {
-  CloudFilterResult result = filter_.Run(msg);
+CloudNode::~CloudNode() { stage_.Drain(); }
+
+void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) { stage_.Offer(msg); }
+
+void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
+  CloudFilterResult result;
+  try {
+    result = filter_.Run(msg);
+  } catch (const std::exception& e) {
+    return process_.HandleRejected(channel::kStereoCloud, e.what());
+  }
   const std::string frame = "frame " + std::to_string(msg.frame_id);
   process_.log().Detail(frame + ": " + Summary(msg, result));
   if (!result.notes.empty()) process_.log().Detail(frame + ": " + Join(result.notes));
@@ -77,6 +93,7 @@ void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) {
   }
   process_.Publish(channel::kStereoCloudFiltered, result.cloud);
   process_.Publish(channel::kCloudStats, result.stats);
+  std::lock_guard<std::mutex> lock(mutex_);
   ++filtered_;
   newest_stats_ = result.stats;
   newest_ = std::move(result.cloud);
@@ -104,12 +121,14 @@ void CloudNode::OnCommand(const widestereo::command_t& command) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("save: path=" + name + ": " + e.what());
   }
+  std::lock_guard<std::mutex> lock(mutex_);
   if (!newest_) throw std::runtime_error("save: no cloud has been filtered yet");
   Save(*newest_, path.empty() ? PeriodicPath(*newest_) : path);
 }
 
 std::string CloudNode::Progress() const {
   char line[160];
+  std::lock_guard<std::mutex> lock(mutex_);
   if (!newest_) return "clouds 0";
   if (newest_stats_.plane_found)
     std::snprintf(line, sizeof line, "clouds %lld | last %d pts, plane %.3f m, rms %.1f mm | saved %lld",

@@ -14,6 +14,12 @@
 // Each cloud gets a line in the log file: points in and out, the plane
 // (distance, normal, inlier RMS) or "no plane", the time taken.
 //
+// Live, the chain runs on a thread of its own and takes the newest cloud
+// waiting (runtime/newest_first.h): a cloud replaced before the chain took it
+// is counted as dropped on STEREO_CLOUD, so that the output stays about one
+// chain time behind the input, whatever its rate. From a log, every cloud is
+// filtered, in line.
+//
 // Counting: a cloud that fails validation is rejected (by Process); a valid
 // cloud from which nothing usable remains (empty, all NaN or out of range,
 // all one point) is published empty and counted as dropped on STEREO_CLOUD,
@@ -22,10 +28,12 @@
 #pragma once
 
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 
 #include "cloud/cloud_filter.h"
+#include "runtime/newest_first.h"
 #include "runtime/process.h"
 #include "widestereo/command_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
@@ -42,6 +50,7 @@ class CloudNode {
   // Creates pcd_dir. Throws ConfigError for an invalid filter config or a
   // negative save_every, std::runtime_error when pcd_dir cannot be created.
   CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save);
+  ~CloudNode();
 
   void OnCloud(const widestereo::point_cloud_t& msg);
   // Throws (so Process counts the command as rejected) when a `save` fails.
@@ -50,17 +59,20 @@ class CloudNode {
   std::string Progress() const;
 
  private:
+  void Filter(const widestereo::point_cloud_t& msg);
   std::string PeriodicPath(const widestereo::point_cloud_t& cloud) const;
   void Save(const widestereo::point_cloud_t& cloud, const std::string& path);
 
   Process& process_;
   const CloudFilter filter_;
   const CloudSaveConfig save_;
+  mutable std::mutex mutex_;  // guards what follows, but for the stage
   std::optional<widestereo::point_cloud_t> newest_;
   widestereo::cloud_stats_t newest_stats_{};
   int64_t filtered_ = 0;
   int64_t saved_ = 0;
   bool in_empty_run_ = false;
+  NewestFirst<widestereo::point_cloud_t> stage_;  // last: drained before the rest goes
 };
 
 }  // namespace ws

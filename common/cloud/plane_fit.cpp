@@ -75,7 +75,7 @@ constexpr int kMaxRefits = 20;
 }  // namespace
 
 PlaneFit FitPlane(const PclCloud::Ptr& cloud, double distance, int max_iterations,
-                  int min_inliers) {
+                  int min_inliers, int ransac_points) {
   PlaneFit fit;
   const std::string min_text = "--plane-min-inliers (" + std::to_string(min_inliers) + ")";
   if (cloud->size() < size_t(min_inliers)) {
@@ -87,7 +87,13 @@ PlaneFit FitPlane(const PclCloud::Ptr& cloud, double distance, int max_iteration
   segmentation.setMethodType(pcl::SAC_RANSAC);
   segmentation.setDistanceThreshold(distance);
   segmentation.setMaxIterations(max_iterations);
-  segmentation.setInputCloud(cloud);
+  PclCloud::Ptr sample = cloud;
+  if (ransac_points > 0 && cloud->size() > size_t(ransac_points)) {
+    const size_t stride = (cloud->size() + size_t(ransac_points) - 1) / size_t(ransac_points);
+    sample.reset(new PclCloud);
+    for (size_t i = 0; i < cloud->size(); i += stride) sample->push_back((*cloud)[i]);
+  }
+  segmentation.setInputCloud(sample);
   pcl::PointIndices ransac_inliers;
   pcl::ModelCoefficients ransac_plane;
   segmentation.segment(ransac_inliers, ransac_plane);

@@ -148,6 +148,8 @@ int Process::Run() {
 }
 
 int Process::Finish() {
+  for (auto& fn : at_exit_) fn();
+  at_exit_.clear();
   PublishStatus();
   log_.Detail("final: " + ProgressLine());
   ShowProgress();

@@ -68,6 +68,9 @@ class Process {
   void Every(int64_t period_us, std::function<void()> fn);
   // Calls fn once when a file:// input log has been read to its end.
   void AtEndOfInput(std::function<void()> fn);
+  // Calls fn once before the last heartbeat, however the process ends (work
+  // still in hand on other threads is finished and counted there).
+  void AtExit(std::function<void()> fn) { at_exit_.push_back(std::move(fn)); }
   // Adds a line to the terminal progress display.
   void SetProgress(std::function<std::string()> fn) { progress_ = std::move(fn); }
 
@@ -96,6 +99,9 @@ class Process {
   // Logs an error and keeps it as the status's last_error.
   void ReportError(const std::string& error);
   ChannelCounters& Counters(const std::string& channel);
+  // Counts a message on `channel` as rejected and logs why (at most once a
+  // second a channel); for handlers that work on another thread.
+  void HandleRejected(const std::string& channel, const std::string& why);
   TextLog& log() { return log_; }
   const ProcessOptions& options() const { return options_; }
 
@@ -115,7 +121,6 @@ class Process {
   void ShowProgress();
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();
-  void HandleRejected(const std::string& channel, const std::string& why);
   void CountFrameGap(const std::string& channel, int64_t frame_id);
 
   ProcessOptions options_;
@@ -144,6 +149,7 @@ class Process {
   std::map<std::string, int64_t> last_reject_log_us_;
   std::vector<Timer> timers_;
   std::vector<std::function<void()>> at_end_;
+  std::vector<std::function<void()>> at_exit_;
   std::function<std::string()> progress_;
   std::vector<std::shared_ptr<void>> handler_contexts_;
 };

@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-cloud",
                      "Filters the point clouds on STEREO_CLOUD with PCL (depth pass-through, voxel "
                      "grid, statistical outlier removal, RANSAC plane) and publishes "
-                     "STEREO_CLOUD_FILTERED and CLOUD_STATS. Writes PCD files every --save-every "
+                     "STEREO_CLOUD_FILTERED and CLOUD_STATS. Live, it filters the newest cloud waiting; "
+                     "the clouds it skips are counted as dropped in PROCESS_STATUS. Writes PCD files every --save-every "
                      "clouds into --pcd-dir, and there on a 'save [path=NAME.pcd]' command on "
                      "STEREO_COMMAND.");
   ws::CloudFilterConfig filter;

@@ -4,14 +4,16 @@
 #include <string>
 
 #include "lcm_io/channels.h"
-#include "rectify/match_node.h"
+#include "match/match_node.h"
 #include "rectify/rectify_options.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-match",
                      "Rectifies STEREO_IMAGES through the calibrated lens model (from --calib "
                      "FILE.yaml, then from every STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
-                     "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame).");
+                     "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
+                     "Live, it matches the newest pair waiting while the cloud of the one before is "
+                     "built; the pairs it skips are counted as dropped in PROCESS_STATUS.");
   ws::MatchConfig config;
   std::string calib_file;
   auto& m = config.matcher;
@@ -20,7 +22,16 @@ int main(int argc, char** argv) {
                  "Calibration file (stereo-calibrate --out) to start with; a STEREO_CALIBRATION "
                  "message replaces it")
       ->check(CLI::ExistingFile);
-  app.add_option("--matcher", m.kind, "bm or sgbm")->check(CLI::IsMember({"bm", "sgbm"}))->capture_default_str();
+  m.kind = "sgbm3way";  // fast by default; sgbm on request
+  app.add_option("--matcher", m.kind,
+                 "sgbm3way (semi-global, parallel: every core), bm (block matching) or sgbm "
+                 "(semi-global, 8 paths: the most accurate, the slowest)")
+      ->check(CLI::IsMember({"sgbm3way", "bm", "sgbm"}))
+      ->capture_default_str();
+  app.add_option("--downscale", m.downscale,
+                 "Match at 1/N resolution (N^2 less work) and scale the disparities back")
+      ->check(CLI::Range(1, 8))
+      ->capture_default_str();
   app.add_option("--num-disparities", m.num_disparities, "Disparity search range (multiple of 16)")->capture_default_str();
   app.add_option("--min-disparity", m.min_disparity, "Smallest disparity searched")->capture_default_str();
   app.add_option("--block-size", m.block_size, "Matching window (odd; the paper used 33 with bm)")->capture_default_str();
@@ -29,9 +40,10 @@ int main(int argc, char** argv) {
   app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
   ws::AddRectifyOptions(app, config.rectify);
   app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
+  config.cloud.step = 2;  // a full 1280x960 cloud is 13 MB a frame: full only on request
   app.add_option("--cloud-step", config.cloud.step,
-                 "Every N-th pixel of every N-th row becomes a cloud point (1: all; 2 makes the "
-                 "message 4x smaller)")
+                 "Every N-th pixel of every N-th row becomes a cloud point (1: all, the full cloud; "
+                 "2 makes the message 4x smaller)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   if (auto rc = cli.Parse(argc, argv)) return *rc;

@@ -53,4 +53,10 @@ widestereo::channel_counters_t BusWatch::Counters(const std::string& channel) co
   return {};
 }
 
+bool StartMatching(BusWatch& bus, const widestereo::stereo_calibration_t& calibration, double seconds) {
+  if (!bus.ListenUntil(seconds, [&] { return bus.status().has_value(); })) return false;
+  bus.Publish(ws::channel::kStereoCalibration, calibration);
+  return bus.ListenUntil(seconds, [&] { return bus.status() && bus.status()->state == "matching"; });
+}
+
 }  // namespace ws::test

@@ -7,11 +7,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <lcm/lcm-cpp.hpp>
 
 #include "widestereo/process_status_t.hpp"
+#include "widestereo/stereo_calibration_t.hpp"
 
 namespace ws::test {
 
@@ -38,6 +40,10 @@ class BusWatch {
   const std::vector<std::vector<uint8_t>>& Payloads(const std::string& channel) {
     return payloads_[channel];
   }
+  // The payloads kept on `channel` so far, forgotten here.
+  std::vector<std::vector<uint8_t>> TakePayloads(const std::string& channel) {
+    return std::exchange(payloads_[channel], {});
+  }
 
  private:
   lcm::LCM lcm_;
@@ -45,5 +51,10 @@ class BusWatch {
   std::optional<widestereo::process_status_t> status_;
   std::map<std::string, std::vector<std::vector<uint8_t>>> payloads_;
 };
+
+// Waits for the watched process's first heartbeat, publishes `calibration`
+// and waits until the process says "matching"; false when either takes
+// longer than `seconds`.
+bool StartMatching(BusWatch& bus, const widestereo::stereo_calibration_t& calibration, double seconds = 20);
 
 }  // namespace ws::test

@@ -39,7 +39,9 @@ TEST(FisheyeWall, BsplineThetaCalibrationGivesTheWallAtTwoMetres) {
   const double z = truth.frames.front().wall_distance;
   for (const double focal_scale : {1.0, 1.5}) {
     const std::string name = "bspline_theta-f" + std::to_string(focal_scale).substr(0, 3);
-    const WallRun run = RunWallChain(dir, truth, rig, name, 1, "64", focal_scale);
+    WallChainOptions options;
+    options.focal_scale = focal_scale;
+    const WallRun run = RunWallChain(dir, truth, rig, name, 1, "64", options);
     ASSERT_EQ(run.wall.size(), 1u);
     const ws::Rectification rect = ws::BuildRectification(rig, {focal_scale, {}});
     const WallFit& w = run.wall[0];

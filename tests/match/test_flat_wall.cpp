@@ -31,8 +31,17 @@ class FlatWall : public ::testing::Test {
     delete dir_;
   }
 
-  static WallRun Run(const ws::StereoRig& rig, const std::string& name) {
-    return RunWallChain(*dir_, *truth_, rig, name, kFrames, kNumDisparities);
+  // The wall chain (wall_chain.h) with stereo-match's settings from
+  // `match_config`, then `match_args`, and stereo-cloud's from `cloud_config`.
+  static WallRun Run(const ws::StereoRig& rig, const std::string& name,
+                     const std::vector<std::string>& match_args = {},
+                     const std::string& match_config = "config/stereo-match.yaml",
+                     const std::string& cloud_config = "config/stereo-cloud.yaml") {
+    WallChainOptions options;
+    options.match_args = match_args;
+    options.match_config = match_config;
+    options.cloud_config = cloud_config;
+    return RunWallChain(*dir_, *truth_, rig, name, kFrames, kNumDisparities, options);
   }
 
   static std::string* dir_;
@@ -87,6 +96,45 @@ TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
     EXPECT_GT(p.inlier_rms, 3 * b.inlier_rms);
     EXPECT_GT(p.rms_to_truth, 5 * b.rms_to_truth);
     EXPECT_LT(p.coverage, b.coverage - 0.2);
+  }
+}
+
+// The accuracy cost of the fast matcher modes (README "Matcher modes"): the
+// same wall, the exact calibration, each mode against full SGBM.
+TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
+  const ws::StereoRig rig = RigFromTruth(*truth_);
+  const double z = truth_->frames.front().wall_distance;
+  struct Mode {
+    std::string name;
+    std::vector<std::string> args;
+    std::string match_config = "config/stereo-match.yaml";
+    std::string cloud_config = "config/stereo-cloud.yaml";
+  };
+  const std::vector<Mode> modes = {
+      {"sgbm", {"--matcher", "sgbm"}},
+      {"sgbm3way", {"--matcher", "sgbm3way"}},
+      {"bm", {"--matcher", "bm", "--block-size", "15"}},
+      {"sgbm3way-d2", {"--matcher", "sgbm3way", "--downscale", "2"}},
+      {"live", {}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml"}};
+  std::vector<WallRun> runs;
+  for (const Mode& mode : modes) {
+    runs.push_back(Run(rig, mode.name, mode.args, mode.match_config, mode.cloud_config));
+    ASSERT_EQ(runs.back().wall.size(), size_t(kFrames)) << mode.name;
+  }
+  for (size_t m = 0; m < modes.size(); ++m) {
+    const WallFit& w = runs[m].wall[0];
+    const DisparityErrors& d = runs[m].disparity[0];
+    std::printf("[ mode ] %-12s density %.3f, sigma %.3f px, bad %.4f | plane RMS %.2f mm, distance error "
+                "%+.3f %%, coverage %.3f, RMS to the true wall %.2f mm\n",
+                modes[m].name.c_str(), d.density, d.sigma, d.bad_rate, 1000 * w.inlier_rms,
+                100 * (w.offset / z - 1), w.coverage, 1000 * w.rms_to_truth);
+    // Every mode finds the wall where it is, over most of the field; none
+    // is flatter than full SGBM by more than chance, and none is more than
+    // a few times less flat.
+    EXPECT_NEAR(w.offset, z, 0.01 * z) << modes[m].name;
+    EXPECT_GT(w.coverage, 0.7) << modes[m].name;
+    EXPECT_GT(d.density, 0.6) << modes[m].name;
+    EXPECT_LT(w.inlier_rms, 10 * runs[0].wall[0].inlier_rms) << modes[m].name;
   }
 }
 

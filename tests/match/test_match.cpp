@@ -10,7 +10,7 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "models/theia_lens.h"
-#include "rectify/match_node.h"
+#include "match/match_node.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/process_status_t.hpp"
@@ -156,9 +156,10 @@ TEST(MatchPipeline, AloeGivesWhatBareOpenCvSgbmGives) {
                                 Event(ws::channel::kStereoImages, frame)});
 
   ws::MatcherConfig config;  // the pipeline's settings, but for the range
+  config.kind = "sgbm3way";  // stereo-match's default
   config.num_disparities = 224;
   const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--num-disparities", "224",
-                             "--max-depth", "1000", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                             "--max-depth", "1000", "--cloud-step", "1", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
                              "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
                             300);
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -182,7 +183,8 @@ TEST(MatchPipeline, AloeGivesWhatBareOpenCvSgbmGives) {
   EXPECT_LT(ours.bad_rate, 0.2);
   EXPECT_GT(ours.density, 0.7);
 
-  // The cloud holds the valid disparities, in the left rectified frame.
+  // The full cloud (on request) holds the valid disparities, in the left
+  // rectified frame.
   const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloud);
   ASSERT_EQ(clouds.size(), 1u);
   EXPECT_EQ(clouds[0].frame, "left_rectified");

@@ -25,18 +25,20 @@ SimTruth CaptureWall(const std::string& dir, const std::string& config, int fram
 
 WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
                      const std::string& name, int frames, const std::string& num_disparities,
-                     double focal_scale) {
+                     const WallChainOptions& options) {
   const std::string calib = dir + "/" + name + ".yaml";
   const std::string match = dir + "/" + name + "-match.lcmlog";
   const std::string cloud = dir + "/" + name + "-cloud.lcmlog";
   WriteCalibrationFile(calib, rig);
-  auto r = RunCommand({"stereo-match", "--log-dir", dir, "--config", "config/stereo-match.yaml",
-                       "--calib", calib, "--num-disparities", num_disparities, "--focal-scale",
-                       std::to_string(focal_scale), "--in-url",
-                       "file://" + dir + "/images.lcmlog?speed=0", "--out-url", "file://" + match + "?mode=w"},
-                      120);
+  std::vector<std::string> argv = {"stereo-match", "--log-dir", dir, "--config", options.match_config,
+                                    "--calib", calib, "--num-disparities", num_disparities, "--focal-scale",
+                                    std::to_string(options.focal_scale), "--in-url",
+                                    "file://" + dir + "/images.lcmlog?speed=0", "--out-url",
+                                    "file://" + match + "?mode=w"};
+  argv.insert(argv.end(), options.match_args.begin(), options.match_args.end());
+  auto r = RunCommand(argv, 120);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  r = RunCommand({"stereo-cloud", "--log-dir", dir, "--config", "config/stereo-cloud.yaml", "--in-url",
+  r = RunCommand({"stereo-cloud", "--log-dir", dir, "--config", options.cloud_config, "--in-url",
                   "file://" + match + "?speed=0", "--out-url", "file://" + cloud + "?mode=w"},
                  120);
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -45,7 +47,7 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Stereo
   // cloud is in only differs by the calibration's own rectifying rotation,
   // which is the same here: both calibrations share R and T).
   const StereoRig true_rig = RigFromTruth(truth);
-  const Rectification rect = BuildRectification(true_rig, RectifyOptions{focal_scale, {}});
+  const Rectification rect = BuildRectification(true_rig, RectifyOptions{options.focal_scale, {}});
   const SimFrameTruth& wall = truth.frames.front();
   const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);
   const cv::Vec3d normal = rect.R_left * wall.wall_normal;

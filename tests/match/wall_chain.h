@@ -22,12 +22,20 @@ struct WallRun {
   std::vector<WallFit> wall;               // per frame
 };
 
-// stereo-match --calib (the rig written as DIR/NAME.yaml) --num-disparities
-// --focal-scale on DIR/images.lcmlog, then stereo-cloud; every frame's
-// disparity and wall against the truth seen through the true rig's
-// rectification with the same RectifyOptions (printed).
+struct WallChainOptions {
+  std::vector<std::string> match_args;  // stereo-match options after these
+  std::string match_config = "config/stereo-match.yaml";
+  std::string cloud_config = "config/stereo-cloud.yaml";
+  double focal_scale = 1.0;  // stereo-match's --focal-scale, and the truth's rectification
+};
+
+// stereo-match --config --calib (the rig written as DIR/NAME.yaml)
+// --num-disparities --focal-scale [match_args] on DIR/images.lcmlog, then
+// stereo-cloud --config; every frame's disparity and wall against the truth
+// seen through the true rig's rectification of the same focal scale
+// (printed).
 WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
                      const std::string& name, int frames, const std::string& num_disparities,
-                     double focal_scale = 1.0);
+                     const WallChainOptions& options = {});
 
 }  // namespace ws::test

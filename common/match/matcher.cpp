@@ -1,4 +1,4 @@
-#include "rectify/matcher.h"
+#include "match/matcher.h"
 
 #include <stdexcept>
 
@@ -20,14 +20,26 @@ cv::Mat Gray8(const cv::Mat& image) {
   return gray;
 }
 
+// The settings of the match at 1/downscale resolution.
+MatcherConfig AtMatchScale(const MatcherConfig& c) {
+  MatcherConfig scaled = c;
+  const int n = c.downscale;
+  scaled.downscale = 1;
+  scaled.min_disparity = c.min_disparity >= 0 ? c.min_disparity / n : -((-c.min_disparity + n - 1) / n);
+  scaled.num_disparities = (c.num_disparities / n + 15) / 16 * 16;
+  return scaled;
+}
+
 }  // namespace
 
 void CheckMatcherConfig(const MatcherConfig& c) {
-  Require(c.kind == "bm" || c.kind == "sgbm", "kind must be bm or sgbm, not '" + c.kind + "'");
+  Require(c.kind == "bm" || c.kind == "sgbm" || c.kind == "sgbm3way",
+          "kind must be sgbm, sgbm3way or bm, not '" + c.kind + "'");
+  Require(c.downscale >= 1 && c.downscale <= 8, "downscale must be 1..8");
   Require(c.num_disparities > 0 && c.num_disparities % 16 == 0,
           "num_disparities must be a positive multiple of 16");
   Require(c.block_size % 2 == 1 && c.block_size >= 1, "block_size must be odd");
-  Require(c.kind == "sgbm" || (c.block_size >= 5 && c.block_size <= 255),
+  Require(c.kind != "bm" || (c.block_size >= 5 && c.block_size <= 255),
           "block_size for bm must be 5..255");
   Require(c.uniqueness_ratio >= 0 && c.speckle_window >= 0 && c.speckle_range >= 0 &&
               c.texture_threshold >= 0 && c.p1_per_pixel >= 0 && c.p2_per_pixel > c.p1_per_pixel,
@@ -50,18 +62,32 @@ cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
   return cv::StereoSGBM::create(c.min_disparity, c.num_disparities, c.block_size,
                                 c.p1_per_pixel * area, c.p2_per_pixel * area, c.disp12_max_diff, 0,
                                 c.uniqueness_ratio, c.speckle_window, c.speckle_range,
-                                cv::StereoSGBM::MODE_SGBM);
+                                c.kind == "sgbm3way" ? cv::StereoSGBM::MODE_SGBM_3WAY
+                                                     : cv::StereoSGBM::MODE_SGBM);
 }
 
 DisparityMatcher::DisparityMatcher(const MatcherConfig& config)
-    : config_(config), matcher_(MakeMatcher(config)) {}
+    : config_(config), matcher_(MakeMatcher(AtMatchScale(config))) {}
 
 cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right) {
   Require(left.size() == right.size(), "left and right images differ in size");
   cv::Mat disparity;
-  matcher_->compute(Gray8(left), Gray8(right), fixed_point_);
-  // OpenCV marks pixels without a match (min_disparity - 1) * 16.
-  fixed_point_.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
+  const int n = config_.downscale;
+  if (n == 1) {
+    matcher_->compute(Gray8(left), Gray8(right), fixed_point_);
+    // OpenCV marks pixels without a match (min_disparity - 1) * 16.
+    fixed_point_.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
+    return disparity;
+  }
+  const cv::Size small((left.cols + n - 1) / n, (left.rows + n - 1) / n);
+  cv::resize(Gray8(left), small_left_, small, 0, 0, cv::INTER_AREA);
+  cv::resize(Gray8(right), small_right_, small, 0, 0, cv::INTER_AREA);
+  matcher_->compute(small_left_, small_right_, fixed_point_);
+  fixed_point_.convertTo(small_disparity_, CV_32F, double(n) / cv::StereoMatcher::DISP_SCALE);
+  // Nearest neighbour: no disparity mixed with a missing one at an edge.
+  cv::resize(small_disparity_, disparity, left.size(), 0, 0, cv::INTER_NEAREST);
+  const float missing = float(config_.min_disparity - 1);
+  disparity.setTo(missing, disparity < float(config_.min_disparity));
   return disparity;
 }
 

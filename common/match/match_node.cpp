@@ -1,0 +1,143 @@
+#include "match/match_node.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+
+namespace ws {
+
+MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
+                             const widestereo::stereo_frame_t& frame,
+                             const std::string& calibration_source) {
+  const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
+  if (left.size() != rect->input_size || right.size() != rect->input_size)
+    throw std::invalid_argument(
+        "frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) + "x" +
+        std::to_string(left.rows) + " but " + calibration_source + " is for " +
+        std::to_string(rect->input_size.width) + "x" + std::to_string(rect->input_size.height));
+  MatchedFrame matched;
+  cv::Mat right_rect;
+  RectifyPair(*rect, left, right, &matched.left_rect, &right_rect);
+  matched.disparity = matcher.Compute(matched.left_rect, right_rect);
+  matched.rect = std::move(rect);
+  matched.utime = frame.utime;
+  matched.frame_id = frame.frame_id;
+  return matched;
+}
+
+MatchResult ToMessages(const MatchedFrame& matched, const MatcherConfig& matcher,
+                       const CloudSampling& sampling) {
+  const Rectification& rect = *matched.rect;
+  MatchResult result;
+  auto& d = result.disparity;
+  d.utime = matched.utime;
+  d.frame_id = matched.frame_id;
+  d.disparity = MatToImage(matched.disparity, matched.utime);
+  d.min_disparity = float(matcher.min_disparity);
+  d.num_disparities = matcher.num_disparities;
+  for (int i = 0; i < 16; ++i) d.Q[i] = rect.Q.val[i];
+  result.cloud = DisparityToCloud(rect, matched.disparity, d.min_disparity, matched.left_rect, sampling);
+  result.cloud.utime = matched.utime;
+  result.cloud.frame_id = matched.frame_id;
+  return result;
+}
+
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, const CloudSampling& sampling,
+                       const widestereo::stereo_frame_t& frame,
+                       const std::string& calibration_source) {
+  // Not owned: the shared pointer lives only as long as this call.
+  std::shared_ptr<const Rectification> view(&rect, [](const Rectification*) {});
+  return ToMessages(RectifyAndMatch(view, matcher, frame, calibration_source), matcher.config(), sampling);
+}
+
+namespace {
+
+template <class T>
+typename NewestFirst<T>::Policy Live(const Process& process, typename NewestFirst<T>::Policy policy) {
+  return process.file_input() ? NewestFirst<T>::Policy::in_line : policy;
+}
+
+}  // namespace
+
+MatchNode::MatchNode(Process& process, MatchConfig config)
+    : process_(process),
+      config_(std::move(config)),
+      matcher_(config_.matcher),
+      publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
+               [this](MatchedFrame& matched) { Publish(matched); }),
+      match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
+             [this](widestereo::stereo_frame_t& frame) { Match(frame); },
+             [this](const widestereo::stereo_frame_t&) { process_.Counters(channel::kStereoImages).dropped++; }) {
+  process_.SetState("waiting for calibration");
+  process_.AtExit([this] { Drain(); });
+}
+
+MatchNode::~MatchNode() { Drain(); }
+
+void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
+  const auto start = std::chrono::steady_clock::now();
+  auto rect = std::make_shared<const Rectification>(BuildRectification(rig, config_.rectify));
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
+                      std::to_string(rect->f) + " px, baseline = " +
+                      std::to_string(rect->baseline) + " m, " + rig.left.distortion.kind + " model");
+  {
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    rect_ = std::move(rect);
+    calibration_source_ = source;
+  }
+  process_.SetState("matching");
+}
+
+void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
+  SetRig(StereoRigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
+}
+
+void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
+  bool calibrated;
+  {
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    calibrated = rect_ != nullptr;
+  }
+  if (!calibrated) {
+    if (frames_without_calibration_++ == 0)
+      process_.ReportError("frames arrive before any calibration: dropped until one does");
+    process_.Counters(channel::kStereoImages).dropped++;
+    return;
+  }
+  match_.Offer(frame);
+}
+
+void MatchNode::Drain() {
+  match_.Drain();
+  publish_.Drain();
+}
+
+void MatchNode::Match(widestereo::stereo_frame_t& frame) {
+  std::shared_ptr<const Rectification> rect;
+  std::string source;
+  {
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    rect = rect_;
+    source = calibration_source_;
+  }
+  try {
+    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source));
+  } catch (const std::exception& e) {
+    process_.HandleRejected(channel::kStereoImages, e.what());
+  }
+}
+
+void MatchNode::Publish(MatchedFrame& matched) {
+  try {
+    const MatchResult result = ToMessages(matched, config_.matcher, config_.cloud);
+    process_.Publish(channel::kStereoDisparity, result.disparity);
+    process_.Publish(channel::kStereoCloud, result.cloud);
+  } catch (const std::exception& e) {
+    process_.HandleRejected(channel::kStereoImages, e.what());
+  }
+}
+
+}  // namespace ws

@@ -1,0 +1,93 @@
+// stereo-match's work: keeps the rectification of the newest calibration,
+// and turns each stereo frame into a disparity image and a point cloud.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "match/matcher.h"
+#include "rectify/disparity_cloud.h"
+#include "rectify/rectification.h"
+#include "runtime/newest_first.h"
+#include "runtime/process.h"
+#include "widestereo/disparity_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace ws {
+
+struct MatchConfig {
+  MatcherConfig matcher;
+  RectifyOptions rectify;
+  CloudSampling cloud;
+};
+
+struct MatchResult {
+  widestereo::disparity_t disparity;
+  widestereo::point_cloud_t cloud;
+};
+
+// A frame rectified and matched: the first stage of MatchFrame.
+struct MatchedFrame {
+  std::shared_ptr<const Rectification> rect;
+  int64_t utime = 0;
+  int64_t frame_id = 0;
+  cv::Mat disparity, left_rect;
+};
+
+// Rectifies and matches one frame. Throws std::invalid_argument when the
+// frame's size is not the calibration's; the message names the calibration
+// by `calibration_source` (e.g. its file).
+MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
+                             const widestereo::stereo_frame_t& frame,
+                             const std::string& calibration_source = "the calibration");
+// The second stage: the disparity message and the cloud, sampled as
+// `sampling` says.
+MatchResult ToMessages(const MatchedFrame& matched, const MatcherConfig& matcher,
+                       const CloudSampling& sampling);
+// Both stages, one after the other.
+MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, const CloudSampling& sampling,
+                       const widestereo::stereo_frame_t& frame,
+                       const std::string& calibration_source = "the calibration");
+
+// Wires MatchFrame to the bus: a calibration file given at the start, and
+// every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
+// become STEREO_DISPARITY and STEREO_CLOUD.
+//
+// Live, the two stages run as a small pipeline (runtime/newest_first.h) on
+// two threads of their own, so that the input thread only hands frames over:
+// matching takes the newest frame waiting (a frame replaced before it was
+// taken is counted as dropped on STEREO_IMAGES), while the cloud of the frame
+// before is built and published. At most one frame waits for each stage.
+// Every frame from the first received is thus published, counted as dropped
+// (replaced, or a frame-id gap), or rejected. From a log, both stages run in
+// line: nothing is dropped, and every replay gives the same output.
+class MatchNode {
+ public:
+  MatchNode(Process& process, MatchConfig config);
+  ~MatchNode();
+  // Builds the maps now; `source` names the calibration in log lines and
+  // errors ("calibration file calib.yaml", "STEREO_CALIBRATION").
+  void SetRig(const StereoRig& rig, const std::string& source);
+  void OnCalibration(const widestereo::stereo_calibration_t& msg);
+  void OnFrame(const widestereo::stereo_frame_t& frame);
+  // Returns when every frame handed over has been published or counted.
+  void Drain();
+
+ private:
+  void Match(widestereo::stereo_frame_t& frame);
+  void Publish(MatchedFrame& matched);
+
+  Process& process_;
+  MatchConfig config_;
+  DisparityMatcher matcher_;  // used by the matching stage only
+  std::mutex rect_mutex_;     // guards rect_ and calibration_source_
+  std::shared_ptr<const Rectification> rect_;
+  std::string calibration_source_;
+  int64_t frames_without_calibration_ = 0;
+  // Destroyed (drained) before the rest, matching before publishing.
+  NewestFirst<MatchedFrame> publish_;
+  NewestFirst<widestereo::stereo_frame_t> match_;
+};
+
+}  // namespace ws
