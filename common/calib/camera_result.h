@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "calib/calibrate.h"
+#include "calib/heldout.h"
 #include "calib/initialise.h"
 #include "calib/problem.h"
 
@@ -19,5 +20,9 @@ namespace ws::calib {
 CameraCalibration CameraResult(const Problem& problem, int camera, const Prepared& prepared,
                                const std::vector<double>& stddev, const std::string& init_method,
                                const CalibrationOptions& options);
+
+// Camera `camera`'s held-out RMS of a cross-validation (none when it has no
+// folds) into *out.
+void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out);
 
 }  // namespace ws::calib

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
                      "log), STEREO_CALIBRATION; writes the calibration file and report.");
   ws::calib::NodeOptions node;
   ws::calib::CalibrationOptions& calib = node.calibration;
-  std::string model = "bspline", flow = "joint", loss = "none", state;
+  std::string model = "bspline", flow = "joint", loss = "none", state, knots = "auto";
   auto& app = cli.app();
   std::vector<std::string> models = ws::ModelKinds();
   models.push_back("all");
@@ -26,8 +26,14 @@ int main(int argc, char** argv) {
                  "fisheye lenses beyond 180 degrees) or all (Table II; the first solved is published)")
       ->check(CLI::IsMember(models))
       ->capture_default_str();
-  app.add_option("--knots", calib.knots, "Estimated B-spline coefficients (distinct knots)")
-      ->check(CLI::Range(2, 64))
+  app.add_option("--knots", knots,
+                 "Estimated B-spline coefficients (distinct knots), 2 to 64, or auto: per camera "
+                 "the fewest whose cross-validated RMS is within the fold-to-fold noise of the "
+                 "best")
+      ->capture_default_str();
+  app.add_option("--cv-folds", calib.cv_folds,
+                 "Folds of the cross-validation (held-out RMS, --knots auto); 0: none")
+      ->check(CLI::Range(0, 100))
       ->capture_default_str();
   app.add_option("--smoothness", calib.smoothness,
                  "B-spline smoothness prior weight lambda (0: off)")
@@ -75,6 +81,7 @@ int main(int argc, char** argv) {
   try {
     node.models = ws::calib::ParseModelList(model);
     calib.model = node.models.front();
+    calib.knots = ws::calib::ParseKnots(knots);
     calib.flow = flow == "paper" ? ws::calib::StereoFlow::kPaper : ws::calib::StereoFlow::kJoint;
     calib.robust_loss = loss == "huber"    ? ws::calib::RobustLoss::kHuber
                         : loss == "cauchy" ? ws::calib::RobustLoss::kCauchy
