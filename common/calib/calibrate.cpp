@@ -24,7 +24,8 @@ void CheckOptions(const CalibrationOptions& options) {
   if (options.knots != kAutoKnots && (options.knots < 2 || options.knots > 64))
     throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
                            std::to_string(options.knots));
-  if (options.knots == kAutoKnots && options.cv_folds < 2)
+  const bool spline = options.model.rfind("bspline", 0) == 0;  // bspline, bspline_theta
+  if (spline && options.knots == kAutoKnots && options.cv_folds < 2)
     throw CalibrationError("--knots auto needs cross-validation (at least 2 folds)");
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
   if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
