@@ -73,14 +73,20 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
 
 namespace {
 
-// ModelCalibrations::chosen: the models ordered by parameter count, each
-// fold's RMS pooled over the cameras, ChooseWithinNoise.
+// ModelCalibrations::chosen: of the models that use the most views (a held-out
+// RMS over fewer views, e.g. a pinhole model's that cannot reach past 90
+// degrees, is not comparable), ordered by parameter count, each fold's RMS
+// pooled over the cameras, ChooseWithinNoise.
 int ChooseModel(const std::vector<StereoCalibration>& solved) {
-  std::vector<int> order(solved.size());
-  for (size_t i = 0; i < solved.size(); ++i) order[i] = int(i);
   for (const auto& c : solved)
     if (c.left.heldout_fold_rms_px.empty() || (!c.mono && c.right.heldout_fold_rms_px.empty()))
       return 0;
+  auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
+  int most = 0;
+  for (const auto& c : solved) most = std::max(most, views(c));
+  std::vector<int> order;
+  for (size_t i = 0; i < solved.size(); ++i)
+    if (views(solved[i]) == most) order.push_back(int(i));
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return solved[a].left.param_names.size() < solved[b].left.param_names.size();
   });

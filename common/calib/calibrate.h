@@ -104,10 +104,11 @@ struct ModelFailure {
 struct ModelCalibrations {
   std::vector<StereoCalibration> solved;  // in the order asked
   std::vector<ModelFailure> failed;
-  // The one published and written to --out: of the solved ones, the fewest
-  // parameters (per camera) whose held-out RMS (both cameras' folds pooled)
-  // is within the fold-to-fold noise of the lowest (ChooseWithinNoise,
-  // heldout.h); the first solved when none was cross-validated.
+  // The one published and written to --out: of the solved ones that use
+  // the most views, the fewest parameters (per camera) whose held-out RMS
+  // (both cameras' folds pooled) is within the fold-to-fold noise of the
+  // lowest (ChooseWithinNoise, heldout.h); the first solved when any was
+  // not cross-validated.
   int chosen = 0;
 };
 const StereoCalibration& Chosen(const ModelCalibrations& calibrations);
