@@ -269,6 +269,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
         std::filesystem::create_directories(options_.plot_dir);
         WriteDistortionCurvesPng(results.solved, options_.plot_dir + "/distortion_curves.png");
         WriteResidualMapPng(results.solved, options_.plot_dir + "/residual_map.png");
+        WriteKnotCurvePng(results.solved, options_.plot_dir + "/knot_curve.png");
         process_.log().Info("wrote the figures in " + options_.plot_dir);
       } catch (const std::exception& e) {
         process_.ReportError(std::string("figures: ") + e.what());

@@ -95,7 +95,7 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
   EXPECT_EQ(rig.right.distortion.coeffs, file.right.distortion.coeffs);
   EXPECT_EQ(rig.T, file.T);
   EXPECT_EQ(rig.R, file.R);
-  for (const char* png : {"/distortion_curves.png", "/residual_map.png"})
+  for (const char* png : {"/distortion_curves.png", "/residual_map.png", "/knot_curve.png"})
     EXPECT_GT(std::filesystem::file_size(dir + png), 10000u) << png;
 }
 
