@@ -3,7 +3,7 @@
 // every board pose, minimising the reprojection error (paper Eq. 10), for
 // any distortion model of models/model_registry.h.
 //
-//   calib::CalibrationOptions options;                  // options.h: "bspline", 11 knots, ...
+//   calib::CalibrationOptions options;                  // options.h: "bspline", --knots auto, ...
 //   calib::StereoCalibration result = calib::CalibrateStereo(data, options);
 //   result.left.model   -> a CameraModel (models/camera_model.h)
 //   result.R, result.T  -> X_right = R X_left + T
