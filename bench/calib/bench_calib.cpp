@@ -3,6 +3,10 @@
 // projected through an ordinary barrel lens that OpenCV's 5-coefficient
 // model describes exactly, so both solve the same model (poly6 = k1 k2 k3
 // p1 p2) and must reach the same RMS. Ratios are measured in one run.
+// Then (issue #14) the whole --knots auto choice (every count tried, each
+// 5-fold cross-validated) against one fixed-knot B-spline solve (13
+// coefficients, no cross-validation) and against cv::calibrateCamera on the
+// same detections, on the mustache lens (models of synthetic_rig.h).
 //
 //   build/bench/bench_calib [--repeats N]
 #include <CLI/CLI.hpp>
@@ -48,6 +52,55 @@ ws::CameraModel BenchCamera() {
   return camera;
 }
 
+// The median time of cv::calibrateCamera (its default 5 coefficients) on
+// the camera's views; its RMS into *rms.
+double OpenCvSeconds(const ws::calib::CameraData& data, int repeats, double* rms) {
+  std::vector<std::vector<cv::Point3f>> object;
+  std::vector<std::vector<cv::Point2f>> image;
+  for (const auto& view : data.views) {
+    object.emplace_back();
+    image.emplace_back();
+    for (int i = 0; i < view.size(); ++i) {
+      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
+      image.back().emplace_back(view.image[i].x(), view.image[i].y());
+    }
+  }
+  return MedianSeconds(repeats, [&] {
+    cv::Mat K, distortion;
+    std::vector<cv::Mat> rvecs, tvecs;
+    *rms = cv::calibrateCamera(object, image, cv::Size(data.image_width, data.image_height), K,
+                               distortion, rvecs, tvecs);
+  });
+}
+
+// --knots auto against one 13-coefficient solve and cv::calibrateCamera.
+void AutoKnots(int repeats) {
+  std::printf("\n--knots auto (mustache lens, bspline)\n%6s %12s %12s %12s %10s %10s %8s %8s\n",
+              "views", "opencv [s]", "fixed 13 [s]", "auto [s]", "auto/fixed", "auto/cv",
+              "coeffs", "auto rms");
+  for (int views : {30, 60}) {
+    ws::calib::SyntheticRigOptions rig_options;
+    rig_options.left = ws::calib::MustacheTestCamera();
+    rig_options.stereo = false;
+    rig_options.views = views;
+    const ws::calib::SyntheticRig rig = ws::calib::MakeSyntheticRig(rig_options);
+    const ws::calib::CameraData& data = rig.data.left;
+    double opencv_rms = 0;
+    const double opencv_s = OpenCvSeconds(data, repeats, &opencv_rms);
+    ws::calib::CalibrationOptions fixed;
+    fixed.knots = 13;
+    fixed.cv_folds = 0;
+    const double fixed_s = MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, fixed); });
+    ws::calib::CameraCalibration chosen;
+    const double auto_s = MedianSeconds(repeats, [&] {
+      chosen = ws::calib::CalibrateCamera(data, ws::calib::CalibrationOptions());
+    });
+    std::printf("%6d %12.4f %12.4f %12.4f %10.2f %10.2f %8zu %8.4f\n", views, opencv_s, fixed_s,
+                auto_s, auto_s / fixed_s, auto_s / opencv_s, chosen.param_names.size() - 6,
+                chosen.rms_px);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,8 +111,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  std::printf("%6s %8s %12s %12s %12s %8s %12s %12s\n", "views", "corners", "opencv [s]",
-              "ours [s]", "ours,nocov", "ratio", "opencv rms", "ours rms");
+  std::printf("%6s %8s %12s %12s %12s %12s %8s %12s %12s\n", "views", "corners", "opencv [s]",
+              "ours [s]", "ours,nocov", "ours,no cv", "ratio", "opencv rms", "ours rms");
   for (int views : {15, 30, 60}) {
     ws::calib::SyntheticRigOptions rig_options;
     rig_options.left = BenchCamera();
@@ -74,25 +127,10 @@ int main(int argc, char** argv) {
     const ws::calib::SyntheticRig rig = ws::calib::MakeSyntheticRig(rig_options);
     const ws::calib::CameraData& data = rig.data.left;
 
-    std::vector<std::vector<cv::Point3f>> object;
-    std::vector<std::vector<cv::Point2f>> image;
-    int corners = 0;
-    for (const auto& view : data.views) {
-      object.emplace_back();
-      image.emplace_back();
-      for (int i = 0; i < view.size(); ++i) {
-        object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
-        image.back().emplace_back(view.image[i].x(), view.image[i].y());
-      }
-      corners += view.size();
-    }
     double opencv_rms = 0;
-    const double opencv_s = MedianSeconds(repeats, [&] {
-      cv::Mat K, distortion;
-      std::vector<cv::Mat> rvecs, tvecs;
-      opencv_rms = cv::calibrateCamera(object, image, cv::Size(data.image_width, data.image_height),
-                                       K, distortion, rvecs, tvecs);
-    });
+    const double opencv_s = OpenCvSeconds(data, repeats, &opencv_rms);
+    int corners = 0;
+    for (const auto& view : data.views) corners += view.size();
     ws::calib::CalibrationOptions options;
     options.model = "poly6";
     double ours_rms = 0;
@@ -101,10 +139,16 @@ int main(int argc, char** argv) {
     options.covariance = false;
     const double nocov_s =
         MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, options); });
-    std::printf("%6d %8d %12.4f %12.4f %12.4f %8.2f %12.5f %12.5f\n", views, corners, opencv_s,
-                ours_s, nocov_s, ours_s / opencv_s, opencv_rms, ours_rms);
+    options.covariance = true;
+    options.cv_folds = 0;
+    const double nocv_s =
+        MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, options); });
+    std::printf("%6d %8d %12.4f %12.4f %12.4f %12.4f %8.2f %12.5f %12.5f\n", views, corners,
+                opencv_s, ours_s, nocov_s, nocv_s, ours_s / opencv_s, opencv_rms, ours_rms);
   }
-  std::printf("ratio: ours (with standard deviations) / cv::calibrateCamera, median of %d runs\n",
+  std::printf("ratio: ours (with standard deviations and the 5-fold held-out RMS) / "
+              "cv::calibrateCamera, median of %d runs\n",
               repeats);
+  AutoKnots(repeats);
   return 0;
 }

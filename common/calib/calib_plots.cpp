@@ -138,4 +138,42 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
   plot::WritePng(figure, png_path);
 }
 
+bool WriteKnotCurvePng(const std::vector<StereoCalibration>& calibrations,
+                       const std::string& png_path) {
+  plot::Figure figure("Cross-validated choice of the B-spline's coefficients (--knots auto)", 2,
+                      1400, 650);
+  bool any = false;
+  for (int side = 0; side < 2; ++side) {
+    plot::Panel& panel = figure.panels.emplace_back(
+        (side == 0 ? "left" : "right") + std::string(" camera: RMS per coefficient count"),
+        "estimated coefficients (--knots)", "RMS [px]");
+    panel.legend = "outside below";
+    for (const auto& c : calibrations) {
+      if (c.mono && side == 1) continue;
+      const CameraCalibration& camera = Side(c, side);
+      if (camera.knot_curve.empty()) continue;
+      any = true;
+      std::vector<double> n, heldout, fitted;
+      for (const KnotTrial& t : camera.knot_curve) {
+        n.push_back(t.knots);
+        heldout.push_back(t.heldout_rms_px);
+        fitted.push_back(t.rms_px);
+      }
+      panel.series.emplace_back(c.model + " held-out", n, heldout, plot::Style::kLinesPoints);
+      panel.series.emplace_back(c.model + " fitted", n, fitted, plot::Style::kLinesPoints);
+      const double chosen = double(camera.param_names.size()) - 6;
+      for (const KnotTrial& t : camera.knot_curve)
+        if (t.knots == chosen)
+          panel.series
+              .emplace_back(c.model + " chosen: " + Format("%.0f", chosen),
+                                    std::vector<double>{chosen},
+                                    std::vector<double>{t.heldout_rms_px}, plot::Style::kPoints)
+              .point_size = 2.5;
+    }
+  }
+  if (!any) return false;
+  plot::WritePng(figure, png_path);
+  return true;
+}
+
 }  // namespace ws::calib

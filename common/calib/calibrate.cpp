@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
 
 #include "calib/camera_result.h"
+#include "calib/heldout.h"
 #include "calib/mono_solve.h"
 #include "calib/stereo_solve.h"
 #include "models/model_registry.h"
@@ -17,19 +21,34 @@ void CheckOptions(const CalibrationOptions& options) {
     for (const auto& kind : kinds) known += (known.empty() ? "" : ", ") + kind;
     throw CalibrationError("unknown model '" + options.model + "' (known: " + known + ")");
   }
-  if (options.knots < 2 || options.knots > 64)
+  if (options.knots != kAutoKnots && (options.knots < 2 || options.knots > 64))
     throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
                            std::to_string(options.knots));
+  const bool spline = options.model.rfind("bspline", 0) == 0;  // bspline, bspline_theta
+  if (spline && options.knots == kAutoKnots && options.cv_folds < 2)
+    throw CalibrationError("--knots auto needs cross-validation (at least 2 folds)");
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
   if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
+}
+
+int ParseKnots(const std::string& value) {
+  if (value == "auto") return kAutoKnots;
+  size_t used = 0;
+  const int knots = std::stoi(value, &used);
+  if (used != value.size() || knots < 2 || knots > 64)
+    throw std::invalid_argument("knots must be 'auto' or a count from 2 to 64, not '" + value + "'");
+  return knots;
 }
 
 CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options) {
   CheckOptions(options);
   MonoState state;
   SolveMono(data, ExtentOf({&data}), options, &state);
-  return CameraResult(state.problem, 0, state.prepared, state.outcome,
-                      state.init_method, options);
+  CameraCalibration result =
+      CameraResult(state.problem, 0, state.prepared, state.outcome, state.init_method, options);
+  result.knot_curve = state.knot_curve;
+  SetHeldOut(HeldOut(state, options), 0, &result);
+  return result;
 }
 
 StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options) {
@@ -52,6 +71,38 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
   return result;
 }
 
+namespace {
+
+// ModelCalibrations::chosen: of the models that use the most views (a held-out
+// RMS over fewer views, e.g. a pinhole model's that cannot reach past 90
+// degrees, is not comparable), ordered by parameter count, each fold's RMS
+// pooled over the cameras, ChooseWithinNoise.
+int ChooseModel(const std::vector<StereoCalibration>& solved) {
+  for (const auto& c : solved)
+    if (c.left.heldout_fold_rms_px.empty() || (!c.mono && c.right.heldout_fold_rms_px.empty()))
+      return 0;
+  auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
+  int most = 0;
+  for (const auto& c : solved) most = std::max(most, views(c));
+  std::vector<int> order;
+  for (size_t i = 0; i < solved.size(); ++i)
+    if (views(solved[i]) == most) order.push_back(int(i));
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return solved[a].left.param_names.size() < solved[b].left.param_names.size();
+  });
+  std::vector<std::vector<double>> folds;
+  for (int i : order) {
+    const StereoCalibration& c = solved[i];
+    std::vector<double> pooled = c.left.heldout_fold_rms_px;
+    for (size_t k = 0; k < pooled.size() && !c.mono && k < c.right.heldout_fold_rms_px.size(); ++k)
+      pooled[k] = std::hypot(pooled[k], c.right.heldout_fold_rms_px[k]) / std::sqrt(2.0);
+    folds.push_back(pooled);
+  }
+  return order[ChooseWithinNoise(folds)];
+}
+
+}  // namespace
+
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
                                            const std::vector<std::string>& kinds) {
@@ -67,7 +118,34 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   }
   if (results.solved.empty() && !results.failed.empty())
     throw CalibrationError(results.failed.front().error);
+  results.chosen = ChooseModel(results.solved);
   return results;
+}
+
+const StereoCalibration& Chosen(const ModelCalibrations& calibrations) {
+  return calibrations.solved.at(calibrations.chosen);
+}
+
+std::string KnotChoiceLine(const CameraCalibration& camera) {
+  char buf[64];
+  std::string curve;
+  for (const KnotTrial& t : camera.knot_curve) {
+    std::snprintf(buf, sizeof buf, "%s%d: %.4f", curve.empty() ? "" : ", ", t.knots,
+                  t.heldout_rms_px);
+    curve += buf;
+  }
+  return camera.name + ": " + std::to_string(int(camera.param_names.size()) - 6) +
+         " coefficients chosen by " + std::to_string(camera.heldout_fold_rms_px.size()) +
+         "-fold cross-validation (the fewest within the fold-to-fold noise of the lowest "
+         "held-out RMS); held-out RMS per count " + curve + " px";
+}
+
+double HeldOutRms(const StereoCalibration& c) {
+  if (c.mono || c.left.heldout_rms_px < 0) return c.left.heldout_rms_px;
+  if (c.right.heldout_rms_px < 0) return -1;
+  const double l = c.left.heldout_rms_px, r = c.right.heldout_rms_px;
+  return std::sqrt((l * l * c.left.points + r * r * c.right.points) /
+                   (c.left.points + c.right.points));
 }
 
 std::vector<CornerResidual> Reproject(const CameraModel& model, const CameraData& data,

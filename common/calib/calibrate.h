@@ -3,7 +3,7 @@
 // every board pose, minimising the reprojection error (paper Eq. 10), for
 // any distortion model of models/model_registry.h.
 //
-//   calib::CalibrationOptions options;                  // options.h: "bspline", 11 knots, ...
+//   calib::CalibrationOptions options;                  // options.h: "bspline", --knots auto, ...
 //   calib::StereoCalibration result = calib::CalibrateStereo(data, options);
 //   result.left.model   -> a CameraModel (models/camera_model.h)
 //   result.R, result.T  -> X_right = R X_left + T
@@ -31,11 +31,26 @@
 
 namespace ws::calib {
 
+// One candidate of --knots auto (mono_solve.h): the camera solved with
+// `knots` estimated coefficients, its fitted RMS and its cross-validated
+// (heldout.h) RMS, overall and per fold.
+struct KnotTrial {
+  int knots = 0;
+  double rms_px = 0;
+  double heldout_rms_px = -1;
+  std::vector<double> fold_rms_px;
+};
+
 // One camera's calibration and its quality.
 struct CameraCalibration {
   std::string name;
   CameraModel model;
   double rms_px = 0;                      // over all the camera's inlier corners
+  // K-fold cross-validated RMS (heldout.h, CrossValidate) of the final
+  // solve, overall and per fold; negative / empty when not computed.
+  double heldout_rms_px = -1;
+  std::vector<double> heldout_fold_rms_px;
+  std::vector<KnotTrial> knot_curve;      // --knots auto: every count tried, in order
   int views = 0;                          // views used
   int points = 0;                         // inlier corners used
   int outliers = 0;                       // corners rejected as outliers
@@ -95,10 +110,25 @@ struct ModelFailure {
 struct ModelCalibrations {
   std::vector<StereoCalibration> solved;  // in the order asked
   std::vector<ModelFailure> failed;
+  // The one published and written to --out: of the solved ones that use
+  // the most views, the fewest parameters (per camera) whose held-out RMS
+  // (both cameras' folds pooled) is within the fold-to-fold noise of the
+  // lowest (ChooseWithinNoise, heldout.h); the first solved when any was
+  // not cross-validated.
+  int chosen = 0;
 };
+const StereoCalibration& Chosen(const ModelCalibrations& calibrations);
+
+// "left: 16 coefficients chosen by 5-fold cross-validation; held-out RMS per
+// count 7: 0.0513, 9: 0.0434, ... px" (--knots auto).
+std::string KnotChoiceLine(const CameraCalibration& camera);
+
+// The held-out RMS of the rig's cameras pooled (their corners weighted
+// alike); negative when not computed.
+double HeldOutRms(const StereoCalibration& calibration);
 
 // The same data solved with each model kind in turn (Table II and the
-// curves). A model that fails is reported in `failed` and the others are
+// curves), and the one to publish chosen. A model that fails is reported in `failed` and the others are
 // still solved; throws the first model's CalibrationError when every one fails.
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,

@@ -34,13 +34,6 @@ std::string FolderOf(const std::string& file) {
   return parent.empty() ? "." : parent.string();
 }
 
-// --knots' range, for a knots=N command argument.
-int KnotCount(const std::string& value) {
-  const int knots = std::stoi(value);
-  if (knots < 2 || knots > 64) throw std::invalid_argument("knots must be in [2, 64]");
-  return knots;
-}
-
 }  // namespace
 
 std::vector<std::string> ParseModelList(const std::string& spec) {
@@ -79,6 +72,7 @@ void CalibrateNode::Start() {
     line << "views " << session_.views() << " (near duplicates " << session_.duplicates() << ") "
          << state_;
     if (rms_ >= 0) line << ", rms " << rms_ << " px";
+    if (heldout_rms_ >= 0) line << ", held-out " << heldout_rms_ << " px";
     return line.str();
   });
   process_.SetState("collecting");
@@ -124,7 +118,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       if (key == "model")
         models = ParseModelList(value);
       else if (key == "knots")
-        calibration.knots = KnotCount(value);
+        calibration.knots = ParseKnots(value);
       else if (key == "path")
         yaml = FileInFolder(FolderOf(options_.out_yaml), value);
       else if (key == "report")
@@ -168,20 +162,24 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
 
 void CalibrateNode::PublishStatus() {
   std::string state;
-  double rms;
+  double rms, heldout;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     state = state_;
     rms = rms_;
+    heldout = heldout_rms_;
   }
-  process_.Publish(channel::kCalibrationStatus, session_.Status(process_.Now(), state, rms));
+  auto status = session_.Status(process_.Now(), state, rms);
+  status.heldout_rms = heldout;
+  process_.Publish(channel::kCalibrationStatus, status);
 }
 
-void CalibrateNode::SetState(const std::string& state, double rms) {
+void CalibrateNode::SetState(const std::string& state, double rms, double heldout_rms) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     state_ = state;
     rms_ = rms;
+    heldout_rms_ = heldout_rms;
   }
   process_.SetState(state);
 }
@@ -204,7 +202,7 @@ void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::stri
                                const std::string& json) {
   const bool several = results.solved.size() + results.failed.size() > 1;
   if (!yaml.empty()) {
-    WriteCalibrationFile(yaml, ToCalibrationFile(results.solved.front()));
+    WriteCalibrationFile(yaml, ToCalibrationFile(Chosen(results)));
     process_.log().Info("wrote " + yaml);
     if (several)
       for (const StereoCalibration& result : results.solved) {
@@ -214,7 +212,7 @@ void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::stri
       }
   }
   if (!json.empty()) {
-    WriteJsonFile(json, several ? ModelsReport(results) : StereoReport(results.solved.front()));
+    WriteJsonFile(json, several ? ModelsReport(results) : StereoReport(Chosen(results)));
     process_.log().Info("wrote " + json);
   }
 }
@@ -228,10 +226,12 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   for (const auto& m : models) names += (names.empty() ? "" : ", ") + m;
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
-  double rms = -1;
+  double rms = -1, heldout = -1;
   try {
-    const ModelCalibrations results = CalibrateStereoAllModels(data, options, models);
-    const StereoCalibration& primary = results.solved.front();
+    CalibrationOptions logged = options;  // every stage in the detail log
+    logged.progress = [this](const std::string& line) { process_.log().Detail(line); };
+    const ModelCalibrations results = CalibrateStereoAllModels(data, logged, models);
+    const StereoCalibration& primary = Chosen(results);
     if (primary.mono)  // STEREO_CALIBRATION is a rig's message
       process_.log().Info("one-camera rig: nothing to publish on " +
                           std::string(channel::kStereoCalibration));
@@ -242,18 +242,21 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
     for (const auto& r : results.solved) {
       std::ostringstream line;
       line << r.model << ": left rms " << r.left.rms_px << " px (" << r.left.views << " views, "
-           << r.left.outliers << " outliers)";
+           << r.left.outliers << " outliers, held-out rms " << r.left.heldout_rms_px << " px)";
       if (!r.mono)
         line << ", right rms " << r.right.rms_px << " px (" << r.right.views << " views, "
-             << r.right.outliers << " outliers), stereo rms " << r.rms_px << " px (" << r.views
+             << r.right.outliers << " outliers, held-out rms " << r.right.heldout_rms_px
+             << " px), stereo rms " << r.rms_px << " px (" << r.views
              << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
+      for (const auto* camera : {&r.left, &r.right})
+        if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
       for (const auto* camera : {&r.left, &r.right})
         for (const auto& skipped : camera->skipped)
           process_.log().Detail(camera->name + " " + skipped);
     }
     if (results.solved.size() > 1) {
-      std::istringstream table(FormatTableII(TableRows(results.solved)));
+      std::istringstream table(FormatTableII(TableRows(results.solved, results.chosen)));
       for (std::string line; std::getline(table, line);) process_.log().Info(line);
     }
     {
@@ -266,19 +269,21 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
         std::filesystem::create_directories(options_.plot_dir);
         WriteDistortionCurvesPng(results.solved, options_.plot_dir + "/distortion_curves.png");
         WriteResidualMapPng(results.solved, options_.plot_dir + "/residual_map.png");
+        WriteKnotCurvePng(results.solved, options_.plot_dir + "/knot_curve.png");
         process_.log().Info("wrote the figures in " + options_.plot_dir);
       } catch (const std::exception& e) {
         process_.ReportError(std::string("figures: ") + e.what());
       }
     }
     rms = primary.rms_px;
+    heldout = HeldOutRms(primary);
     ok = true;
   } catch (const std::exception& e) {
     process_.ReportError(std::string("solve failed: ") + e.what());
   }
   // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;
-  SetState(ok ? "solved" : "failed", rms);
+  SetState(ok ? "solved" : "failed", rms, heldout);
   PublishStatus();
   return ok;
 }

@@ -71,7 +71,7 @@ class CalibrateNode {
   // The calibration file and report of `results`; throws when one cannot be written.
   void WriteFiles(const ModelCalibrations& results, const std::string& yaml,
                   const std::string& json);
-  void SetState(const std::string& state, double rms);
+  void SetState(const std::string& state, double rms, double heldout_rms = -1);
 
   Process& process_;
   NodeOptions options_;
@@ -79,6 +79,7 @@ class CalibrateNode {
   std::mutex mutex_;  // guards state_, rms_, last_
   std::string state_ = "collecting";
   double rms_ = -1;
+  double heldout_rms_ = -1;
   ModelCalibrations last_;
   std::atomic<bool> solving_{false};
   std::thread worker_;

@@ -260,6 +260,7 @@ widestereo::calibration_status_t CalibrationSession::Status(int64_t utime, const
         out[r][col] = grid->count.empty() ? 0 : grid->count[r * options_.grid_cols + col];
   }
   msg.rms = rms;
+  msg.heldout_rms = -1;  // the node's, after a solve
   msg.hint = CoverageHint(c, options_.min_views);
   return msg;
 }

@@ -70,6 +70,15 @@ std::string Kind(const CameraBlock& camera) {
   return std::visit([](const auto& m) { return m.Kind(); }, camera.model);
 }
 
+double FieldEnd(const CameraBlock& camera) {
+  return std::visit(
+      [](const auto& m) {
+        if constexpr (kIsBspline<std::decay_t<decltype(m)>>) return m.knots().back();
+        return 0.0;
+      },
+      camera.model);
+}
+
 bool IsSpline(const CameraBlock& camera) {
   return std::visit([](const auto& m) { return kIsBspline<std::decay_t<decltype(m)>>; },
                     camera.model);

@@ -45,6 +45,8 @@ CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& opti
 CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
 
 std::string Kind(const CameraBlock& camera);
+// A B-spline's field end r_max (its last knot); 0 for the polynomials.
+double FieldEnd(const CameraBlock& camera);
 // Whether the model is a B-spline (bspline, bspline_theta).
 bool IsSpline(const CameraBlock& camera);
 // fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..).

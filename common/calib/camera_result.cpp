@@ -54,4 +54,10 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
   return out;
 }
 
+void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out) {
+  if (cv.folds == 0) return;
+  out->heldout_rms_px = cv.rms_px[camera];
+  out->heldout_fold_rms_px = cv.fold_rms_px[camera];
+}
+
 }  // namespace ws::calib

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "calib/calibrate.h"
+#include "calib/heldout.h"
 #include "calib/initialise.h"
 #include "calib/problem.h"
 
@@ -20,5 +21,9 @@ namespace ws::calib {
 CameraCalibration CameraResult(const Problem& problem, int camera, const Prepared& prepared,
                                const SolveOutcome& outcome, const std::string& init_method,
                                const CalibrationOptions& options);
+
+// Camera `camera`'s held-out RMS of a cross-validation (none when it has no
+// folds) into *out.
+void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out);
 
 }  // namespace ws::calib

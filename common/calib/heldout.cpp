@@ -1,7 +1,10 @@
 #include "calib/heldout.h"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <map>
+#include <numeric>
 
 #include "calib/pose_fit.h"
 
@@ -37,6 +40,106 @@ HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int
   }
   fit.rms_px = fit.points > 0 ? std::sqrt(sum / fit.points) : 0.0;
   return fit;
+}
+
+namespace {
+
+// The problem's observations whose view is (or, with keep = false, is not)
+// in `views`, on the board poses of *poses (copies of the problem's, one per
+// distinct pose the problem points to).
+Problem Subproblem(const Problem& solved, const std::vector<int>& views, bool keep,
+                   const std::map<const Pose*, size_t>& index, std::vector<Pose>* poses) {
+  Problem out = solved;
+  out.observations.clear();
+  out.left_out.clear();
+  for (Observation o : solved.observations) {
+    if (std::binary_search(views.begin(), views.end(), o.view) != keep) continue;
+    o.pose = &(*poses)[index.at(o.pose)];
+    out.observations.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace
+
+CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations) {
+  std::vector<int> views;
+  std::map<const Pose*, size_t> index;
+  std::vector<Pose> start;
+  for (const Observation& o : solved.observations) {
+    views.push_back(o.view);
+    if (index.emplace(o.pose, start.size()).second) start.push_back(*o.pose);
+  }
+  std::sort(views.begin(), views.end());
+  views.erase(std::unique(views.begin(), views.end()), views.end());
+  CrossValidation cv;
+  const int n_cameras = int(solved.cameras.size());
+  if (folds < 2 || int(views.size()) < 2 * folds) return cv;
+  std::vector<double> sum(n_cameras, 0.0);
+  std::vector<int> count(n_cameras, 0);
+  cv.fold_rms_px.assign(n_cameras, {});
+  for (int k = 0; k < folds; ++k) {
+    std::vector<int> held;
+    for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
+    std::vector<Pose> poses = start;
+    Problem train = Subproblem(solved, held, false, index, &poses);
+    const std::string what = "cross-validation fold " + std::to_string(k + 1);
+    try {
+      SolveSettings settings{what, max_iterations};
+      settings.tolerance = kRankingTolerance;
+      Solve(train, settings);
+      Problem test = Subproblem(solved, held, true, index, &poses);
+      test.cameras = train.cameras;
+      for (CameraBlock& camera : test.cameras) camera.fixed = true;
+      test.extrinsic = train.extrinsic;
+      test.extrinsic_fixed = true;
+      settings.what = what + " held-out poses";
+      Solve(test, settings);
+      for (int c = 0; c < n_cameras; ++c) {
+        const std::vector<CornerResidual> residuals = Residuals(test, c);
+        double fold_sum = 0;
+        int fold_count = 0;
+        for (const CornerResidual& r : residuals)
+          if (!r.outlier && r.residual.allFinite()) {
+            fold_sum += r.residual.squaredNorm();
+            ++fold_count;
+          }
+        sum[c] += fold_sum;
+        count[c] += fold_count;
+        cv.fold_rms_px[c].push_back(fold_count ? std::sqrt(fold_sum / fold_count) : 0.0);
+      }
+    } catch (const CalibrationError&) {
+      // A fold that leaves a camera without enough views: it counts as no fold.
+      continue;
+    }
+    ++cv.folds;
+  }
+  for (int c = 0; c < n_cameras; ++c)
+    cv.rms_px.push_back(count[c] ? std::sqrt(sum[c] / count[c]) : -1.0);
+  if (cv.folds < 2) cv = CrossValidation{};
+  return cv;
+}
+
+int ChooseWithinNoise(const std::vector<std::vector<double>>& fold_rms) {
+  if (fold_rms.empty()) return -1;
+  size_t folds = fold_rms[0].size();
+  for (const auto& f : fold_rms) folds = std::min(folds, f.size());
+  auto mean = [&](const std::vector<double>& f) {
+    return std::accumulate(f.begin(), f.begin() + folds, 0.0) / std::max<size_t>(folds, 1);
+  };
+  size_t best = 0;
+  for (size_t i = 1; i < fold_rms.size(); ++i)
+    if (mean(fold_rms[i]) < mean(fold_rms[best])) best = i;
+  for (size_t i = 0; i < best; ++i) {
+    std::vector<double> d(folds);
+    for (size_t k = 0; k < folds; ++k) d[k] = fold_rms[i][k] - fold_rms[best][k];
+    const double m = mean(d);
+    double var = 0;
+    for (double x : d) var += (x - m) * (x - m);
+    const double se = folds > 1 ? std::sqrt(var / (folds - 1) / folds) : 0.0;
+    if (m <= se) return int(i);
+  }
+  return int(best);
 }
 
 }  // namespace ws::calib

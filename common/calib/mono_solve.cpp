@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calib/heldout.h"
 #include "calib/outliers.h"
 #include "calib/pose_fit.h"
 #include "calib/stage_log.h"
@@ -98,10 +99,61 @@ void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, cons
                      Fixed(1e3 * s->warp.data[1], 3) + " mm");
 }
 
+// --knots auto (options.h): each count of kKnotLadder solved on every
+// inlier corner from the solved curve (ForField over the same field, no
+// outlier rejection, to kRankingTolerance) and cross-validated, until two
+// counts in a row do no better than the best; then the count
+// ChooseWithinNoise keeps solved as any count is (SolveAll).
+void ChooseKnots(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+  const CameraBlock solved = s->problem.cameras[0];
+  const double r_max = FieldEnd(solved);
+  const std::vector<Pose> poses = s->poses;
+  std::vector<CameraBlock> solves;
+  std::vector<std::vector<double>> folds;
+  std::vector<CrossValidation> cvs;
+  size_t best = 0;
+  for (int knots : kKnotLadder) {
+    CalibrationOptions o = options;
+    o.knots = knots;
+    s->poses = poses;
+    const std::string trial = what + " with " + std::to_string(knots) + " knots";
+    s->problem = MaskedProblem(ForField(solved, o, r_max), s, &s->inliers, 1);
+    SolveSettings settings = StageSettings(options, trial, options.max_iterations);
+    settings.tolerance = kRankingTolerance;
+    Solve(s->problem, settings);
+    const CrossValidation cv = CrossValidate(s->problem, options.cv_folds, options.max_iterations);
+    if (cv.folds == 0) throw CalibrationError(what + ": too few views to cross-validate the knots");
+    s->knot_curve.push_back(
+        {knots, Rms(Residuals(s->problem, 0)), cv.rms_px[0], cv.fold_rms_px[0]});
+    Say(options, trial + ": rms " + Fixed(s->knot_curve.back().rms_px) + " px, held-out " +
+                     Fixed(cv.rms_px[0]) + " px");
+    solves.push_back(s->problem.cameras[0]);
+    folds.push_back(cv.fold_rms_px[0]);
+    cvs.push_back(cv);
+    if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;
+    if (solves.size() >= best + 3) break;
+  }
+  const int chosen = ChooseWithinNoise(folds);
+  s->poses = poses;
+  SolveAll(solves[chosen], options, what, s);
+  s->heldout = cvs[chosen];
+  Say(options, what + ": " + std::to_string(s->knot_curve[chosen].knots) +
+                   " knots chosen (the fewest within the fold-to-fold noise of the best held-out "
+                   "RMS, " + Fixed(s->knot_curve[best].heldout_rms_px) + " px at " +
+                   std::to_string(s->knot_curve[best].knots) + ")");
+}
+
 }  // namespace
 
-void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               MonoState* s) {
+void SolveMono(const CameraData& data, const BoardExtent& board,
+               const CalibrationOptions& requested, MonoState* s) {
+  // --knots auto: the continuation runs on the ladder's first count.
+  CalibrationOptions options = requested;
+  const bool auto_knots = options.knots == kAutoKnots;
+  if (auto_knots) {
+    options.knots = kContinuationKnots;
+    options.covariance = false;  // the chosen count's, at the end
+  }
   s->prepared = Prepare(data, options);
   s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
@@ -189,6 +241,17 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
+  if (auto_knots && IsSpline(s->problem.cameras[0])) {
+    ChooseKnots(requested, what, s);
+  } else if (auto_knots && requested.covariance) {
+    EstimateStddev(s->problem, StageSettings(requested, what, requested.max_iterations),
+                   &s->outcome);
+  }
+}
+
+CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options) {
+  return state.heldout.folds ? state.heldout
+                             : CrossValidate(state.problem, options.cv_folds, options.max_iterations);
 }
 
 }  // namespace ws::calib

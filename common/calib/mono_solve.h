@@ -10,11 +10,15 @@
 // pose is refitted alone with the camera as it stands (pose_fit.h). For a
 // B-spline the knots span [0, r_max], r_max the image's corner radius under
 // the camera (times a margin), placed again once the distortion is known.
+// With --knots auto the number of coefficients is then chosen by
+// cross-validation (options.h, kAutoKnots).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "calib/calibrate.h"
+#include "calib/heldout.h"
 #include "calib/initialise.h"
 #include "calib/options.h"
 #include "calib/problem.h"
@@ -31,6 +35,8 @@ struct MonoState {
   Problem problem;          // the last solve: the camera and its usable views
   SolveOutcome outcome;
   std::string init_method;  // PinholeInit::method
+  std::vector<KnotTrial> knot_curve;  // --knots auto: every count tried
+  CrossValidation heldout;            // of the last solve, when --knots auto ran it
 };
 
 // Calibrates the camera of `data` into *state; `board` is the extent of the
@@ -38,5 +44,9 @@ struct MonoState {
 // options.board_warp. Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
                MonoState* state);
+
+// The cross-validation of the state's last solve: the one --knots auto made,
+// else made now (options.cv_folds).
+CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options);
 
 }  // namespace ws::calib

@@ -15,24 +15,34 @@ enum class StereoFlow {
 
 enum class RobustLoss { kNone, kHuber, kCauchy };
 
-// The default number of estimated B-spline coefficients (--knots). With 13
-// distinct knots (12 uniform spans over [0, r_max]) the least-squares spline
-// follows the shipped Theia-like mustache curve within 0.004 px over the
-// whole 1280 x 960 image (11 knots: 0.012 px, 9 knots: 0.03 px). That model
-// error is small against 0.1 px of corner noise but not harmless: on the
-// synthetic rig of the tests 11 knots bias fx by about 2 standard deviations,
-// 13 knots by well under one. More knots only add variance where the corners
-// are few (the periphery), and the smoothness prior keeps spans without
-// corners tame.
-inline constexpr int kDefaultKnots = 13;
+// --knots auto (CalibrationOptions::knots = kAutoKnots, the default): the
+// number of estimated B-spline coefficients is chosen per camera from the
+// data, by K-fold cross-validation (heldout.h): the counts of kKnotLadder are
+// tried in turn, each solved from the last solution's curve, until two in a
+// row are no better than the best so far; the least of them whose held-out
+// RMS is within the fold-to-fold noise of the best is kept
+// (ChooseWithinNoise). A lens with a sharp knee needs more coefficients than
+// a gentle one; the held-out error, not the fitted one, shows where more
+// stop paying (they only add variance where corners are few).
+inline constexpr int kAutoKnots = 0;
+// The counts tried, about 25 % apart, each from the curve of one solve with
+// kContinuationKnots: the radial continuation (mono_solve.h) needs a curve
+// that can follow the lens while its discs grow, or a knee it cannot follow
+// pulls fx and the poses into a false minimum no later count leaves (13
+// coefficients do so on config/sim/sharp-knee.yaml); the smoothness prior
+// holds the spans no corner reaches yet. It is only the start: the data
+// choose after it.
+inline constexpr int kKnotLadder[] = {7, 9, 11, 13, 16, 20, 25, 31, 39, 48, 60};
+inline constexpr int kContinuationKnots = 25;
 // The default smoothness prior weight lambda (smoothness_prior.h).
 inline constexpr double kDefaultSmoothness = 0.01;
 
 struct CalibrationOptions {
   std::string model = "bspline";  // a registered kind: bspline, poly6, poly12
   // Distinct B-spline knots on [0, r_max]: knots - 1 uniform spans, knots + 2
-  // basis functions of which `knots` are estimated (alpha_0 = alpha_1 = 0).
-  int knots = kDefaultKnots;
+  // basis functions of which `knots` are estimated (alpha_0 = alpha_1 = 0);
+  // kAutoKnots: chosen by cross-validation (above).
+  int knots = kAutoKnots;
   int degree = 3;
   // Smoothness prior weight lambda (smoothness_prior.h); 0 switches it off.
   double smoothness = kDefaultSmoothness;
@@ -58,6 +68,10 @@ struct CalibrationOptions {
   // Estimate the board's deflection (board_warp.h) with each camera's final
   // solve and the joint solve; otherwise the board is flat.
   bool board_warp = false;
+  // Folds of the cross-validation (heldout.h) after every solve and for
+  // --knots auto; 0 switches the held-out RMS off (auto then needs it: at
+  // least 2).
+  int cv_folds = 5;
   int max_iterations = 100;
   int grid_rows = 6, grid_cols = 8;  // the residual pattern per image region
   // Receives one line per stage (initialisation, each solve, r_max), for
@@ -68,5 +82,9 @@ struct CalibrationOptions {
 // Throws CalibrationError for options no calibration can use (unknown model,
 // knots out of range, min_views below 3).
 void CheckOptions(const CalibrationOptions& options);
+
+// "auto" (kAutoKnots) or a count from 2 to 64 (--knots, knots=N); throws
+// std::invalid_argument otherwise.
+int ParseKnots(const std::string& value);
 
 }  // namespace ws::calib

@@ -223,9 +223,9 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
   }
   options.num_threads = 1;  // the same input gives the same output
   options.max_num_iterations = settings.max_iterations;
-  options.function_tolerance = 1e-12;
-  options.gradient_tolerance = 1e-14;
-  options.parameter_tolerance = 1e-12;
+  options.function_tolerance = settings.tolerance;
+  options.gradient_tolerance = 1e-2 * settings.tolerance;
+  options.parameter_tolerance = settings.tolerance;
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &built.ceres, &summary);

@@ -46,7 +46,12 @@ struct SolveSettings {
   int max_iterations = 100;
   RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale_px = 1.0;
+  // Ceres's function and parameter tolerance (relative); a solve that only
+  // has to rank or cross-validate (heldout.h, --knots auto) stops at
+  // kRankingTolerance: 4 digits of an RMS need no more.
+  double tolerance = 1e-12;
 };
+inline constexpr double kRankingTolerance = 1e-7;
 
 struct SolveOutcome {
   std::string message;  // Ceres's brief report

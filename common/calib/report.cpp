@@ -31,6 +31,7 @@ Json CameraReport(const CameraCalibration& c) {
   Json j;
   j["name"] = c.name;
   j["rms_px"] = c.rms_px;
+  j["heldout_rms_px"] = c.heldout_rms_px < 0 ? Json() : Json(c.heldout_rms_px);
   j["views"] = c.views;
   j["points"] = c.points;
   j["outliers"] = c.outliers;
@@ -79,6 +80,14 @@ Json CameraReport(const CameraCalibration& c) {
   grid["mean_y"] = Numbers(my);
   grid["rms"] = Numbers(g.rms);
   j["residual_grid"] = grid;
+  j["heldout_fold_rms_px"] = Numbers(c.heldout_fold_rms_px);
+  Json curve = Json::array();
+  for (const KnotTrial& t : c.knot_curve)
+    curve.push_back({{"knots", t.knots},
+                     {"rms_px", t.rms_px},
+                     {"heldout_rms_px", t.heldout_rms_px},
+                     {"fold_rms_px", Numbers(t.fold_rms_px)}});
+  j["knot_curve"] = curve;
   return j;
 }
 
@@ -123,12 +132,17 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
   for (const auto& failure : calibrations.failed)
     j["models"].push_back({{"model", failure.model}, {"error", failure.error}});
   Json table = Json::array();
-  for (const auto& row : TableRows(calibrations.solved))
+  for (const auto& row : TableRows(calibrations.solved, calibrations.chosen))
     table.push_back({{"model", row.model},
                      {"left_rms_px", row.left_rms},
                      {"right_rms_px", row.right_rms},
-                     {"stereo_rms_px", row.stereo_rms}});
+                     {"stereo_rms_px", row.stereo_rms},
+                     {"left_heldout_rms_px", row.left_heldout},
+                     {"right_heldout_rms_px", row.right_heldout},
+                     {"coeffs", row.coeffs},
+                     {"chosen", row.chosen}});
   j["table_ii"] = table;
+  j["chosen"] = calibrations.solved.empty() ? Json() : Json(Chosen(calibrations).model);
   j["solve_seconds"] = seconds;
   return j;
 }

@@ -15,9 +15,15 @@
 // count, mean_x, mean_y, rms per cell, row-major); "stereo" has "views",
 // "view_rms" and "stddev" (rx ry rz angle-axis radians, tx ty tz metres),
 // and the top level "flow" ("joint" or "paper").
+// Each camera also has "heldout_rms_px" (the K-fold cross-validated RMS,
+// heldout.h; null when not computed) beside "rms_px",
+// "heldout_fold_rms_px" (per fold) and "knot_curve" (--knots auto: per
+// count tried {"knots", "rms_px", "heldout_rms_px", "fold_rms_px"}; empty
+// otherwise).
 // With several models: {"models": [one object as above per model],
-// "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px"}],
-// "solve_seconds": total}.
+// "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px",
+// "left_heldout_rms_px", "right_heldout_rms_px", "coeffs", "chosen"}],
+// "chosen": the model published, "solve_seconds": total}.
 // Every number is written so that it reads back bit-identical; only
 // "solve_seconds" differs between runs on the same input.
 #pragma once

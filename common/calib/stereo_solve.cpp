@@ -158,6 +158,20 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     Say(options, "joint solve left out: sharing the board poses worsens the cameras' fit beyond "
                  "chance (pairs not exposed together?); each camera from its own views");
   }
+  // Held-out RMS: of the joint solve where it is kept, else of each
+  // camera's own solve (R, T then play no part in it).
+  const bool joint_kept = out.flow == StereoFlow::kJoint;
+  const CrossValidation joint_cv =
+      joint_kept ? CrossValidate(problem, options.cv_folds, options.max_iterations)
+                 : CrossValidation{};
+  for (int c = 0; c < 2; ++c) {
+    CameraCalibration& camera = c == 0 ? out.left : out.right;
+    camera.knot_curve = mono[c].knot_curve;
+    if (joint_kept)
+      SetHeldOut(joint_cv, c, &camera);
+    else
+      SetHeldOut(HeldOut(mono[c], options), 0, &camera);
+  }
   Say(options, "stereo extrinsics from " + std::to_string(out.views) + " views: baseline " +
                    Fixed(problem.extrinsic.t().norm(), 5) + " m");
   out.R = problem.extrinsic.R();

@@ -4,10 +4,22 @@
 
 namespace ws::calib {
 
-std::vector<TableRow> TableRows(const std::vector<StereoCalibration>& calibrations) {
+namespace {
+
+int Coeffs(const CameraCalibration& camera) { return int(camera.param_names.size()) - 6; }
+
+}  // namespace
+
+std::vector<TableRow> TableRows(const std::vector<StereoCalibration>& calibrations, int chosen) {
   std::vector<TableRow> rows;
-  for (const auto& c : calibrations)
-    rows.push_back({c.model, c.left.rms_px, c.mono ? -1 : c.right.rms_px, c.mono ? -1 : c.rms_px});
+  for (size_t i = 0; i < calibrations.size(); ++i) {
+    const StereoCalibration& c = calibrations[i];
+    rows.push_back({c.model, c.left.rms_px, c.mono ? -1 : c.right.rms_px, c.mono ? -1 : c.rms_px,
+                    c.left.heldout_rms_px, c.mono ? -1 : c.right.heldout_rms_px,
+                    std::to_string(Coeffs(c.left)) +
+                        (c.mono ? "" : "/" + std::to_string(Coeffs(c.right))),
+                    int(i) == chosen});
+  }
   return rows;
 }
 
@@ -22,12 +34,15 @@ std::string FormatTableII(const std::vector<TableRow>& rows, const std::string& 
   };
   std::string out = title + "\n";
   char head[96];
-  std::snprintf(head, sizeof head, "%-22s%10s%10s%10s\n", "model", "left", "right", "stereo");
+  std::snprintf(head, sizeof head, "%-22s%10s%10s%10s%10s%10s%9s\n", "model", "left", "right",
+                "stereo", "left CV", "right CV", "coeffs");
   out += head;
   for (const auto& r : rows) {
-    char name[32];
-    std::snprintf(name, sizeof name, "%-22s", r.model.c_str());
-    out += name + cell(r.left_rms) + cell(r.right_rms) + cell(r.stereo_rms) + "\n";
+    char name[40], coeffs[16];
+    std::snprintf(name, sizeof name, "%-22s", (r.model + (r.chosen ? " *" : "")).c_str());
+    std::snprintf(coeffs, sizeof coeffs, "%9s", r.coeffs.c_str());
+    out += name + cell(r.left_rms) + cell(r.right_rms) + cell(r.stereo_rms) +
+           cell(r.left_heldout) + cell(r.right_heldout) + coeffs + "\n";
   }
   return out;
 }

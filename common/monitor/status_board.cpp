@@ -77,10 +77,11 @@ std::string StatusBoard::Render() const {
   if (calibration_) {
     const auto& c = *calibration_;
     out << Format("\ncalibration: %s  views left %d right %d stereo %d  coverage left %d%% "
-                  "right %d%%  rms %s\n",
+                  "right %d%%  rms %s  held-out %s\n",
                   c.state.c_str(), c.views_left, c.views_right, c.views_stereo,
                   CoveragePercent(c.coverage_left), CoveragePercent(c.coverage_right),
-                  c.rms < 0 ? "-" : Format("%.3f px", c.rms).c_str());
+                  c.rms < 0 ? "-" : Format("%.3f px", c.rms).c_str(),
+                  c.heldout_rms < 0 ? "-" : Format("%.3f px", c.heldout_rms).c_str());
     if (!c.hint.empty()) out << "hint: " << c.hint << "\n";
   }
   if (health_) {

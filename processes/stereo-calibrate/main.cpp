@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
                      "log), STEREO_CALIBRATION; writes the calibration file and report.");
   ws::calib::NodeOptions node;
   ws::calib::CalibrationOptions& calib = node.calibration;
-  std::string model = "bspline", flow = "joint", loss = "none", state;
+  std::string model = "bspline", flow = "joint", loss = "none", state, knots = "auto";
   auto& app = cli.app();
   std::vector<std::string> models = ws::ModelKinds();
   models.push_back("all");
@@ -26,8 +26,14 @@ int main(int argc, char** argv) {
                  "fisheye lenses beyond 180 degrees) or all (Table II; the first solved is published)")
       ->check(CLI::IsMember(models))
       ->capture_default_str();
-  app.add_option("--knots", calib.knots, "Estimated B-spline coefficients (distinct knots)")
-      ->check(CLI::Range(2, 64))
+  app.add_option("--knots", knots,
+                 "Estimated B-spline coefficients (distinct knots), 2 to 64, or auto: per camera "
+                 "the fewest whose cross-validated RMS is within the fold-to-fold noise of the "
+                 "best")
+      ->capture_default_str();
+  app.add_option("--cv-folds", calib.cv_folds,
+                 "Folds of the cross-validation (held-out RMS, --knots auto); 0: none")
+      ->check(CLI::Range(0, 100))
       ->capture_default_str();
   app.add_option("--smoothness", calib.smoothness,
                  "B-spline smoothness prior weight lambda (0: off)")
@@ -68,7 +74,8 @@ int main(int argc, char** argv) {
   app.add_option("--report", node.report_json,
                  "Report to write (JSON); a 'save report=NAME' command writes only NAME in its folder");
   app.add_option("--plot-dir", node.plot_dir,
-                 "Folder for distortion_curves.png and residual_map.png (needs gnuplot)");
+                 "Folder for distortion_curves.png, residual_map.png and, with --knots auto, "
+                 "knot_curve.png (needs gnuplot)");
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
                  "NAME-<UTC time>.lcmlog, 'restore' brings the newest back); 'none' for none. Default: "
@@ -78,6 +85,7 @@ int main(int argc, char** argv) {
   try {
     node.models = ws::calib::ParseModelList(model);
     calib.model = node.models.front();
+    calib.knots = ws::calib::ParseKnots(knots);
     calib.flow = flow == "paper" ? ws::calib::StereoFlow::kPaper : ws::calib::StereoFlow::kJoint;
     calib.robust_loss = loss == "huber"    ? ws::calib::RobustLoss::kHuber
                         : loss == "cauchy" ? ws::calib::RobustLoss::kCauchy

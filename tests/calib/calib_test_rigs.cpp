@@ -63,6 +63,34 @@ struct TurnedProjection {
   }
 };
 
+// The largest distance between the truth's pixels and the estimate's of the
+// same rays, with and without the rotation that fits best.
+ProjectionError TurnedError(const std::vector<TurnedProjection>& points) {
+  // The rotation that brings the estimate's ray bundle closest to the truth's.
+  double q[3] = {0, 0, 0};
+  ceres::Problem problem;
+  for (const TurnedProjection& point : points)
+    problem.AddResidualBlock(
+        new ceres::NumericDiffCostFunction<TurnedProjection, ceres::CENTRAL, 2, 3>(
+            new TurnedProjection(point)),
+        nullptr, q);
+  ceres::Solver::Options options;
+  options.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  ProjectionError error;
+  const double zero[3] = {0, 0, 0};
+  for (const TurnedProjection& point : points) {
+    double turned[2], direct[2];
+    error.turned_px =
+        std::max(error.turned_px, point(q, turned) ? std::hypot(turned[0], turned[1]) : INFINITY);
+    error.direct_px = std::max(error.direct_px,
+                               point(zero, direct) ? std::hypot(direct[0], direct[1]) : INFINITY);
+  }
+  error.rotation_rad = Eigen::Vector3d(q[0], q[1], q[2]).norm();
+  return error;
+}
+
 }  // namespace
 
 ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& estimate,
@@ -99,29 +127,16 @@ ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& 
             points.push_back({&e, *ray, pixel});
         }
     }
-  // The rotation that brings the estimate's ray bundle closest to the truth's.
-  double q[3] = {0, 0, 0};
-  ceres::Problem problem;
-  for (const TurnedProjection& point : points)
-    problem.AddResidualBlock(
-        new ceres::NumericDiffCostFunction<TurnedProjection, ceres::CENTRAL, 2, 3>(
-            new TurnedProjection(point)),
-        nullptr, q);
-  ceres::Solver::Options options;
-  options.num_threads = 1;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  ProjectionError error;
-  const double zero[3] = {0, 0, 0};
-  for (const TurnedProjection& point : points) {
-    double turned[2], direct[2];
-    error.turned_px =
-        std::max(error.turned_px, point(q, turned) ? std::hypot(turned[0], turned[1]) : INFINITY);
-    error.direct_px = std::max(error.direct_px,
-                               point(zero, direct) ? std::hypot(direct[0], direct[1]) : INFINITY);
-  }
-  error.rotation_rad = Eigen::Vector3d(q[0], q[1], q[2]).norm();
-  return error;
+  return TurnedError(points);
+}
+
+ProjectionError CornerRayError(const CameraModel& truth, const CameraModel& estimate,
+                               const std::vector<Eigen::Vector2d>& true_pixels) {
+  const Camera t(truth), e(estimate);
+  std::vector<TurnedProjection> points;
+  for (const Eigen::Vector2d& pixel : true_pixels)
+    if (const auto ray = t.Unproject(pixel)) points.push_back({&e, *ray, pixel});
+  return TurnedError(points);
 }
 
 void ExpectCamerasMatchTruth(const SyntheticRigOptions& truth, const SyntheticRig& rig,

@@ -44,6 +44,11 @@ struct ProjectionError {
 ProjectionError MaxProjectionError(const CameraModel& truth, const CameraModel& estimate,
                                    const CameraData& observed);
 
+// The same at the truth's rays of the given pixels (e.g. every true corner
+// of a rendered rig, issue #14): where the data are, not between them.
+ProjectionError CornerRayError(const CameraModel& truth, const CameraModel& estimate,
+                               const std::vector<Eigen::Vector2d>& true_pixels);
+
 // Expects each camera of the calibration of `rig` at its noise floor (RMS
 // within 10 % of TruthRms), within 0.1 px of the truth's projection over the
 // observed field (MaxProjectionError) and with fx fy cx cy p1 p2 within 3

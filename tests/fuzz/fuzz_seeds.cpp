@@ -203,6 +203,7 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   calibration.grid_cols = 4;
   calibration.coverage_left = calibration.coverage_right = {{1, 2, 3, 4}, {0, 0, 9, 1}, {5, 5, 0, 0}};
   calibration.rms = 0.3;
+  calibration.heldout_rms = 0.35;
   calibration.hint = "move the board to the top left";
   seeds.Message("collecting", calibration);
   calibration_health_t health{};

@@ -1,0 +1,57 @@
+// Cross-validation (issue #14, calib/heldout.h): a held-out RMS tells a
+// model that follows the lens from one that follows the noise of the views
+// it saw.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "calib/calibrate.h"
+#include "calib/heldout.h"
+#include "calib_test_rigs.h"
+
+namespace {
+
+using namespace ws::calib;
+using namespace ws::calib::test;
+
+TEST(CrossValidation, AnOverfittingSplineShowsItAndTheChosenOneDoesNot) {
+  SyntheticRigOptions truth = MustacheRig();
+  truth.views = 12;  // few views
+  const SyntheticRig rig = MakeSyntheticRig(truth);
+  CalibrationOptions overfit;
+  overfit.knots = 31;  // many coefficients, no prior to tame them
+  overfit.smoothness = 0;
+  overfit.covariance = false;
+  const CameraCalibration wild = CalibrateCamera(rig.data.left, overfit);
+  CalibrationOptions automatic;
+  automatic.covariance = false;
+  const CameraCalibration chosen = CalibrateCamera(rig.data.left, automatic);
+  for (const CameraCalibration* c : {&wild, &chosen})
+    std::printf("%zu coefficients: rms %.4f px, held-out %.4f px over %zu folds\n",
+                c->param_names.size() - 6, c->rms_px, c->heldout_rms_px,
+                c->heldout_fold_rms_px.size());
+  ASSERT_EQ(wild.heldout_fold_rms_px.size(), 5u);
+  EXPECT_GT(wild.heldout_rms_px, 1.5 * wild.rms_px);
+  EXPECT_LE(chosen.heldout_rms_px, 1.15 * chosen.rms_px);
+  EXPECT_LT(chosen.heldout_rms_px, wild.heldout_rms_px);
+  EXPECT_FALSE(chosen.knot_curve.empty());
+}
+
+TEST(CrossValidation, ChoosesTheFewestWithinTheFoldNoise) {
+  // Per fold: a clearly worse first candidate, a second within the noise
+  // of the best third, a fourth worse again.
+  const std::vector<std::vector<double>> folds = {
+      {0.20, 0.22, 0.21, 0.19, 0.20},
+      {0.101, 0.099, 0.102, 0.100, 0.098},
+      {0.100, 0.100, 0.100, 0.100, 0.100},
+      {0.105, 0.104, 0.106, 0.105, 0.104}};
+  EXPECT_EQ(ChooseWithinNoise(folds), 1);
+  // A second candidate consistently 2 % worse than the best is not within
+  // the noise: every fold says so.
+  const std::vector<std::vector<double>> consistent = {
+      {0.102, 0.1122, 0.0918, 0.102, 0.1071}, {0.100, 0.110, 0.090, 0.100, 0.105}};
+  EXPECT_EQ(ChooseWithinNoise(consistent), 1);
+  EXPECT_EQ(ChooseWithinNoise({}), -1);
+}
+
+}  // namespace
