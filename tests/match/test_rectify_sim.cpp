@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -102,6 +103,41 @@ RowErrors RowsOfTrueCorners(const ws::SimTruth& truth, const ws::StereoRig& rig,
   return rows;
 }
 
+// The corners the detector finds in every rendered board frame that both
+// cameras see whole, each pair rectified (left, right); *frames: how many
+// such frames, *boards: in how many both boards were found.
+std::vector<std::pair<cv::Point2d, cv::Point2d>> DetectedCornerPairs(
+    const ws::Simulator& simulator, const ws::SimTruth& truth, const ws::StereoRig& rig,
+    const ws::Rectification& rect, int* frames, int* boards) {
+  const auto detector = ws::MakeCornerDetector(simulator.config().board->board);
+  std::vector<int> whole;
+  for (const ws::SimFrameTruth& frame : truth.frames)
+    if (frame.kind == "board" && frame.left.view == ws::BoardView::full &&
+        frame.right.view == ws::BoardView::full)
+      whole.push_back(frame.index);
+  *frames = int(whole.size());
+  *boards = 0;
+  std::vector<std::pair<cv::Point2d, cv::Point2d>> pairs;
+  std::mutex mutex;
+  cv::parallel_for_(cv::Range(0, int(whole.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      const auto [left, right] = simulator.Render(whole[size_t(i)]);
+      const ws::BoardCorners l = detector->Detect(left), r = detector->Detect(right);
+      std::lock_guard<std::mutex> lock(mutex);
+      *boards += !l.empty() && !r.empty();
+      for (size_t a = 0; a < l.ids.size(); ++a)
+        for (size_t b = 0; b < r.ids.size(); ++b) {
+          if (l.ids[a] != r.ids[b]) continue;
+          cv::Point2d lr, rr;
+          EXPECT_TRUE(ws::RectifyPoint(rect, rig, true, l.points[a], &lr));
+          EXPECT_TRUE(ws::RectifyPoint(rect, rig, false, r.points[b], &rr));
+          pairs.emplace_back(lr, rr);
+        }
+    }
+  });
+  return pairs;
+}
+
 class RectificationQuality : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -142,35 +178,13 @@ TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
 TEST_F(RectificationQuality, DetectedCornersShareARowAcrossTheWholeField) {
   const ws::StereoRig rig = RigFromTruth(*truth_);
   const ws::Rectification rect = ws::BuildRectification(rig);
-  const auto detector = ws::MakeCornerDetector(simulator_->config().board->board);
-  std::vector<int> frames;
-  for (const ws::SimFrameTruth& frame : truth_->frames)
-    if (frame.kind == "board" && frame.left.view == ws::BoardView::full &&
-        frame.right.view == ws::BoardView::full)
-      frames.push_back(frame.index);
-  ASSERT_GE(frames.size(), 15u);
-
+  int frames = 0, boards = 0;
+  const auto pairs = DetectedCornerPairs(*simulator_, *truth_, rig, rect, &frames, &boards);
+  ASSERT_GE(frames, 15);
   RowErrors rows(rect.size);
-  std::mutex mutex;
-  int boards = 0;
-  cv::parallel_for_(cv::Range(0, int(frames.size())), [&](const cv::Range& range) {
-    for (int i = range.start; i < range.end; ++i) {
-      const auto [left, right] = simulator_->Render(frames[size_t(i)]);
-      const ws::BoardCorners l = detector->Detect(left), r = detector->Detect(right);
-      std::lock_guard<std::mutex> lock(mutex);
-      boards += !l.empty() && !r.empty();
-      for (size_t a = 0; a < l.ids.size(); ++a)
-        for (size_t b = 0; b < r.ids.size(); ++b) {
-          if (l.ids[a] != r.ids[b]) continue;
-          cv::Point2d lr, rr;
-          ASSERT_TRUE(ws::RectifyPoint(rect, rig, true, l.points[a], &lr));
-          ASSERT_TRUE(ws::RectifyPoint(rect, rig, false, r.points[b], &rr));
-          rows.Add(lr, rr);
-        }
-    }
-  });
+  for (const auto& [l, r] : pairs) rows.Add(l, r);
   rows.Print("detected corners, bspline");
-  EXPECT_EQ(boards, int(frames.size()));
+  EXPECT_EQ(boards, frames);
   EXPECT_EQ(rows.empty_regions(), 0);
   // Each corner is found within 0.043 px RMS (stereo-detect's measured
   // accuracy), so a row difference scatters by about 0.06 px RMS: no part of
@@ -260,35 +274,18 @@ TEST(LatLonRectification, DetectedCornersShareARow) {
   const ws::SimTruth truth = simulator.Truth();
   const ws::StereoRig rig = RigFromTruth(truth);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
-  const auto detector = ws::MakeCornerDetector(simulator.config().board->board);
-  std::vector<int> frames;
-  for (const ws::SimFrameTruth& frame : truth.frames)
-    if (frame.kind == "board" && frame.left.view == ws::BoardView::full &&
-        frame.right.view == ws::BoardView::full)
-      frames.push_back(frame.index);
-  ASSERT_GE(frames.size(), 8u);
+  int frames = 0, boards = 0;
+  const auto pairs = DetectedCornerPairs(simulator, truth, rig, rect, &frames, &boards);
+  ASSERT_GE(frames, 8);
   // Near the epipoles (psi -> +-90 degrees) every epipolar plane meets: a
   // row there spans an angle cos(psi) times a row at the centre, and a
   // corner's detection error grows in rows by 1 / cos(psi).
   RowErrors rows(rect.size), central(rect.size);
-  std::mutex mutex;
-  cv::parallel_for_(cv::Range(0, int(frames.size())), [&](const cv::Range& range) {
-    for (int i = range.start; i < range.end; ++i) {
-      const auto [left, right] = simulator.Render(frames[size_t(i)]);
-      const ws::BoardCorners l = detector->Detect(left), r = detector->Detect(right);
-      std::lock_guard<std::mutex> lock(mutex);
-      for (size_t a = 0; a < l.ids.size(); ++a)
-        for (size_t b = 0; b < r.ids.size(); ++b) {
-          if (l.ids[a] != r.ids[b]) continue;
-          cv::Point2d lr, rr;
-          ASSERT_TRUE(ws::RectifyPoint(rect, rig, true, l.points[a], &lr));
-          ASSERT_TRUE(ws::RectifyPoint(rect, rig, false, r.points[b], &rr));
-          rows.Add(lr, rr);
-          const double psi = std::max(std::abs(lr.x - rect.cx), std::abs(rr.x - rect.cx)) / rect.f;
-          if (psi <= M_PI / 3) central.Add(lr, rr);
-        }
-    }
-  });
+  for (const auto& [l, r] : pairs) {
+    rows.Add(l, r);
+    if (std::max(std::abs(l.x - rect.cx), std::abs(r.x - rect.cx)) / rect.f <= M_PI / 3)
+      central.Add(l, r);
+  }
   rows.Print("detected corners, fisheye rig, lat-lon");
   central.Print("detected corners within 60 degrees of the baseline's normal");
   EXPECT_GT(central.count(), 200);
