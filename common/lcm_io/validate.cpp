@@ -131,6 +131,12 @@ void Validate(const widestereo::disparity_t& msg) {
   Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,
           "disparity_t", "disparity must be FLOAT_GRAY32");
   Require(msg.num_disparities > 0, "disparity_t", "num_disparities must be positive");
+  Require(msg.rectification == widestereo::disparity_t::RECTIFICATION_PINHOLE ||
+              msg.rectification == widestereo::disparity_t::RECTIFICATION_LATLON,
+          "disparity_t", "unknown rectification " + std::to_string(msg.rectification));
+  Require(std::isfinite(msg.f) && msg.f > 0 && std::isfinite(msg.cx) && std::isfinite(msg.cy) &&
+              std::isfinite(msg.baseline) && msg.baseline > 0,
+          "disparity_t", "f and baseline must be positive, f, cx, cy, baseline finite");
 }
 
 void Validate(const widestereo::point_cloud_t& msg) {

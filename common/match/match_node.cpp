@@ -1,6 +1,7 @@
 #include "match/match_node.h"
 
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include "lcm_io/channels.h"
@@ -21,6 +22,10 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   cv::Mat right_rect;
   RectifyPair(*rect, left, right, &matched.left_rect, &right_rect);
   matched.disparity = matcher.Compute(matched.left_rect, right_rect);
+  // No disparity where either rectified image holds no image (outside a
+  // lens's field or its input image): the matcher saw the constant border.
+  cv::Mat no_image = rect->valid_left == 0 | rect->valid_right == 0;
+  matched.disparity.setTo(-std::numeric_limits<float>::infinity(), no_image);
   matched.rect = std::move(rect);
   matched.utime = frame.utime;
   matched.frame_id = frame.frame_id;
@@ -38,6 +43,12 @@ MatchResult ToMessages(const MatchedFrame& matched, const MatcherConfig& matcher
   d.min_disparity = float(matcher.min_disparity);
   d.num_disparities = matcher.num_disparities;
   for (int i = 0; i < 16; ++i) d.Q[i] = rect.Q.val[i];
+  d.rectification = rect.mode == RectificationMode::kLatLon ? widestereo::disparity_t::RECTIFICATION_LATLON
+                                                             : widestereo::disparity_t::RECTIFICATION_PINHOLE;
+  d.f = rect.f;
+  d.cx = rect.cx;
+  d.cy = rect.cy;
+  d.baseline = rect.baseline;
   result.cloud = DisparityToCloud(rect, matched.disparity, d.min_disparity, matched.left_rect, sampling);
   result.cloud.utime = matched.utime;
   result.cloud.frame_id = matched.frame_id;
@@ -81,7 +92,8 @@ void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
   auto rect = std::make_shared<const Rectification>(BuildRectification(rig, config_.rectify));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
-                      std::to_string(rect->f) + " px, baseline = " +
+                      std::to_string(rect->f) + " px, " + RectificationModeName(rect->mode) +
+                      " rectification, baseline = " +
                       std::to_string(rect->baseline) + " m, " + rig.left.distortion.kind + " model");
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);

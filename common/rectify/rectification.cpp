@@ -86,6 +86,22 @@ cv::Vec4d CommonBox(const StereoRig& rig, const cv::Matx33d& R_left, const cv::M
 
 }  // namespace
 
+RectificationMode ParseRectificationMode(const std::string& name) {
+  if (name == "pinhole") return RectificationMode::kPinhole;
+  if (name == "latlon") return RectificationMode::kLatLon;
+  if (name == "auto") return RectificationMode::kAuto;
+  throw std::invalid_argument("rectification must be pinhole, latlon or auto, not '" + name + "'");
+}
+
+const char* RectificationModeName(RectificationMode mode) {
+  switch (mode) {
+    case RectificationMode::kPinhole: return "pinhole";
+    case RectificationMode::kLatLon: return "latlon";
+    case RectificationMode::kAuto: break;
+  }
+  return "auto";
+}
+
 Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options) {
   const Camera left(rig.left), right(rig.right);
   Rectification rect;
@@ -93,8 +109,14 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
   if (rect.input_size != cv::Size(rig.right.image_width, rig.right.image_height))
     throw std::invalid_argument("the two cameras of the rig have different image sizes");
   if (!(options.focal_scale > 0)) throw std::invalid_argument("focal_scale must be positive");
-  rect.mode = options.mode;
   BouguetRotations(rig, &rect.R_left, &rect.R_right);
+  rect.mode = options.mode;
+  if (rect.mode == RectificationMode::kAuto) {
+    const cv::Vec4d box = CommonBox(rig, rect.R_left, rect.R_right);
+    const double widest = M_PI * 130 / 180;
+    rect.mode = box[1] - box[0] <= widest && box[3] - box[2] <= widest ? RectificationMode::kPinhole
+                                                                       : RectificationMode::kLatLon;
+  }
   rect.f = options.focal_scale * std::min({rig.left.fx, rig.left.fy, rig.right.fx, rig.right.fy});
   if (rect.mode == RectificationMode::kPinhole) {
     rect.size = options.size.empty() ? rect.input_size : options.size;
@@ -140,14 +162,18 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
   const Camera camera(left ? rig.left : rig.right);
   const auto ray = camera.Unproject(Eigen::Vector2d(pixel.x, pixel.y));
   if (!ray) return false;
-  const cv::Vec3d p = (left ? rect.R_left : rect.R_right) * cv::Vec3d((*ray)[0], (*ray)[1], (*ray)[2]);
+  return RectifiedPixel(rect, (left ? rect.R_left : rect.R_right) * cv::Vec3d((*ray)[0], (*ray)[1], (*ray)[2]),
+                        rectified);
+}
+
+bool RectifiedPixel(const Rectification& rect, const cv::Vec3d& p, cv::Point2d* pixel) {
   if (rect.mode == RectificationMode::kLatLon) {
     const cv::Vec2d a = LatLon(p);
-    *rectified = cv::Point2d(rect.f * a[0] + rect.cx, rect.f * a[1] + rect.cy);
+    *pixel = cv::Point2d(rect.f * a[0] + rect.cx, rect.f * a[1] + rect.cy);
     return true;
   }
   if (!(p[2] > 0)) return false;
-  *rectified = cv::Point2d(rect.f * p[0] / p[2] + rect.cx, rect.f * p[1] / p[2] + rect.cy);
+  *pixel = cv::Point2d(rect.f * p[0] / p[2] + rect.cx, rect.f * p[1] / p[2] + rect.cy);
   return true;
 }
 

@@ -31,13 +31,23 @@
 // converted to OpenCV's fixed-point maps (CV_16SC2 + CV_16UC1) for cv::remap.
 #pragma once
 
+#include <string>
+
 #include <opencv2/core.hpp>
 
 #include "rectify/stereo_rig.h"
 
 namespace ws {
 
-enum class RectificationMode { kPinhole, kLatLon };
+// kAuto: pinhole while the rig's common field (CommonField) is at most 130
+// degrees across both ways (a pinhole at the centre's resolution stretches
+// the edge of a 130-degree field 5.6 times, 1 / cos^2 65 degrees; past that
+// most of its image is stretched periphery), lat-lon beyond.
+enum class RectificationMode { kPinhole, kLatLon, kAuto };
+
+// "pinhole", "latlon", "auto"; throws std::invalid_argument otherwise.
+RectificationMode ParseRectificationMode(const std::string& name);
+const char* RectificationModeName(RectificationMode mode);
 
 struct RectifyOptions {
   double focal_scale = 1.0;
@@ -76,6 +86,9 @@ bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
 // The ray of rectified pixel (u, v) in the rectified frame (the same for
 // both images): K_rect^-1 (u, v, 1) (pinhole) or the lat-lon ray above.
 cv::Vec3d RectifiedRay(const Rectification& rect, double u, double v);
+// Back: the rectified pixel of a direction in the rectified frame; false
+// when it has none (pinhole: behind the image plane).
+bool RectifiedPixel(const Rectification& rect, const cv::Vec3d& direction, cv::Point2d* pixel);
 
 // The ray, in the left (right) camera's frame, that the rectified pixel
 // samples: R_i^T K_rect^-1 (u, v, 1) (pinhole) or R_i^T times the lat-lon

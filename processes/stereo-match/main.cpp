@@ -39,6 +39,12 @@ int main(int argc, char** argv) {
   app.add_option("--speckle-window", m.speckle_window, "Speckle filter window (0: off)")->capture_default_str();
   app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
   ws::AddRectifyOptions(app, config.rectify);
+  std::string rectification = "auto";
+  app.add_option("--rectification", rectification,
+                 "pinhole, latlon (rows are epipolar planes, columns angles: fields to 180 degrees "
+                 "and beyond) or auto (pinhole up to a 130-degree common field, else latlon)")
+      ->check(CLI::IsMember({"pinhole", "latlon", "auto"}))
+      ->capture_default_str();
   app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
   config.cloud.step = 2;  // a full 1280x960 cloud is 13 MB a frame: full only on request
   app.add_option("--cloud-step", config.cloud.step,
@@ -47,6 +53,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   if (auto rc = cli.Parse(argc, argv)) return *rc;
+  config.rectify.mode = ws::ParseRectificationMode(rectification);
 
   try {
     ws::Process process(cli.options());

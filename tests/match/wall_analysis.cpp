@@ -22,15 +22,17 @@ cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const
   cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
     for (int v = rows.start; v < rows.end; ++v)
       for (int u = 0; u < rect.size.width; ++u) {
-        const cv::Vec3d ray((u - rect.cx) / rect.f, (v - rect.cy) / rect.f, 1);
+        const cv::Vec3d ray = RectifiedRay(rect, u, v);
         const double scale = offset / n.dot(ray);
         if (!(scale > 0)) continue;
         const cv::Vec3d X = rect.R_left.t() * (ray * scale);  // left camera frame
         const Eigen::Vector3d Xl(X[0], X[1], X[2]);
         if (!Inside(left.Project(Xl), rig.left)) continue;
         if (!Inside(right.Project(rig.R * Xl + rig.T), rig.right)) continue;
-        const double d = rect.f * rect.baseline / scale;
-        if (u - d < 0) continue;
+        cv::Point2d right_pixel;  // the point seen from the right camera, at (baseline, 0, 0)
+        if (!RectifiedPixel(rect, ray * scale - cv::Vec3d(rect.baseline, 0, 0), &right_pixel)) continue;
+        const double d = u - right_pixel.x;
+        if (u - d < 0 || !(d > 0)) continue;
         disparity.at<float>(v, u) = float(d);
       }
   });
@@ -84,8 +86,9 @@ WallFit MeasureWall(const widestereo::point_cloud_t& cloud, const widestereo::cl
     sum_squares += to_truth * to_truth;
     if (std::abs(fitted.dot(X) + stats.plane_offset) > inlier_distance) continue;
     ++inliers;
-    const int u = int(std::lround(rect.f * X[0] / X[2] + rect.cx));
-    const int v = int(std::lround(rect.f * X[1] / X[2] + rect.cy));
+    cv::Point2d pixel;
+    if (!RectifiedPixel(rect, X, &pixel)) continue;
+    const int u = int(std::lround(pixel.x)), v = int(std::lround(pixel.y));
     if (u >= 0 && v >= 0 && u < rect.size.width && v < rect.size.height) covered.at<uint8_t>(v / cell, u / cell) = 1;
   }
   fit.inlier_fraction = double(inliers) / std::max<size_t>(1, cloud.xyz.size());

@@ -32,7 +32,8 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Stereo
   WriteCalibrationFile(calib, rig);
   std::vector<std::string> argv = {"stereo-match", "--log-dir", dir, "--config", options.match_config,
                                     "--calib", calib, "--num-disparities", num_disparities, "--focal-scale",
-                                    std::to_string(options.focal_scale), "--in-url",
+                                    std::to_string(options.focal_scale), "--rectification",
+                                    RectificationModeName(options.mode), "--in-url",
                                     "file://" + dir + "/images.lcmlog?speed=0", "--out-url",
                                     "file://" + match + "?mode=w"};
   argv.insert(argv.end(), options.match_args.begin(), options.match_args.end());
@@ -47,7 +48,7 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Stereo
   // cloud is in only differs by the calibration's own rectifying rotation,
   // which is the same here: both calibrations share R and T).
   const StereoRig true_rig = RigFromTruth(truth);
-  const Rectification rect = BuildRectification(true_rig, RectifyOptions{options.focal_scale, {}});
+  const Rectification rect = BuildRectification(true_rig, RectifyOptions{options.focal_scale, {}, options.mode});
   const SimFrameTruth& wall = truth.frames.front();
   const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);
   const cv::Vec3d normal = rect.R_left * wall.wall_normal;

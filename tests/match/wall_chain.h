@@ -27,10 +27,12 @@ struct WallChainOptions {
   std::string match_config = "config/stereo-match.yaml";
   std::string cloud_config = "config/stereo-cloud.yaml";
   double focal_scale = 1.0;  // stereo-match's --focal-scale, and the truth's rectification
+  RectificationMode mode = RectificationMode::kAuto;  // --rectification, the same for the truth
 };
 
 // stereo-match --config --calib (the rig written as DIR/NAME.yaml)
-// --num-disparities --focal-scale [match_args] on DIR/images.lcmlog, then
+// --num-disparities --focal-scale --rectification [match_args] on
+// DIR/images.lcmlog, then
 // stereo-cloud --config; every frame's disparity and wall against the truth
 // seen through the true rig's rectification of the same focal scale
 // (printed).
