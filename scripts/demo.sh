@@ -67,7 +67,8 @@ for model in "${MODELS[@]}"; do
   $BIN/stereo-cloud --config config/stereo-cloud.yaml --pcd-dir "$OUT/$model" --save-every 1 \
     --in-url "$(file_url "$OUT/wall-$model.lcmlog")?speed=0" --out-url "$(file_url "$OUT/cloud-$model.lcmlog")?mode=w" \
     --log-dir "$OUT/$model" --quiet
-  printf '    %-8s ' "$model"
+  printf '    %-8s %s rectification; ' "$model" \
+    "$(grep -ho '[a-z]* rectification' "$OUT/$model/stereo-match.log" | tail -n 1 | cut -d' ' -f1)"
   grep -h " plane " "$OUT/$model/stereo-cloud.log" | tail -n 1 | sed -E 's/^[0-9-]+ [0-9:.]+ [a-z]+ //'
 done
 

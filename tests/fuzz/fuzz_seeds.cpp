@@ -119,6 +119,11 @@ void ImageSeeds(Seeds& seeds) {
   disparity.disparity = ws::MatToImage(real * 64, 1);
   disparity.num_disparities = 64;
   for (int i = 0; i < 16; ++i) disparity.Q[i] = i % 5 == 0;
+  disparity.rectification = disparity_t::RECTIFICATION_PINHOLE;
+  disparity.f = 300;
+  disparity.cx = 320;
+  disparity.cy = 240;
+  disparity.baseline = 0.12;
   seeds.Message("disparity", disparity);
 }
 

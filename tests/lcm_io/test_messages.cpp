@@ -112,6 +112,11 @@ TEST(Messages, EveryTypeRoundTrips) {
   disparity.disparity = ws::MatToImage(cv::Mat(3, 4, CV_32FC1, cv::Scalar(1.5f)), 5);
   disparity.num_disparities = 64;
   disparity.Q[15] = 1;
+  disparity.rectification = disparity_t::RECTIFICATION_LATLON;
+  disparity.f = 300;
+  disparity.cx = 1.5;
+  disparity.cy = 1;
+  disparity.baseline = 0.15;
   ExpectRoundTrip(disparity);
 
   point_cloud_t cloud;
