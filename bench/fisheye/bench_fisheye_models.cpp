@@ -12,6 +12,7 @@
 //   bench_fisheye_models --in-url 'file://corners.lcmlog?speed=0' [--knots 21]
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <opencv2/calib3d.hpp>
 
 #include "calib/calibrate.h"
@@ -40,13 +41,13 @@ struct Row {
 Row OpenCvFisheye(const CameraData& data, const CameraModel* camera, double max_theta, int c, Row row) {
   std::vector<std::vector<cv::Point3d>> object;
   std::vector<std::vector<cv::Point2d>> image;
+  const std::optional<Camera> model = camera ? std::optional<Camera>(*camera) : std::nullopt;
   for (const BoardView& view : data.views) {
     if (view.empty()) continue;
     bool inside = true;
-    if (camera) {
-      const Camera model(*camera);
+    if (model) {
       for (const auto& u : view.image) {
-        const auto ray = model.Unproject(u);
+        const auto ray = model->Unproject(u);
         inside = inside && ray && std::atan2(ray->head<2>().norm(), ray->z()) < max_theta;
       }
     }

@@ -24,8 +24,7 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   matched.disparity = matcher.Compute(matched.left_rect, right_rect);
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
-  cv::Mat no_image = rect->valid_left == 0 | rect->valid_right == 0;
-  matched.disparity.setTo(-std::numeric_limits<float>::infinity(), no_image);
+  matched.disparity.setTo(-std::numeric_limits<float>::infinity(), rect->no_image);
   matched.rect = std::move(rect);
   matched.utime = frame.utime;
   matched.frame_id = frame.frame_id;

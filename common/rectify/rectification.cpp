@@ -110,9 +110,12 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
     throw std::invalid_argument("the two cameras of the rig have different image sizes");
   if (!(options.focal_scale > 0)) throw std::invalid_argument("focal_scale must be positive");
   BouguetRotations(rig, &rect.R_left, &rect.R_right);
+  // The common field: auto's choice and lat-lon's image (a pinhole needs none).
+  const cv::Vec4d box = options.mode == RectificationMode::kPinhole
+                            ? cv::Vec4d()
+                            : CommonBox(rig, rect.R_left, rect.R_right);
   rect.mode = options.mode;
   if (rect.mode == RectificationMode::kAuto) {
-    const cv::Vec4d box = CommonBox(rig, rect.R_left, rect.R_right);
     const double widest = M_PI * 130 / 180;
     rect.mode = box[1] - box[0] <= widest && box[3] - box[2] <= widest ? RectificationMode::kPinhole
                                                                        : RectificationMode::kLatLon;
@@ -123,7 +126,6 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
     rect.cx = (rect.size.width - 1) / 2.0;
     rect.cy = (rect.size.height - 1) / 2.0;
   } else {
-    const cv::Vec4d box = CommonBox(rig, rect.R_left, rect.R_right);
     if (!(box[1] > box[0] && box[3] > box[2]))
       throw std::invalid_argument("the two cameras of the rig see no common field");
     rect.size = options.size.empty() ? cv::Size(int(std::ceil((box[1] - box[0]) * rect.f)) + 1,
@@ -133,7 +135,8 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
     rect.cx = (rect.size.width - 1) / 2.0 - rect.f * 0.5 * (box[0] + box[1]);
     rect.cy = (rect.size.height - 1) / 2.0 - rect.f * 0.5 * (box[2] + box[3]);
   }
-  // The right camera's centre in the rectified frame is at (-baseline, 0, 0).
+  // t = R_right T puts the left camera's centre at (-baseline, 0, 0) of the
+  // right rectified frame: the right camera is at (baseline, 0, 0) of the left's.
   const cv::Vec3d t = rect.R_right * cv::Vec3d(rig.T(0), rig.T(1), rig.T(2));
   rect.baseline = -t[0];
   if (!(rect.baseline > 0))
@@ -146,6 +149,7 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
                          0, 0, 1 / rect.baseline, 0);
   BuildMaps(left, rect.R_left, rect, rect.map_left, &rect.valid_left);
   BuildMaps(right, rect.R_right, rect, rect.map_right, &rect.valid_right);
+  rect.no_image = (rect.valid_left == 0) | (rect.valid_right == 0);
   return rect;
 }
 

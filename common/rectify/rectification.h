@@ -68,6 +68,7 @@ struct Rectification {
   // (inside the lens's image), 0 where it does not: there the rectified
   // image holds no data (the remap's constant border), not a neighbour's.
   cv::Mat valid_left, valid_right;
+  cv::Mat no_image;  // 255 where either is 0: no disparity there
 };
 
 // Throws std::invalid_argument if the cameras' image sizes differ or the

@@ -70,7 +70,9 @@ TEST(FisheyeWall, BsplineThetaCalibrationGivesTheWallAtTwoMetres) {
     EXPECT_LT(w.tilt_rad, 0.01) << modes[m].name;
     EXPECT_GT(w.coverage, modes[m].min_coverage) << modes[m].name;
     EXPECT_GT(run.disparity[0].density, modes[m].min_coverage) << modes[m].name;
-    if (modes[m].mode == ws::RectificationMode::kAuto) EXPECT_EQ(rect.mode, ws::RectificationMode::kLatLon);
+    if (modes[m].mode == ws::RectificationMode::kAuto) {
+      EXPECT_EQ(rect.mode, ws::RectificationMode::kLatLon);
+    }
   }
 }
 
