@@ -19,10 +19,28 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
   return side == 0 ? s.left : s.right;
 }
 
+// Values on a grid of image points (point (i, j) at ((i + 0.5) step - 0.5))
+// as a heat map, clipped at `max`.
+plot::Heatmap ImageGridHeatmap(int cols, int rows, double step_x, double step_y,
+                               std::vector<double> values, const std::string& label, double max) {
+  plot::Heatmap map;
+  map.cols = cols;
+  map.rows = rows;
+  map.x0 = 0.5 * step_x - 0.5;
+  map.y0 = 0.5 * step_y - 0.5;
+  map.dx = step_x;
+  map.dy = step_y;
+  for (double& v : values) v = std::min(v, max);
+  map.values = std::move(values);
+  map.label = label;
+  map.max = max;
+  return map;
+}
+
 }  // namespace
 
 void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations,
-                              const std::string& png_path) {
+                              const std::string& rig, const std::string& png_path) {
   // One row of panels per radial coordinate: the pinhole models over
   // r = tan(theta), the angle models over theta in degrees.
   std::vector<bool> families;
@@ -32,8 +50,8 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
         families.push_back(angle);
         break;
       }
-  plot::Figure figure("Recovered radial distortion D = r'/r - 1", 2, 1400,
-                      600 * static_cast<int>(families.size()));
+  plot::Figure figure(rig + ": recovered radial distortion D = r'/r - 1 of each model", 2, 1400,
+                      650 * static_cast<int>(families.size()));
   for (bool angle : families)
     for (int side = 0; side < 2; ++side) {
       const std::string name = side == 0 ? "left" : "right";
@@ -43,7 +61,7 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
           angle ? "incidence angle theta [deg]" : "ideal radius r = |(X/Z, Y/Z)| = tan(theta)",
           angle ? "D(theta) [%]" : "D(r) [%]");
       panel.zero_line = true;
-      panel.legend = "bottom left";
+      panel.legend = "outside below";
       // To the end of the B-spline's knots (which the calibration puts at
       // the image's corners), else a fifth past the largest observed radius.
       double r_end = 0, r_seen = 0;
@@ -84,10 +102,10 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
 }
 
 void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
-                         const std::string& png_path) {
+                         const std::string& rig, const std::string& png_path) {
   const int rows = static_cast<int>(calibrations.size());
-  plot::Figure figure("Mean reprojection residual per image cell (arrows scaled)", 2, 1400,
-                      std::max(500, 450 * rows));
+  plot::Figure figure(rig + ": mean reprojection residual per image cell (arrows scaled)", 2,
+                      1400, std::max(500, 450 * rows));
   for (const auto& c : calibrations)
     for (int side = 0; side < (c.mono ? 1 : 2); ++side) {
       const CameraCalibration& cam = Side(c, side);
@@ -98,28 +116,30 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
       const double cell_size = g.cols > 0 ? double(g.image_width) / g.cols : 1.0;
       const double scale = largest > 0 ? 0.45 * cell_size / largest : 1.0;
       plot::Panel& panel = figure.panels.emplace_back(
-          cam.name + ", " + c.model + ": RMS " + Format("%.3f", cam.rms_px) + " px, arrows x" +
-              Format("%.0f", scale) + " (longest " + Format("%.3f", largest) + " px)",
-          "u [px]", "v [px] (down)");
+          cam.name + " camera, " + c.model + ": RMS " + Format("%.3f", cam.rms_px) +
+              " px, arrows x" + Format("%.0f", scale) + " (longest " + Format("%.3f", largest) +
+              " px)",
+          "u [px]", "v [px]");
       panel.legend = "off";
+      panel.image_axes = true;
       std::vector<double> ax, ay, px, py, ex, ey;
       for (int cell = 0; cell < g.rows * g.cols; ++cell) {
         const Eigen::Vector2d centre = g.CellCentre(cell);
         if (!g.count[cell]) {
           ex.push_back(centre.x());
-          ey.push_back(-centre.y());
+          ey.push_back(centre.y());
           continue;
         }
         const Eigen::Vector2d tip = centre + scale * g.mean[cell];
         ax.insert(ax.end(), {centre.x(), tip.x(), NAN});
-        ay.insert(ay.end(), {-centre.y(), -tip.y(), NAN});
+        ay.insert(ay.end(), {centre.y(), tip.y(), NAN});
         px.push_back(centre.x());
-        py.push_back(-centre.y());
+        py.push_back(centre.y());
       }
       // The image outline.
       const double w = g.image_width - 0.5, h = g.image_height - 0.5;
       panel.series.emplace_back("", std::vector<double>{-0.5, w, w, -0.5, -0.5},
-                                std::vector<double>{0.5, 0.5, -h, -h, 0.5}, plot::Style::kLines,
+                                std::vector<double>{-0.5, -0.5, h, h, -0.5}, plot::Style::kLines,
                                 "#c0c0c0");
       if (!ax.empty())
         panel.series.emplace_back("residual", ax, ay, plot::Style::kLines, "#d55e00");
@@ -139,9 +159,10 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
 }
 
 bool WriteKnotCurvePng(const std::vector<StereoCalibration>& calibrations,
-                       const std::string& png_path) {
-  plot::Figure figure("Cross-validated choice of the B-spline's coefficients (--knots auto)", 2,
-                      1400, 650);
+                       const std::string& rig, const std::string& png_path) {
+  plot::Figure figure(
+      rig + ": cross-validated choice of the B-spline's coefficients (--knots auto)", 2, 1400,
+      650);
   bool any = false;
   for (int side = 0; side < 2; ++side) {
     plot::Panel& panel = figure.panels.emplace_back(
@@ -174,6 +195,68 @@ bool WriteKnotCurvePng(const std::vector<StereoCalibration>& calibrations,
   if (!any) return false;
   plot::WritePng(figure, png_path);
   return true;
+}
+
+bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
+                         const std::string& rig, const std::string& png_path) {
+  std::vector<const CameraCalibration*> cameras;
+  std::vector<std::string> models;
+  for (const auto& c : calibrations)
+    for (int side = 0; side < (c.mono ? 1 : 2); ++side)
+      if (!Side(c, side).uncertainty.empty()) {
+        cameras.push_back(&Side(c, side));
+        models.push_back(c.model);
+      }
+  if (cameras.empty()) return false;
+  const int rows = (static_cast<int>(cameras.size()) + 1) / 2;
+  plot::Figure figure(rig + ": projection uncertainty, 1 sigma in the worst direction, of a "
+                            "fixed camera-frame ray",
+                      2, 1400, 560 * rows);
+  for (size_t k = 0; k < cameras.size(); ++k) {
+    const CameraCalibration& camera = *cameras[k];
+    const ProjectionUncertainty& u = camera.uncertainty;
+    plot::Panel& panel = figure.panels.emplace_back(
+        camera.name + " camera, " + models[k] + ": median " + Format("%.4f", u.median_px) +
+            " px, worst " + Format("%.4f", u.worst_px) + " px where corners were seen",
+        "u [px]", "v [px]");
+    panel.image_axes = true;
+    panel.legend = "outside below";
+    // The scale of the observed field (the unobserved corners can be far larger).
+    panel.heatmap = ImageGridHeatmap(u.cols, u.rows, u.step_x, u.step_y, u.sigma_px,
+                                     "1-sigma projection uncertainty [px]", 2 * u.worst_px);
+    std::vector<double> x, y;
+    for (int j = 0; j < u.rows; ++j)
+      for (int i = 0; i < u.cols; ++i)
+        if (u.observed[size_t(j) * u.cols + i]) {
+          x.push_back(u.Pixel(i, j).x());
+          y.push_back(u.Pixel(i, j).y());
+        }
+    plot::Series& seen = panel.series.emplace_back("cells with corners (median and worst over them)",
+                                                   x, y, plot::Style::kPoints, "#009e73");
+    seen.point_size = 0.4;
+  }
+  plot::WritePng(figure, png_path);
+  return true;
+}
+
+void WriteProjectionDiffPng(const std::vector<std::pair<std::string, ProjectionDiff>>& cameras,
+                            const std::string& title, const std::string& png_path) {
+  plot::Figure figure(title, int(std::min<size_t>(2, cameras.size())),
+                      cameras.size() > 1 ? 1400 : 800, 600);
+  for (const auto& [name, d] : cameras) {
+    plot::Panel& panel = figure.panels.emplace_back(
+        name + " camera: RMS " + Format("%.4f", d.rms_px) + " px, median " +
+            Format("%.4f", d.median_px) + " px, max " + Format("%.4f", d.max_px) +
+            " px, after a rotation of " + Format("%.4f", d.rotation_deg) + " deg",
+        "u [px]", "v [px]");
+    panel.image_axes = true;
+    panel.legend = "off";
+    // Clipped at 3x the median, so the field's structure shows; NaN: not compared.
+    const double top = std::max(d.median_px > 0 ? 3 * d.median_px : d.max_px, 1e-6);
+    panel.heatmap = ImageGridHeatmap(d.cols, d.rows, d.step_x, d.step_y, d.diff_px,
+                                     "projection difference [px] (clipped at 3x the median)", top);
+  }
+  plot::WritePng(figure, png_path);
 }
 
 }  // namespace ws::calib

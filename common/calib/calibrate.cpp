@@ -140,6 +140,17 @@ std::string KnotChoiceLine(const CameraCalibration& camera) {
          "held-out RMS); held-out RMS per count " + curve + " px";
 }
 
+std::string UncertaintyLine(const CameraCalibration& camera) {
+  const ProjectionUncertainty& u = camera.uncertainty;
+  const long observed = std::count(u.observed.begin(), u.observed.end(), 1);
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%s: projection uncertainty (1 sigma, worst direction) median %.4f px, worst "
+                "%.4f px over the %ld observed cells of %d x %d",
+                camera.name.c_str(), u.median_px, u.worst_px, observed, u.cols, u.rows);
+  return buf;
+}
+
 double HeldOutRms(const StereoCalibration& c) {
   if (c.mono || c.left.heldout_rms_px < 0) return c.left.heldout_rms_px;
   if (c.right.heldout_rms_px < 0) return -1;

@@ -249,8 +249,11 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
              << " px), stereo rms " << r.rms_px << " px (" << r.views
              << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
-      for (const auto* camera : {&r.left, &r.right})
+      for (const auto* camera : {&r.left, &r.right}) {
         if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
+        if (camera->uncertainty.median_px >= 0)
+          process_.log().Info(r.model + " " + UncertaintyLine(*camera));
+      }
       for (const auto* camera : {&r.left, &r.right})
         for (const auto& skipped : camera->skipped)
           process_.log().Detail(camera->name + " " + skipped);
@@ -267,9 +270,15 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
     if (!options_.plot_dir.empty()) {
       try {  // a figure that cannot be drawn (no gnuplot) costs no calibration
         std::filesystem::create_directories(options_.plot_dir);
-        WriteDistortionCurvesPng(results.solved, options_.plot_dir + "/distortion_curves.png");
-        WriteResidualMapPng(results.solved, options_.plot_dir + "/residual_map.png");
-        WriteKnotCurvePng(results.solved, options_.plot_dir + "/knot_curve.png");
+        const std::string rig = !options_.rig_name.empty() ? options_.rig_name
+                                : !options_.out_yaml.empty()
+                                    ? std::filesystem::path(options_.out_yaml).stem().string()
+                                    : std::string("rig");
+        const std::string dir = options_.plot_dir + "/";
+        WriteDistortionCurvesPng(results.solved, rig, dir + "distortion_curves.png");
+        WriteResidualMapPng(results.solved, rig, dir + "residual_map.png");
+        WriteKnotCurvePng(results.solved, rig, dir + "knot_curve.png");
+        WriteUncertaintyPng(results.solved, rig, dir + "projection_uncertainty.png");
         process_.log().Info("wrote the figures in " + options_.plot_dir);
       } catch (const std::exception& e) {
         process_.ReportError(std::string("figures: ") + e.what());

@@ -45,6 +45,7 @@ struct NodeOptions {
   CalibrationOptions calibration;
   SessionOptions session;
   std::string out_yaml, report_json, plot_dir;
+  std::string rig_name;  // in the figures' titles; empty: the --out file's name
   bool once = false;
 };
 

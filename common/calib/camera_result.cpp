@@ -46,6 +46,11 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
   out.invalid_points = p.invalid_points;
   out.param_names = ParamNames(camera);
   out.stddev = outcome.stddev_camera[c];
+  std::vector<Eigen::Vector2d> inlier_corners;
+  for (const auto& r : out.residuals)
+    if (!r.outlier) inlier_corners.push_back(r.observed);
+  out.uncertainty = MapProjectionUncertainty(camera, outcome.covariance_camera[c], p.width,
+                                             p.height, inlier_corners);
   out.board_warp = problem.warp;
   out.board_warp_stddev = outcome.stddev_warp;
   out.init_method = init_method;

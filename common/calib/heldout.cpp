@@ -6,6 +6,8 @@
 #include <map>
 #include <numeric>
 
+#include <opencv2/core/utility.hpp>
+
 #include "calib/pose_fit.h"
 
 namespace ws::calib {
@@ -60,6 +62,50 @@ Problem Subproblem(const Problem& solved, const std::vector<int>& views, bool ke
   return out;
 }
 
+// One fold's held-out residuals per camera (sum of squares, count), or none
+// when leaving it out leaves a camera without enough views.
+struct FoldResult {
+  bool solved = false;
+  std::vector<double> sum;
+  std::vector<int> count;
+};
+
+FoldResult SolveFold(const Problem& solved, const std::vector<int>& held,
+                     const std::map<const Pose*, size_t>& index, const std::vector<Pose>& start,
+                     int k, int max_iterations) {
+  FoldResult out;
+  std::vector<Pose> poses = start;
+  Problem train = Subproblem(solved, held, false, index, &poses);
+  const std::string what = "cross-validation fold " + std::to_string(k + 1);
+  try {
+    SolveSettings settings{what, max_iterations};
+    settings.tolerance = kRankingTolerance;
+    Solve(train, settings);
+    Problem test = Subproblem(solved, held, true, index, &poses);
+    test.cameras = train.cameras;
+    for (CameraBlock& camera : test.cameras) camera.fixed = true;
+    test.extrinsic = train.extrinsic;
+    test.extrinsic_fixed = true;
+    settings.what = what + " held-out poses";
+    Solve(test, settings);
+    for (size_t c = 0; c < solved.cameras.size(); ++c) {
+      double sum = 0;
+      int count = 0;
+      for (const CornerResidual& r : Residuals(test, int(c)))
+        if (!r.outlier && r.residual.allFinite()) {
+          sum += r.residual.squaredNorm();
+          ++count;
+        }
+      out.sum.push_back(sum);
+      out.count.push_back(count);
+    }
+    out.solved = true;
+  } catch (const CalibrationError&) {
+    // A fold that leaves a camera without enough views: it counts as no fold.
+  }
+  return out;
+}
+
 }  // namespace
 
 CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations) {
@@ -75,42 +121,29 @@ CrossValidation CrossValidate(const Problem& solved, int folds, int max_iteratio
   CrossValidation cv;
   const int n_cameras = int(solved.cameras.size());
   if (folds < 2 || int(views.size()) < 2 * folds) return cv;
+  // The folds are independent solves: on every core (OpenCV's pool), each
+  // fold's result kept in its place, so the outcome does not depend on the
+  // order they finish in.
+  std::vector<FoldResult> results(folds);
+  cv::parallel_for_(
+      cv::Range(0, folds),
+      [&](const cv::Range& range) {
+        for (int k = range.start; k < range.end; ++k) {
+          std::vector<int> held;
+          for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
+          results[k] = SolveFold(solved, held, index, start, k, max_iterations);
+        }
+      },
+      folds);
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);
   cv.fold_rms_px.assign(n_cameras, {});
-  for (int k = 0; k < folds; ++k) {
-    std::vector<int> held;
-    for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
-    std::vector<Pose> poses = start;
-    Problem train = Subproblem(solved, held, false, index, &poses);
-    const std::string what = "cross-validation fold " + std::to_string(k + 1);
-    try {
-      SolveSettings settings{what, max_iterations};
-      settings.tolerance = kRankingTolerance;
-      Solve(train, settings);
-      Problem test = Subproblem(solved, held, true, index, &poses);
-      test.cameras = train.cameras;
-      for (CameraBlock& camera : test.cameras) camera.fixed = true;
-      test.extrinsic = train.extrinsic;
-      test.extrinsic_fixed = true;
-      settings.what = what + " held-out poses";
-      Solve(test, settings);
-      for (int c = 0; c < n_cameras; ++c) {
-        const std::vector<CornerResidual> residuals = Residuals(test, c);
-        double fold_sum = 0;
-        int fold_count = 0;
-        for (const CornerResidual& r : residuals)
-          if (!r.outlier && r.residual.allFinite()) {
-            fold_sum += r.residual.squaredNorm();
-            ++fold_count;
-          }
-        sum[c] += fold_sum;
-        count[c] += fold_count;
-        cv.fold_rms_px[c].push_back(fold_count ? std::sqrt(fold_sum / fold_count) : 0.0);
-      }
-    } catch (const CalibrationError&) {
-      // A fold that leaves a camera without enough views: it counts as no fold.
-      continue;
+  for (const FoldResult& fold : results) {
+    if (!fold.solved) continue;
+    for (int c = 0; c < n_cameras; ++c) {
+      sum[c] += fold.sum[c];
+      count[c] += fold.count[c];
+      cv.fold_rms_px[c].push_back(fold.count[c] ? std::sqrt(fold.sum[c] / fold.count[c]) : 0.0);
     }
     ++cv.folds;
   }

@@ -39,7 +39,9 @@ HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, i
 // inliers as they are); then, with every camera parameter and the extrinsic
 // held at that fold's solution, only the held-out views' board poses are
 // fitted (each starting at its pose in the full solution) and their
-// corners' residuals kept: the held-out residuals.
+// corners' residuals kept: the held-out residuals. The folds are solved in
+// parallel on OpenCV's thread pool (cv::setNumThreads bounds it); the result
+// does not depend on it.
 struct CrossValidation {
   int folds = 0;  // 0: not enough views (fewer than 2 per fold) or not asked
   // Per camera of the problem: the RMS of every held-out residual of every

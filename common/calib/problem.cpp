@@ -258,6 +258,7 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
       CameraCovariance(built.ceres, built.free_blocks, built.poses, 2 * cost / dof);
   if (!covariance) return;
   int offset = 0;
+  std::vector<int> camera_index[2];  // per camera parameter: its row of *covariance, or -1
   for (size_t b = 0; b < built.free_blocks.size(); ++b) {
     const int size = built.ceres.ParameterBlockSize(built.free_blocks[b]);
     const std::vector<int>& held = built.held[b];
@@ -268,8 +269,17 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
     for (int k = 0; k < size; ++k) {  // a held entry is exact: sigma 0
       const bool exact = std::find(held.begin(), held.end(), k) != held.end();
       out.push_back(exact ? 0.0 : std::sqrt(std::max(0.0, (*covariance)(offset, offset))));
+      if (owner >= 0) camera_index[owner].push_back(exact ? -1 : offset);
       offset += !exact;
     }
+  }
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<int>& index = camera_index[c];
+    Eigen::MatrixXd& out = outcome->covariance_camera[c];
+    out.setZero(index.size(), index.size());
+    for (size_t i = 0; i < index.size(); ++i)
+      for (size_t j = 0; j < index.size(); ++j)
+        if (index[i] >= 0 && index[j] >= 0) out(i, j) = (*covariance)(index[i], index[j]);
   }
 }
 

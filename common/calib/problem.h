@@ -8,6 +8,7 @@
 // live outside the problem, so the stages of a calibration can share them.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +62,9 @@ struct SolveOutcome {
   std::vector<double> stddev_camera[2];
   std::vector<double> stddev_extrinsic;
   std::vector<double> stddev_warp;  // x2, y2 when the warp was free
+  // Each camera's full covariance over the same parameters (held entries 0
+  // in their row and column); empty when the stddevs are.
+  Eigen::MatrixXd covariance_camera[2];
 };
 
 // The board -> camera pose of an observation (through the extrinsic for a

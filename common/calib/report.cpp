@@ -1,5 +1,6 @@
 #include "calib/report.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -19,6 +20,24 @@ Json Numbers(const std::vector<double>& values) {
 Json ViewRmsJson(const std::vector<double>& rms) {
   Json out = Json::array();
   for (double v : rms) out.push_back(v < 0 ? Json() : Json(v));
+  return out;
+}
+
+// projection_uncertainty.h; null where a grid point has no ray.
+Json UncertaintyReport(const ProjectionUncertainty& u) {
+  Json out;
+  out["definition"] =
+      "worst-direction 1-sigma of projecting a fixed camera-frame ray, from the solve's "
+      "covariance with the board poses marginalised (README: Projection uncertainty)";
+  out["cols"] = u.cols;
+  out["rows"] = u.rows;
+  out["step_px"] = {u.step_x, u.step_y};
+  Json sigma = Json::array();
+  for (double s : u.sigma_px) sigma.push_back(std::isfinite(s) ? Json(s) : Json());
+  out["sigma_px"] = sigma;
+  out["observed"] = std::vector<int>(u.observed.begin(), u.observed.end());
+  out["median_px"] = u.median_px;
+  out["worst_px"] = u.worst_px;
   return out;
 }
 
@@ -81,6 +100,7 @@ Json CameraReport(const CameraCalibration& c) {
   grid["rms"] = Numbers(g.rms);
   j["residual_grid"] = grid;
   j["heldout_fold_rms_px"] = Numbers(c.heldout_fold_rms_px);
+  if (!c.uncertainty.empty()) j["projection_uncertainty"] = UncertaintyReport(c.uncertainty);
   Json curve = Json::array();
   for (const KnotTrial& t : c.knot_curve)
     curve.push_back({{"knots", t.knots},

@@ -2,6 +2,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <exception>
+#include <mutex>
+#include <opencv2/core/utility.hpp>
 
 #include "calib/camera_result.h"
 #include "calib/half_turn.h"
@@ -37,6 +40,34 @@ Pose AverageExtrinsic(const std::vector<Pose>& left, const std::vector<Pose>& ri
   return Pose::FromRt(U * svd.matrixV().transpose(), T);
 }
 
+// Each camera's own solve, the two at once on OpenCV's pool (a nested
+// parallel region, the cross-validation's folds, then runs in line). The
+// progress lines of the two are serialised; an error is the left camera's
+// when both fail, as when they ran one after the other.
+void SolveBothMono(const StereoData& data, const BoardExtent& board,
+                   const CalibrationOptions& options, MonoState mono[2]) {
+  std::mutex progress_mutex;
+  CalibrationOptions each = options;
+  if (options.progress)
+    each.progress = [&](const std::string& line) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      options.progress(line);
+    };
+  std::exception_ptr error[2];
+  cv::parallel_for_(
+      cv::Range(0, 2),
+      [&](const cv::Range& range) {
+        for (int c = range.start; c < range.end; ++c) try {
+            SolveMono(c == 0 ? data.left : data.right, board, each, &mono[c]);
+          } catch (...) {
+            error[c] = std::current_exception();
+          }
+      },
+      2);
+  for (const std::exception_ptr& e : error)
+    if (e) std::rethrow_exception(e);
+}
+
 }  // namespace
 
 StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options) {
@@ -44,8 +75,7 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     throw CalibrationError("the left and right cameras have different numbers of views");
   MonoState mono[2];
   const BoardExtent board = ExtentOf({&data.left, &data.right});
-  SolveMono(data.left, board, options, &mono[0]);
-  SolveMono(data.right, board, options, &mono[1]);
+  SolveBothMono(data, board, options, mono);
   const int n = data.size();
   std::vector<bool> is_stereo(n, false);
   for (int v = 0; v < n; ++v)

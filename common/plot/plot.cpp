@@ -112,18 +112,56 @@ void WriteData(const Series& series, const fs::path& path) {
   if (!out) throw PlotError("cannot write " + path.string());
 }
 
+// The heat map's data file (gnuplot's `with image`: x y value, a blank
+// line after each row) and its plot clause.
+std::string HeatmapPlot(const Heatmap& map, const fs::path& path) {
+  if (map.cols <= 0 || map.rows <= 0 || map.values.size() != size_t(map.cols) * map.rows)
+    throw PlotError("heat map of " + std::to_string(map.cols) + " x " + std::to_string(map.rows) +
+                    " cells has " + std::to_string(map.values.size()) + " values");
+  std::ofstream out(path);
+  out.precision(17);
+  for (int j = 0; j < map.rows; ++j) {
+    for (int i = 0; i < map.cols; ++i) {
+      const double v = map.values[size_t(j) * map.cols + i];
+      out << map.x0 + i * map.dx << ' ' << map.y0 + j * map.dy << ' ';
+      if (std::isfinite(v))
+        out << v << '\n';
+      else
+        out << "NaN\n";
+    }
+    out << '\n';
+  }
+  if (!out) throw PlotError("cannot write " + path.string());
+  return Quote(path.string()) + " using 1:2:3 with image notitle";
+}
+
 // The gnuplot commands drawing one panel, writing its data files.
 std::string PanelScript(const Panel& panel, int panel_index, const TempDir& dir) {
   std::ostringstream script;
   script << "set title " << Quote(panel.title) << "\n"
          << "set xlabel " << Quote(panel.x_label) << "\n"
-         << "set ylabel " << Quote(panel.y_label) << "\n";
+         << "set ylabel " << Quote(panel.y_label) << "\n"
+         << "set autoscale xy\nset xrange [*:*] noreverse\nset yrange [*:*] noreverse\n"
+         << "unset colorbox\nset size noratio\n";
+  if (panel.image_axes) script << "set yrange [*:*] reverse\nset size ratio -1\n";
+  std::string plots;
+  if (panel.heatmap) {
+    const Heatmap& map = *panel.heatmap;
+    script << "set colorbox\nset cblabel " << Quote(map.label) << "\n"
+           << "set palette cubehelix negative\n"
+           << "set cbrange [0:";
+    if (std::isfinite(map.max) && map.max > 0)
+      script << map.max;
+    else
+      script << "*";
+    script << "]\n";
+    plots = "plot " + HeatmapPlot(map, dir / ("panel" + std::to_string(panel_index) + "_map.dat"));
+  }
   if (panel.legend == "off")
     script << "unset key\n";
   else
     script << "set key " << panel.legend << " Left reverse box opaque samplen 3 spacing 1.2\n";
   script << (panel.zero_line ? "set xzeroaxis lt -1 lw 1\n" : "unset xzeroaxis\n");
-  std::string plots;
   for (size_t i = 0; i < panel.series.size(); ++i) {
     const Series& series = panel.series[i];
     if (series.x.empty()) continue;

@@ -12,6 +12,8 @@
 // pngcairo terminal, or png where cairo is missing.
 #pragma once
 
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -36,6 +38,17 @@ struct Series {
   double point_size = 0.8;
 };
 
+// Values on a regular grid drawn as colours under a panel's series, with a
+// colour bar: cell (i, j) centred at (x0 + i dx, y0 + j dy), row-major
+// (values[j * cols + i]); NaN cells are left blank.
+struct Heatmap {
+  int cols = 0, rows = 0;
+  double x0 = 0, y0 = 0, dx = 1, dy = 1;
+  std::vector<double> values;
+  std::string label;        // the colour bar's: what and which unit
+  double max = NAN;         // top of the colour scale; NaN: the largest value
+};
+
 struct Panel {
   Panel(std::string title, std::string x_label, std::string y_label)
       : title(std::move(title)), x_label(std::move(x_label)), y_label(std::move(y_label)) {}
@@ -45,6 +58,10 @@ struct Panel {
   std::vector<Series> series;
   std::string legend = "top right";  // gnuplot key position ("bottom left", ...); "off" hides it
   bool zero_line = false;            // draw the line y = 0
+  // Image coordinates: y grows downward (the axis reversed; labels stay
+  // positive) and x, y are drawn to the same scale.
+  bool image_axes = false;
+  std::optional<Heatmap> heatmap;
 };
 
 struct Figure {

@@ -74,8 +74,10 @@ int main(int argc, char** argv) {
   app.add_option("--report", node.report_json,
                  "Report to write (JSON); a 'save report=NAME' command writes only NAME in its folder");
   app.add_option("--plot-dir", node.plot_dir,
-                 "Folder for distortion_curves.png, residual_map.png and, with --knots auto, "
-                 "knot_curve.png (needs gnuplot)");
+                 "Folder for distortion_curves.png, residual_map.png, projection_uncertainty.png "
+                 "and, with --knots auto, knot_curve.png (needs gnuplot)");
+  app.add_option("--rig-name", node.rig_name,
+                 "The rig's name in the figures' titles (default: the --out file's name)");
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
                  "NAME-<UTC time>.lcmlog, 'restore' brings the newest back); 'none' for none. Default: "

@@ -1,0 +1,50 @@
+// The difference between two calibrations of one camera, in pixels across
+// its image (issue #14, stereo-compare; mrcal-show-projection-diff's
+// definition): for each pixel q of a grid over camera A's image, the ray
+// v = unproject_A(q), and
+//
+//   diff(q) = | project_B(R v) - q |
+//
+// with R the small rotation between the two camera frames that fits best.
+// Two calibrations fix a camera's frame only up to such a rotation (a
+// shift of cx is nearly a turn of the camera, and the board poses follow),
+// so without it two equally good calibrations can differ by pixels that
+// mean nothing. R minimises the sum of diff(q)^2 over the grid points
+// within `fit_radius` pixels of the image centre (mrcal's default: a sixth
+// of the smaller image side; the centre is where both are best observed),
+// by Gauss-Newton on its angle-axis; fit_radius <= 0: R = I (no fit).
+// Grid points that either camera cannot carry (no ray, no pixel, or a pixel
+// outside B's image) are NaN and left out of every statistic.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "models/camera_model.h"
+
+namespace ws::calib {
+
+struct ProjectionDiff {
+  int cols = 0, rows = 0;
+  double step_x = 0, step_y = 0;  // grid point (i, j) at ((i + 0.5) step - 0.5)
+  std::vector<double> diff_px;    // row-major, cols * rows; NaN where not compared
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // applied to A's rays
+  double rotation_deg = 0;
+  int fit_points = 0;  // grid points the rotation was fitted to
+  int points = 0;      // grid points compared
+  double rms_px = 0, median_px = 0, max_px = 0;
+
+  Eigen::Vector2d Pixel(int i, int j) const {
+    return {(i + 0.5) * step_x - 0.5, (j + 0.5) * step_y - 0.5};
+  }
+};
+
+// The default fit radius: a sixth of the smaller image side.
+double DefaultFitRadius(const CameraModel& camera);
+
+// Compares camera B against camera A (A's image is the grid's). Throws
+// std::invalid_argument when the two cameras' image sizes differ.
+ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_radius,
+                                 int cols = 64, int rows = 48);
+
+}  // namespace ws::calib
