@@ -61,7 +61,7 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
           angle ? "incidence angle theta [deg]" : "ideal radius r = |(X/Z, Y/Z)| = tan(theta)",
           angle ? "D(theta) [%]" : "D(r) [%]");
       panel.zero_line = true;
-      panel.legend = "outside below";
+      panel.legend = "below";
       // To the end of the B-spline's knots (which the calibration puts at
       // the image's corners), else a fifth past the largest observed radius.
       double r_end = 0, r_seen = 0;
@@ -168,7 +168,7 @@ bool WriteKnotCurvePng(const std::vector<StereoCalibration>& calibrations,
     plot::Panel& panel = figure.panels.emplace_back(
         (side == 0 ? "left" : "right") + std::string(" camera: RMS per coefficient count"),
         "estimated coefficients (--knots)", "RMS [px]");
-    panel.legend = "outside below";
+    panel.legend = "below";
     for (const auto& c : calibrations) {
       if (c.mono && side == 1) continue;
       const CameraCalibration& camera = Side(c, side);
@@ -217,13 +217,14 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
     const ProjectionUncertainty& u = camera.uncertainty;
     plot::Panel& panel = figure.panels.emplace_back(
         camera.name + " camera, " + models[k] + ": median " + Format("%.4f", u.median_px) +
-            " px, worst " + Format("%.4f", u.worst_px) + " px where corners were seen",
+            " px, worst " + Format("%.4f", u.worst_px) + " px\nover the cells with corners; "
+            "colours clipped at twice the worst",
         "u [px]", "v [px]");
     panel.image_axes = true;
-    panel.legend = "outside below";
+    panel.legend = "below";
     // The scale of the observed field (the unobserved corners can be far larger).
     panel.heatmap = ImageGridHeatmap(u.cols, u.rows, u.step_x, u.step_y, u.sigma_px,
-                                     "1-sigma projection uncertainty [px]", 2 * u.worst_px);
+                                     "1-sigma [px]", 2 * u.worst_px);
     std::vector<double> x, y;
     for (int j = 0; j < u.rows; ++j)
       for (int i = 0; i < u.cols; ++i)
@@ -231,7 +232,7 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
           x.push_back(u.Pixel(i, j).x());
           y.push_back(u.Pixel(i, j).y());
         }
-    plot::Series& seen = panel.series.emplace_back("cells with corners (median and worst over them)",
+    plot::Series& seen = panel.series.emplace_back("cells with corners",
                                                    x, y, plot::Style::kPoints, "#009e73");
     seen.point_size = 0.4;
   }
@@ -242,19 +243,19 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
 void WriteProjectionDiffPng(const std::vector<std::pair<std::string, ProjectionDiff>>& cameras,
                             const std::string& title, const std::string& png_path) {
   plot::Figure figure(title, int(std::min<size_t>(2, cameras.size())),
-                      cameras.size() > 1 ? 1400 : 800, 600);
+                      cameras.size() > 1 ? 1600 : 800, 600);
   for (const auto& [name, d] : cameras) {
     plot::Panel& panel = figure.panels.emplace_back(
-        name + " camera: RMS " + Format("%.4f", d.rms_px) + " px, median " +
-            Format("%.4f", d.median_px) + " px, max " + Format("%.4f", d.max_px) +
-            " px, after a rotation of " + Format("%.4f", d.rotation_deg) + " deg",
+        name + " camera: RMS " + Format("%.3f", d.rms_px) + ", median " +
+            Format("%.3f", d.median_px) + ", max " + Format("%.3f", d.max_px) + " px\nafter a " +
+            Format("%.4f", d.rotation_deg) + " deg turn; colours clipped at 3x the median",
         "u [px]", "v [px]");
     panel.image_axes = true;
     panel.legend = "off";
     // Clipped at 3x the median, so the field's structure shows; NaN: not compared.
     const double top = std::max(d.median_px > 0 ? 3 * d.median_px : d.max_px, 1e-6);
     panel.heatmap = ImageGridHeatmap(d.cols, d.rows, d.step_x, d.step_y, d.diff_px,
-                                     "projection difference [px] (clipped at 3x the median)", top);
+                                     "difference [px]", top);
   }
   plot::WritePng(figure, png_path);
 }

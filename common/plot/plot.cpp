@@ -4,6 +4,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -23,8 +24,21 @@ namespace fs = std::filesystem;
 const char* const kPalette[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
                                 "#e69f00", "#56b4e9", "#000000", "#f0e442"};
 
-// A gnuplot single-quoted string ('' stands for ').
+// A gnuplot string: single-quoted ('' stands for '), or double-quoted with
+// \n for each line break when the text has several lines.
 std::string Quote(const std::string& text) {
+  if (text.find('\n') != std::string::npos) {
+    std::string quoted = "\"";
+    for (char c : text) {
+      if (c == '\n')
+        quoted += "\\n";
+      else if (c == '"' || c == '\\')
+        quoted += std::string("\\") + c;
+      else
+        quoted += c;
+    }
+    return quoted + "\"";
+  }
   std::string quoted = "'";
   for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
   return quoted + "'";
@@ -143,7 +157,9 @@ std::string PanelScript(const Panel& panel, int panel_index, const TempDir& dir)
          << "set ylabel " << Quote(panel.y_label) << "\n"
          << "set autoscale xy\nset xrange [*:*] noreverse\nset yrange [*:*] noreverse\n"
          << "unset colorbox\nset size noratio\n";
-  if (panel.image_axes) script << "set yrange [*:*] reverse\nset size ratio -1\n";
+  if (panel.image_axes)  // the axes end where the data do (the image's edges)
+    script << "set autoscale xfix\nset autoscale yfix\nset yrange [*:*] reverse\n"
+           << "set size ratio -1\n";
   std::string plots;
   if (panel.heatmap) {
     const Heatmap& map = *panel.heatmap;
@@ -157,10 +173,19 @@ std::string PanelScript(const Panel& panel, int panel_index, const TempDir& dir)
     script << "]\n";
     plots = "plot " + HeatmapPlot(map, dir / ("panel" + std::to_string(panel_index) + "_map.dat"));
   }
-  if (panel.legend == "off")
+  const long entries = std::count_if(panel.series.begin(), panel.series.end(),
+                                     [](const Series& series) { return !series.title.empty(); });
+  script << "set bmargin -1\n";
+  if (panel.legend == "off" || entries == 0) {
     script << "unset key\n";
-  else
-    script << "set key " << panel.legend << " Left reverse box opaque samplen 3 spacing 1.2\n";
+  } else if (panel.legend.find("below") != std::string::npos) {
+    // Below the axis label, in two columns: the bottom margin made room for
+    // its rows (gnuplot's own margin lets the key run over the x label).
+    script << "set key below Left reverse box opaque samplen 3 spacing 1.2 maxcols 2\n"
+           << "set bmargin " << 4 + int(std::ceil(1.3 * ((entries + 1) / 2))) << "\n";
+  } else {
+    script << "set key inside " << panel.legend << " Left reverse box opaque samplen 3 spacing 1.2\n";
+  }
   script << (panel.zero_line ? "set xzeroaxis lt -1 lw 1\n" : "unset xzeroaxis\n");
   for (size_t i = 0; i < panel.series.size(); ++i) {
     const Series& series = panel.series[i];

@@ -56,7 +56,9 @@ struct Panel {
   std::string title;
   std::string x_label, y_label;
   std::vector<Series> series;
-  std::string legend = "top right";  // gnuplot key position ("bottom left", ...); "off" hides it
+  // gnuplot key position inside the plot ("top right", "bottom left", ...);
+  // "below": under the x label, where it never covers a curve; "off" hides it.
+  std::string legend = "top right";
   bool zero_line = false;            // draw the line y = 0
   // Image coordinates: y grows downward (the axis reversed; labels stay
   // positive) and x, y are drawn to the same scale.

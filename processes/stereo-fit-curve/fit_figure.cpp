@@ -79,13 +79,13 @@ plot::Figure FitFigure(const std::string& title, const LensTable& table,
   auto distortion_panel = [&](const std::string& panel_title) {
     plot::Panel panel(panel_title, height_label, distortion_label);
     panel.series.push_back(DesignData(table));
-    panel.legend = "outside below";
+    panel.legend = "below";
     panel.zero_line = true;
     return panel;
   };
   auto error_panel = [&](const std::string& panel_title, const std::vector<const FitCurves*>& shown) {
     plot::Panel panel(panel_title, height_label, error_label);
-    panel.legend = "outside below";
+    panel.legend = "below";
     panel.zero_line = true;
     for (const FitCurves* c : shown) {
       plot::Series& between =

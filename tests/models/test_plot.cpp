@@ -52,6 +52,28 @@ TEST(Plot, DrawsPanelsWithSeriesIntoAPng) {
   EXPECT_EQ(PngSize(png), (std::pair<uint32_t, uint32_t>{900, 400}));
 }
 
+TEST(Plot, DrawsAHeatMapOnImageAxesWithATwoLineTitle) {
+  plot::Figure figure("heat map", 1, 500, 400);
+  plot::Panel& panel = figure.panels.emplace_back("first line\nsecond \"line\"", "u [px]", "v [px]");
+  panel.image_axes = true;
+  plot::Heatmap map;
+  map.cols = 4;
+  map.rows = 3;
+  map.x0 = 10;
+  map.y0 = 10;
+  map.dx = 20;
+  map.dy = 20;
+  map.values = {0, 1, 2, 3, 4, 5, NAN, 7, 8, 9, 10, 11};
+  map.label = "value [px]";
+  panel.heatmap = map;
+  const fs::path png = OutputPath("heat_map.png");
+  plot::WritePng(figure, png.string());
+  EXPECT_EQ(PngSize(png), (std::pair<uint32_t, uint32_t>{500, 400}));
+  map.values.pop_back();  // 11 values for 12 cells
+  figure.panels.front().heatmap = map;
+  EXPECT_THROW(plot::WritePng(figure, png.string()), plot::PlotError);
+}
+
 // A one-panel figure with one series.
 plot::Figure OneSeries(std::vector<double> x, std::vector<double> y) {
   plot::Figure figure("one series");
