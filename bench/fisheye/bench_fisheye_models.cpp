@@ -198,6 +198,12 @@ int main(int argc, char** argv) {
       opencv = OpenCvFisheye(*cameras[c], theta_camera[c], opencv_max_theta_deg * M_PI / 180, c, opencv);
     rows.push_back(opencv);
     Print(rows, mono);
+    for (int s = 0; s < 2; ++s)  // projection uncertainty (beside mrcal_uncertainty.py's)
+      for (const StereoCalibration& result : settings[s].solved)
+        for (const CameraCalibration* camera : {&result.left, &result.right})
+          if (camera->uncertainty.median_px >= 0)
+            std::printf("%s%s %s\n", result.model.c_str(), s ? " + warp" : "",
+                        UncertaintyLine(*camera).c_str());
     if (heldout) PrintHeldOut(data, mono, knots, outlier_sigma);
     return 0;
   } catch (const std::exception& e) {

@@ -45,7 +45,9 @@ mrcal_solve() {
 mrcal_fit() {
   local dir=$1 camera=$6
   mrcal_solve "$dir/corners-$camera.vnl" "$dir/mrcal-$camera" "${@:2:4}" "$camera" &&
-    /usr/bin/python3 bench/fisheye/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera"
+    /usr/bin/python3 bench/fisheye/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera" &&
+    /usr/bin/python3 bench/fisheye/mrcal_uncertainty.py "$dir/mrcal-$camera/camera-0.cameramodel" \
+      "$dir/corners-$camera.vnl" "$camera"
   mrcal_solve "$7" "$dir/mrcal-train-$camera" "${@:2:4}" "$camera" &&
     /usr/bin/python3 bench/fisheye/mrcal_heldout.py "$dir/mrcal-train-$camera/camera-0.cameramodel" "$8" \
       "${GRID_SIZE%x*}" "${GRID_SIZE#*x}" "$GRID_SPACING" "$camera"
