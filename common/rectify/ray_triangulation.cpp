@@ -1,5 +1,7 @@
 #include "rectify/ray_triangulation.h"
 
+#include <cmath>
+
 namespace ws {
 
 std::optional<cv::Vec3d> TriangulateDisparity(const Rectification& rect, double u, double v,
@@ -13,6 +15,28 @@ std::optional<cv::Vec3d> TriangulateDisparity(const Rectification& rect, double 
   const double s = c.cross(r_r).dot(n) / n2;
   if (!(s > 0)) return std::nullopt;
   return s * r_l;
+}
+
+namespace {
+
+// The angle of a rectified ray from the epipolar plane's normal to the baseline.
+double Psi(const cv::Vec3d& ray) { return std::asin(ray[0] / cv::norm(ray)); }
+
+// dpsi/du at rectified pixel (u, v).
+double PsiPerPixel(const Rectification& rect, double u, double v) {
+  if (rect.mode == RectificationMode::kLatLon) return 1 / rect.f;
+  const double a = (u - rect.cx) / rect.f, b = (v - rect.cy) / rect.f;
+  const double w2 = 1 + b * b;
+  return std::sqrt(w2) / (w2 + a * a) / rect.f;
+}
+
+}  // namespace
+
+double RangeChange(const Rectification& rect, double u, double v, double d, double error) {
+  if (!(d > 0)) return NAN;
+  const double psi_l = Psi(RectifiedRay(rect, u, v)), psi_r = Psi(RectifiedRay(rect, u - d, v));
+  const double s = std::sin(psi_l - psi_r);
+  return rect.baseline * std::cos(psi_l) / (s * s) * PsiPerPixel(rect, u - d, v) * error;
 }
 
 }  // namespace ws
