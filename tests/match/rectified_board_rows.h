@@ -6,6 +6,7 @@
 // detector's noise, in rectified pixels).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "detect/board_spec.h"
@@ -19,6 +20,18 @@ struct BoardRows {
   int corners = 0;  // corner pairs measured
   double rms = 0;   // row difference, px
   double median = 0;  // |row difference|, px
+  // The same for the corners whose rays (left and right) are within 60
+  // degrees of the epipolar planes' common normal: nearer the epipoles a
+  // lat-lon row spans cos(psi) times the angle of a central row, so a
+  // corner's detection error grows in rows by 1 / cos(psi).
+  int central_corners = 0;
+  double central_rms = 0;
+  // Per pair with a board: its mean row difference (a pair not taken at one
+  // instant, a hand-held rig not triggered together, is off by a row shift
+  // of its own) and the RMS about that mean (the scatter); the median
+  // scatter over the pairs, the largest and its pair, the largest shift.
+  double pair_scatter_median = 0, largest_scatter = 0, largest_shift = 0;
+  int64_t largest_scatter_pair = -1;
 };
 
 // stereo-match --calib CALIB --rectification MODE --save-rectified OUT_DIR

@@ -41,8 +41,13 @@ TEST(RectifiedRows, SimulatedFisheyeRigLatLonFindsMoreBoardsOnTheirRows) {
     EXPECT_EQ(rows[m].pairs, 32);
   }
   EXPECT_GT(rows[0].boards, rows[1].boards);
-  EXPECT_LT(rows[0].rms, 0.15);
-  EXPECT_LT(rows[1].rms, 0.15);
+  // The true calibration: what is left is the detector's noise (a board
+  // touching the no-image border can pull a corner off: the largest
+  // scatter printed).
+  for (int m = 0; m < 2; ++m) {
+    EXPECT_LT(rows[m].median, 0.1) << ws::RectificationModeName(kModes[m]);
+    EXPECT_LT(rows[m].pair_scatter_median, 0.1) << ws::RectificationModeName(kModes[m]);
+  }
 }
 
 TEST(RectifiedRows, RealFisheyeStereoRosLatLonFindsMoreBoards) {
@@ -62,7 +67,12 @@ TEST(RectifiedRows, RealFisheyeStereoRosLatLonFindsMoreBoards) {
     EXPECT_EQ(rows[m].pairs, 46);
   }
   EXPECT_GT(rows[0].boards, rows[1].boards);
-  EXPECT_LT(rows[0].rms, 1.0);
+  // The pairs were hand-held and not triggered together: each is off by a
+  // row shift of its own (up to ~10 px); within a pair the rows agree.
+  for (int m = 0; m < 2; ++m) {
+    EXPECT_LT(rows[m].median, 1.0) << ws::RectificationModeName(kModes[m]);
+    EXPECT_LT(rows[m].pair_scatter_median, 0.6) << ws::RectificationModeName(kModes[m]);
+  }
 }
 
 }  // namespace
