@@ -7,6 +7,15 @@ namespace ws {
 std::optional<cv::Vec3d> TriangulateDisparity(const Rectification& rect, double u, double v,
                                               double d) {
   if (!(d > 0)) return std::nullopt;
+  if (rect.mode == RectificationMode::kLatLon) {
+    // The same intersection in closed form (the law of sines in the
+    // epipolar plane): four sines and cosines instead of eight and two cross products.
+    const double psi_l = (u - rect.cx) / rect.f, phi = (v - rect.cy) / rect.f, angle = d / rect.f;
+    const double s = rect.baseline * std::cos(psi_l - angle) / std::sin(angle);
+    if (!(s > 0) || !std::isfinite(s)) return std::nullopt;
+    const double c = std::cos(psi_l);
+    return cv::Vec3d(std::sin(psi_l), c * std::sin(phi), c * std::cos(phi)) * s;
+  }
   const cv::Vec3d r_l = RectifiedRay(rect, u, v), r_r = RectifiedRay(rect, u - d, v);
   const cv::Vec3d c(rect.baseline, 0, 0);
   const cv::Vec3d n = r_l.cross(r_r);

@@ -6,7 +6,8 @@
 //   X = s r_l,   s = ((c x r_r) . (r_l x r_r)) / |r_l x r_r|^2,
 // r_l, r_r the rectified rays (RectifiedRay). For a pinhole rectification
 // this is Z = f b / d, X = (u - cx) Z / f, Y = (v - cy) Z / f; for lat-lon
-// the range |X| = b cos(psi_r) / sin(psi_l - psi_r), psi = (u - cx) / f.
+// the range |X| = b cos(psi_r) / sin(psi_l - psi_r), psi = (u - cx) / f
+// (computed so).
 #pragma once
 
 #include <optional>
