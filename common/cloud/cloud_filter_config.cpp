@@ -34,7 +34,6 @@ void RequireAtLeast(const char* option, int value, int minimum) {
 
 void ValidateCloudFilterConfig(const CloudFilterConfig& config) {
   RequireFinite("--z-min", config.z_min);
-  if (config.z_min < 0) OptionError("--z-min", "must be >= 0, got " + Show(config.z_min));
   RequireFinite("--z-max", config.z_max);
   if (config.z_max <= config.z_min)
     OptionError("--z-max", "must be greater than --z-min (" + Show(config.z_min) + "), got " +

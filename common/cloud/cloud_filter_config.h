@@ -16,7 +16,8 @@ struct ConfigError : std::runtime_error {
 // The depth pass-through always runs: it drops NaN and infinite points, which
 // every later stage would choke on.
 struct CloudFilterConfig {
-  double z_min = 0.3;                // --z-min, metres: nearer points are dropped,
+  double z_min = 0.3;                // --z-min, metres: nearer points are dropped (negative: keeps
+                                     //   points behind the image plane, a lat-lon cloud past 90 degrees),
   double z_max = 10.0;               // --z-max, and farther ones (OpenCV puts missing disparities at Z = 10000)
   bool voxel_enabled = true;         // --voxel
   double voxel_leaf = 0.01;          // --voxel-leaf, metres

@@ -7,7 +7,9 @@ void AddCloudFilterOptions(CLI::App& app, CloudFilterConfig* c) {
   auto add = [&](const char* name, auto* field, const char* help) {
     app.add_option(name, *field, help)->capture_default_str()->group(group);
   };
-  add("--z-min", &c->z_min, "Pass-through: nearest depth kept, metres");
+  add("--z-min", &c->z_min,
+      "Pass-through: nearest depth (z, along the left rectified axis) kept, metres; negative keeps points "
+      "behind the image plane (a lat-lon cloud of lenses past 180 degrees)");
   add("--z-max", &c->z_max,
       "Pass-through: farthest depth kept, metres (OpenCV puts missing disparities at Z = 10000)");
   add("--voxel", &c->voxel_enabled, "Voxel-grid downsampling (true/false)");

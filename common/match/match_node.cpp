@@ -19,9 +19,8 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
         std::to_string(left.rows) + " but " + calibration_source + " is for " +
         std::to_string(rect->input_size.width) + "x" + std::to_string(rect->input_size.height));
   MatchedFrame matched;
-  cv::Mat right_rect;
-  RectifyPair(*rect, left, right, &matched.left_rect, &right_rect);
-  matched.disparity = matcher.Compute(matched.left_rect, right_rect);
+  RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect);
+  matched.disparity = matcher.Compute(matched.left_rect, matched.right_rect);
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
   matched.disparity.setTo(-std::numeric_limits<float>::infinity(), rect->no_image);
@@ -74,6 +73,7 @@ typename NewestFirst<T>::Policy Live(const Process& process, typename NewestFirs
 MatchNode::MatchNode(Process& process, MatchConfig config)
     : process_(process),
       config_(std::move(config)),
+      rectified_writer_(config_.save_rectified),
       matcher_(config_.matcher),
       publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
                [this](MatchedFrame& matched) { Publish(matched); }),
@@ -148,6 +148,12 @@ void MatchNode::Publish(MatchedFrame& matched) {
     process_.Publish(channel::kStereoCloud, result.cloud);
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
+  }
+  if (!rectified_writer_.Wants(matched.frame_id)) return;
+  try {
+    rectified_writer_.Write(matched.frame_id, matched.left_rect, matched.right_rect);
+  } catch (const std::exception& e) {
+    process_.ReportError(e.what());
   }
 }
 

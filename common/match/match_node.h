@@ -7,6 +7,7 @@
 #include <string>
 
 #include "match/matcher.h"
+#include "match/rectified_pair_writer.h"
 #include "rectify/disparity_cloud.h"
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
@@ -20,6 +21,7 @@ struct MatchConfig {
   MatcherConfig matcher;
   RectifyOptions rectify;
   CloudSampling cloud;
+  RectifiedSaveConfig save_rectified;
 };
 
 struct MatchResult {
@@ -32,7 +34,7 @@ struct MatchedFrame {
   std::shared_ptr<const Rectification> rect;
   int64_t utime = 0;
   int64_t frame_id = 0;
-  cv::Mat disparity, left_rect;
+  cv::Mat disparity, left_rect, right_rect;
 };
 
 // Rectifies and matches one frame. Throws std::invalid_argument when the
@@ -52,7 +54,8 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 
 // Wires MatchFrame to the bus: a calibration file given at the start, and
 // every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
-// become STEREO_DISPARITY and STEREO_CLOUD.
+// become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
+// files when config.save_rectified says so (rectified_pair_writer.h).
 //
 // Live, the two stages run as a small pipeline (runtime/newest_first.h) on
 // two threads of their own, so that the input thread only hands frames over:
@@ -80,6 +83,7 @@ class MatchNode {
 
   Process& process_;
   MatchConfig config_;
+  RectifiedPairWriter rectified_writer_;  // used by the publishing stage only
   DisparityMatcher matcher_;  // used by the matching stage only
   std::mutex rect_mutex_;     // guards rect_ and calibration_source_
   std::shared_ptr<const Rectification> rect_;

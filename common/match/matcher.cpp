@@ -1,5 +1,6 @@
 #include "match/matcher.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <opencv2/calib3d.hpp>
@@ -29,6 +30,11 @@ MatcherConfig AtMatchScale(const MatcherConfig& c) {
   scaled.num_disparities = (c.num_disparities / n + 15) / 16 * 16;
   return scaled;
 }
+
+// OpenCV's matchers give no disparity in the image's first columns, those
+// whose whole search range (and for BM, the window's half) would not fit
+// left of them: min_disparity + num_disparities (+ block_size / 2) columns.
+int LeftMargin(const MatcherConfig& c) { return std::max(0, c.min_disparity + c.num_disparities) + c.block_size / 2; }
 
 }  // namespace
 
@@ -66,24 +72,33 @@ cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
                                                      : cv::StereoSGBM::MODE_SGBM);
 }
 
+
 DisparityMatcher::DisparityMatcher(const MatcherConfig& config)
-    : config_(config), matcher_(MakeMatcher(AtMatchScale(config))) {}
+    : config_(config), matcher_(MakeMatcher(AtMatchScale(config))), margin_(LeftMargin(AtMatchScale(config))) {}
+
+void DisparityMatcher::Match(const cv::Mat& left, const cv::Mat& right, double scale, cv::Mat* disparity) {
+  // Matched with margin_ columns of no image added on the left, so that the
+  // image's own first columns get a disparity wherever the right image holds
+  // their match; the margin is cut off again.
+  cv::copyMakeBorder(left, padded_left_, 0, 0, margin_, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
+  cv::copyMakeBorder(right, padded_right_, 0, 0, margin_, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
+  matcher_->compute(padded_left_, padded_right_, fixed_point_);
+  // OpenCV marks pixels without a match (min_disparity - 1) * 16.
+  fixed_point_.colRange(margin_, fixed_point_.cols).convertTo(*disparity, CV_32F, scale / cv::StereoMatcher::DISP_SCALE);
+}
 
 cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right) {
   Require(left.size() == right.size(), "left and right images differ in size");
   cv::Mat disparity;
   const int n = config_.downscale;
   if (n == 1) {
-    matcher_->compute(Gray8(left), Gray8(right), fixed_point_);
-    // OpenCV marks pixels without a match (min_disparity - 1) * 16.
-    fixed_point_.convertTo(disparity, CV_32F, 1.0 / cv::StereoMatcher::DISP_SCALE);
+    Match(Gray8(left), Gray8(right), 1.0, &disparity);
     return disparity;
   }
   const cv::Size small((left.cols + n - 1) / n, (left.rows + n - 1) / n);
   cv::resize(Gray8(left), small_left_, small, 0, 0, cv::INTER_AREA);
   cv::resize(Gray8(right), small_right_, small, 0, 0, cv::INTER_AREA);
-  matcher_->compute(small_left_, small_right_, fixed_point_);
-  fixed_point_.convertTo(small_disparity_, CV_32F, double(n) / cv::StereoMatcher::DISP_SCALE);
+  Match(small_left_, small_right_, double(n), &small_disparity_);
   // Nearest neighbour: no disparity mixed with a missing one at an edge.
   cv::resize(small_disparity_, disparity, left.size(), 0, 0, cv::INTER_NEAREST);
   const float missing = float(config_.min_disparity - 1);

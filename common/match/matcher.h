@@ -41,15 +41,21 @@ class DisparityMatcher {
 
   // Disparity in pixels of the full images (CV_32FC1) of two rectified 8-bit
   // images (grey or BGR, converted to grey); pixels without a match hold
-  // min_disparity - 1.
+  // min_disparity - 1. Every column may get one: the images are matched with
+  // a margin of no image on the left as wide as the search range, where
+  // OpenCV's matchers would give none.
   cv::Mat Compute(const cv::Mat& left, const cv::Mat& right);
 
   const MatcherConfig& config() const { return config_; }
 
  private:
+  // The match of two 8-bit grey images at the matcher's scale, times `scale`.
+  void Match(const cv::Mat& left, const cv::Mat& right, double scale, cv::Mat* disparity);
+
   MatcherConfig config_;
   cv::Ptr<cv::StereoMatcher> matcher_;
-  cv::Mat fixed_point_, small_left_, small_right_, small_disparity_;
+  int margin_;  // columns added on the left (LeftMargin)
+  cv::Mat fixed_point_, small_left_, small_right_, small_disparity_, padded_left_, padded_right_;
 };
 
 // The raw OpenCV matcher for `config` at full resolution (downscale is

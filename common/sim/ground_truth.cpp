@@ -179,6 +179,10 @@ void WriteSimTruth(const std::string& path, const SimTruth& truth) {
       fs << "target" << f.target;
       WriteView(fs, "left", f.left);
       WriteView(fs, "right", f.right);
+    } else if (f.kind == "room") {
+      std::vector<double> planes;
+      for (const cv::Vec4d& plane : f.room_planes) planes.insert(planes.end(), plane.val, plane.val + 4);
+      fs << "room_planes" << planes;
     } else {
       fs << "wall_distance" << f.wall_distance;
       fs << "wall_normal" << std::vector<double>{f.wall_normal[0], f.wall_normal[1], f.wall_normal[2]};
@@ -250,8 +254,13 @@ SimTruth LoadSimTruth(const std::string& path) {
       if (normal.size() != 3) r.Fail(where + "wall_normal", "must hold 3 numbers");
       f.wall_normal = cv::Vec3d(normal[0], normal[1], normal[2]);
       f.wall_offset = r.Real(node, "wall_offset", where);
+    } else if (f.kind == "room") {
+      const auto planes = r.Reals(node, "room_planes", where);
+      if (planes.size() != 24) r.Fail(where + "room_planes", "must hold 6 planes of 4 numbers");
+      for (size_t k = 0; k < planes.size(); k += 4)
+        f.room_planes.emplace_back(planes[k], planes[k + 1], planes[k + 2], planes[k + 3]);
     } else {
-      r.Fail(where + "kind", "must be board or wall, not '" + f.kind + "'");
+      r.Fail(where + "kind", "must be board, wall or room, not '" + f.kind + "'");
     }
     truth.frames.push_back(f);
   }

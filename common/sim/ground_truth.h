@@ -20,6 +20,8 @@
 //         right: { ... } }
 //     - { index: 30, kind: wall, R, t,                 # wall frame -> left camera
 //         wall_distance: 2.0, wall_normal: [nx, ny, nz], wall_offset: d }   # n . X = d
+//     - { index: 31, kind: room, R, t,                 # room axes and centre -> left camera
+//         room_planes: [nx, ny, nz, d, ...] }          # its six faces, n . X = d, n out of the room
 //
 // Corner pixels are projected through the camera models (pixel centres at
 // integer coordinates). A corner is in_image when the lens images it (in
@@ -53,7 +55,7 @@ struct SimViewTruth {
 
 struct SimFrameTruth {
   int index = 0;
-  std::string kind;  // "board" or "wall"
+  std::string kind;  // "board", "wall" or "room"
   cv::Matx33d R = cv::Matx33d::eye();  // plane frame -> left camera: X = R (u, v, 0) + t
   cv::Vec3d t{0, 0, 0};
   // board
@@ -63,6 +65,8 @@ struct SimFrameTruth {
   double wall_distance = 0;
   cv::Vec3d wall_normal{0, 0, 1};
   double wall_offset = 0;
+  // room: its six faces n . X = d (left camera frame, n out of the room, d > 0)
+  std::vector<cv::Vec4d> room_planes;
 };
 
 struct SimTruth {

@@ -151,33 +151,51 @@ PatternSample DotWallPattern::Miss() const { return {background_, kMissRegion}; 
 
 namespace {
 
+// Every vertex ray meets each plane k at p_k = M_k r (plane coordinates
+// (p0 / p2, p1 / p2), ahead along the ray when p2 > 0, at range 1 / p2): the
+// ray sees the plane it meets first, the largest p2. One plane: that plane
+// or a miss. A box seen from inside: the face the ray leaves it through.
 template <class Pattern>
-cv::Mat RenderPlaneWith(const RayMap& rays, const cv::Matx33d& plane_to_camera, const Pattern& pattern,
-                        int supersample) {
+cv::Mat RenderPlanesWith(const RayMap& rays, const std::vector<cv::Matx33d>& planes_to_camera,
+                         const std::vector<const Pattern*>& patterns, int supersample) {
   const int width = rays.vertex_cols() - 1, height = rays.vertex_rows() - 1;
-  const cv::Matx33d M = plane_to_camera.inv();
+  const size_t planes = planes_to_camera.size();
+  std::vector<cv::Matx33d> M;
+  for (const cv::Matx33d& H : planes_to_camera) M.push_back(H.inv());
   const int n = std::max(1, supersample);
   std::vector<double> offsets(n);
   for (int k = 0; k < n; ++k) offsets[k] = (k + 0.5) / n;
-  const PatternSample miss = pattern.Miss();
+  const PatternSample miss = patterns.front()->Miss();
   cv::Mat image(height, width, CV_32FC1);
+
+  // The plane a ray sees among the plane points q[0..planes), -1 for none.
+  auto nearest = [&](const cv::Vec3d* q) {
+    int best = -1;
+    for (size_t k = 0; k < planes; ++k)
+      if (q[k][2] > 0 && (best < 0 || q[k][2] > q[best][2])) best = int(k);
+    return best;
+  };
+  auto sample = [&](const cv::Vec3d* q, int plane) {
+    return plane >= 0 ? patterns[size_t(plane)]->At(q[plane][0] / q[plane][2], q[plane][1] / q[plane][2]) : miss;
+  };
 
   cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& range) {
     const int cols = width + 1;
     const int vertex_rows = range.end - range.start + 1;
-    std::vector<cv::Vec3d> p(size_t(vertex_rows) * cols);
-    std::vector<PatternSample> s(p.size());
-    std::vector<uint8_t> valid(p.size());
-    auto sample = [&](const cv::Vec3d& q) {
-      return q[2] > 0 ? pattern.At(q[0] / q[2], q[1] / q[2]) : miss;
-    };
+    const size_t vertices = size_t(vertex_rows) * cols;
+    std::vector<cv::Vec3d> p(vertices * planes);  // vertex k's plane points at p[k * planes ...]
+    std::vector<PatternSample> s(vertices);
+    std::vector<int> plane(vertices);
+    std::vector<uint8_t> valid(vertices);
+    std::vector<cv::Vec3d> q(planes);
     for (int j = 0; j < vertex_rows; ++j)
       for (int i = 0; i < cols; ++i) {
         const size_t k = size_t(j) * cols + i;
         const cv::Vec3f& r = rays.Ray(i, range.start + j);
         valid[k] = RayMap::IsRay(r);
-        p[k] = M * cv::Vec3d(r[0], r[1], r[2]);
-        s[k] = valid[k] ? sample(p[k]) : PatternSample{0, kInvalidRegion};
+        for (size_t m = 0; m < planes; ++m) p[k * planes + m] = M[m] * cv::Vec3d(r[0], r[1], r[2]);
+        plane[k] = nearest(&p[k * planes]);
+        s[k] = valid[k] ? sample(&p[k * planes], plane[k]) : PatternSample{0, kInvalidRegion};
       }
     for (int y = range.start; y < range.end; ++y) {
       float* out = image.ptr<float>(y);
@@ -189,17 +207,20 @@ cv::Mat RenderPlaneWith(const RayMap& rays, const cv::Matx33d& plane_to_camera, 
           continue;
         }
         const int64_t region = s[k00].region;
-        if (s[k10].region == region && s[k01].region == region && s[k11].region == region) {
+        const int k = plane[k00];
+        const bool one_plane = plane[k10] == k && plane[k01] == k && plane[k11] == k;
+        if (one_plane && s[k10].region == region && s[k01].region == region && s[k11].region == region) {
           out[x] = s[k00].value;
           continue;
         }
-        const cv::Vec3d &p00 = p[k00], &p10 = p[k10], &p01 = p[k01], &p11 = p[k11];
-        if (p00[2] > 0 && p10[2] > 0 && p01[2] > 0 && p11[2] > 0) {
+        if (one_plane && k >= 0) {
+          const cv::Vec3d &p00 = p[k00 * planes + k], &p10 = p[k10 * planes + k], &p01 = p[k01 * planes + k],
+                          &p11 = p[k11 * planes + k];
           const double u[4] = {p00[0] / p00[2], p10[0] / p10[2], p01[0] / p01[2], p11[0] / p11[2]};
           const double v[4] = {p00[1] / p00[2], p10[1] / p10[2], p01[1] / p01[2], p11[1] / p11[2]};
           float value = 0;
-          if (pattern.Uniform(*std::min_element(u, u + 4), *std::max_element(u, u + 4),
-                                       *std::min_element(v, v + 4), *std::max_element(v, v + 4), &value)) {
+          if (patterns[size_t(k)]->Uniform(*std::min_element(u, u + 4), *std::max_element(u, u + 4),
+                                           *std::min_element(v, v + 4), *std::max_element(v, v + 4), &value)) {
             out[x] = value;
             continue;
           }
@@ -207,10 +228,14 @@ cv::Mat RenderPlaneWith(const RayMap& rays, const cv::Matx33d& plane_to_camera, 
         double sum = 0;
         for (int sy = 0; sy < n; ++sy) {
           const double b = offsets[sy];
-          const cv::Vec3d left = (1 - b) * p00 + b * p01, right = (1 - b) * p10 + b * p11;
           for (int sx = 0; sx < n; ++sx) {
             const double a = offsets[sx];
-            sum += sample((1 - a) * left + a * right).value;
+            for (size_t m = 0; m < planes; ++m) {
+              const cv::Vec3d left = (1 - b) * p[k00 * planes + m] + b * p[k01 * planes + m];
+              const cv::Vec3d right = (1 - b) * p[k10 * planes + m] + b * p[k11 * planes + m];
+              q[m] = (1 - a) * left + a * right;
+            }
+            sum += sample(q.data(), nearest(q.data())).value;
           }
         }
         out[x] = float(sum / (n * n));
@@ -226,10 +251,16 @@ cv::Mat RenderPlane(const RayMap& rays, const cv::Matx33d& plane_to_camera, cons
                     int supersample) {
   // The patterns the simulator knows are final classes: called directly, no virtual call per sample.
   if (const auto* board = dynamic_cast<const BoardPattern*>(&pattern))
-    return RenderPlaneWith(rays, plane_to_camera, *board, supersample);
+    return RenderPlanesWith<BoardPattern>(rays, {plane_to_camera}, {board}, supersample);
   if (const auto* wall = dynamic_cast<const DotWallPattern*>(&pattern))
-    return RenderPlaneWith(rays, plane_to_camera, *wall, supersample);
-  return RenderPlaneWith(rays, plane_to_camera, pattern, supersample);
+    return RenderPlanesWith<DotWallPattern>(rays, {plane_to_camera}, {wall}, supersample);
+  return RenderPlanesWith<PlanePattern>(rays, {plane_to_camera}, {&pattern}, supersample);
+}
+
+cv::Mat RenderRoom(const RayMap& rays, const std::vector<cv::Matx33d>& faces_to_camera,
+                   const std::vector<const DotWallPattern*>& patterns, int supersample) {
+  CV_Assert(!faces_to_camera.empty() && faces_to_camera.size() == patterns.size());
+  return RenderPlanesWith<DotWallPattern>(rays, faces_to_camera, patterns, supersample);
 }
 
 cv::Mat FinishImage(const cv::Mat& linear, const SimRendering& rendering, uint64_t noise_seed) {

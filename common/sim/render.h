@@ -102,6 +102,13 @@ class DotWallPattern final : public PlanePattern {
 cv::Mat RenderPlane(const RayMap& rays, const cv::Matx33d& plane_to_camera, const PlanePattern& pattern,
                     int supersample);
 
+// The linear grey image of the inside of a convex box of textured faces, the
+// camera inside: each ray sees the face it leaves the box through, the
+// nearest of the faces' planes ahead along it (face k's points (u, v, 0) map
+// to camera points by faces_to_camera[k]).
+cv::Mat RenderRoom(const RayMap& rays, const std::vector<cv::Matx33d>& faces_to_camera,
+                   const std::vector<const DotWallPattern*>& patterns, int supersample);
+
 // Optics and sensor: Gaussian blur, gamma, Gaussian noise from `noise_seed`,
 // rounding to CV_8UC1.
 cv::Mat FinishImage(const cv::Mat& linear, const SimRendering& rendering, uint64_t noise_seed);

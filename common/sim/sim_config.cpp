@@ -374,6 +374,29 @@ SimWallScene ParseWall(Fields fields) {
   return wall;
 }
 
+SimRoomScene ParseRoom(Fields fields, const SimConfig& config) {
+  SimRoomScene room;
+  room.frames = fields.Whole("frames", room.frames, 1, 100000);
+  if (fields.Has("size")) {
+    const auto size = fields.Reals("size", 3, 0, 1000);
+    room.size = cv::Vec3d(size[0], size[1], size[2]);
+    if (!(size[0] > 0 && size[1] > 0 && size[2] > 0)) fields.Fail(fields.Path("size"), "must be positive");
+  }
+  if (fields.Has("centre")) {
+    const auto centre = fields.Reals("centre", 3, -1000, 1000);
+    room.centre = cv::Vec3d(centre[0], centre[1], centre[2]);
+  }
+  // Both camera centres inside: the left at the origin, the right at -R^T T.
+  for (const cv::Vec3d& camera : {cv::Vec3d(0, 0, 0), cv::Vec3d(-(config.R.t() * config.T))})
+    for (int axis = 0; axis < 3; ++axis)
+      if (!(std::abs(camera[axis] - room.centre[axis]) < room.size[axis] / 2))
+        fields.Fail(fields.Path("centre"), "both cameras must be inside the room");
+  room.dot_size = fields.Real("dot_size", room.dot_size, 0, 100, true);
+  room.density = fields.Real("density", room.density, 0, 1);
+  fields.Finish();
+  return room;
+}
+
 SimRendering ParseRendering(Fields fields) {
   SimRendering r;
   r.supersample = fields.Whole("supersample", r.supersample, 1, 16);
@@ -425,11 +448,12 @@ SimConfig ParseSimConfig(const std::string& yaml, const std::string& source, con
   }
   rig.Finish();
 
-  if (!top.Has("scene")) top.Fail("scene", "is required (board and/or wall)");
+  if (!top.Has("scene")) top.Fail("scene", "is required (a board, a wall or a room)");
   Fields scene = top.Map("scene");
   if (scene.Has("board")) config.board = ParseBoard(scene.Map("board"));
   if (scene.Has("wall")) config.wall = ParseWall(scene.Map("wall"));
-  if (!config.board && !config.wall) scene.Fail("scene", "needs a board, a wall or both");
+  if (scene.Has("room")) config.room = ParseRoom(scene.Map("room"), config);
+  if (!config.board && !config.wall && !config.room) scene.Fail("scene", "needs a board, a wall or a room");
   scene.Finish();
 
   if (top.Has("rendering")) config.rendering = ParseRendering(top.Map("rendering"));

@@ -12,7 +12,8 @@
 //     right: {...}                # optional: the same camera as left
 //   scene:
 //     board: {spec: chessboard:9x6:0.05, poses: 30, ...}  # optional
-//     wall:  {frames: 5, distance: 2.0, ...}              # optional (one of the two at least)
+//     wall:  {frames: 5, distance: 2.0, ...}              # optional
+//     room:  {frames: 1, size: [4, 3, 4], centre: [0, 0, 0], ...}  # optional (one scene at least)
 //   rendering: {supersample: 4, blur_sigma: 0.6, noise_sigma: 1.0, ...}
 //
 // Camera fields:
@@ -99,6 +100,20 @@ struct SimWallScene {
   double density = 0.5;
 };
 
+// Room frames: the rig inside a box room, axis-aligned with the left
+// camera, its six faces covered with random-dot textures (each face its own,
+// like the wall's). `centre` is the box's centre in the left camera's frame;
+// both cameras must be inside. Every ray meets exactly one face (the first
+// the ray leaves the box through), so a lens of any field, beyond 180
+// degrees too, sees texture everywhere.
+struct SimRoomScene {
+  int frames = 1;
+  cv::Vec3d size{4, 3, 4};    // metres along x (width), y (height, down), z (depth)
+  cv::Vec3d centre{0, 0, 0};  // metres, left camera frame
+  double dot_size = 0.02;     // metres
+  double density = 0.5;
+};
+
 // From the scene to 8-bit pixels. Grey levels are those of the sensor before
 // gamma: black and white parts of the scene, and the background around the
 // board. Each pixel averages supersample x supersample points of the scene
@@ -124,6 +139,7 @@ struct SimConfig {
   cv::Vec3d T{-0.3, 0, 0};
   std::optional<SimBoardScene> board;
   std::optional<SimWallScene> wall;
+  std::optional<SimRoomScene> room;
   SimRendering rendering;
   std::string truth_path;  // from `truth:` (relative to the working folder); "" when not given
 };

@@ -27,9 +27,10 @@ std::optional<StereoPair> SimSource::Next() {
   std::tie(pair.left, pair.right) = simulator_->Render(frame);
   const SimFrame& f = simulator_->frames()[frame];
   pair.label = "sim frame " + std::to_string(frame) + "/" + std::to_string(simulator_->frame_count()) +
-               (f.kind == SimFrame::Kind::wall
-                    ? std::string(" (wall)")
-                    : std::string(" (board, aimed at ") + (f.target_camera == 0 ? "left)" : "right)"));
+               (f.kind == SimFrame::Kind::wall   ? std::string(" (wall)")
+                : f.kind == SimFrame::Kind::room ? std::string(" (room)")
+                                                 : std::string(" (board, aimed at ") +
+                                                       (f.target_camera == 0 ? "left)" : "right)"));
   ++rendered_;
   return pair;
 }

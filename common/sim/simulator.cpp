@@ -290,6 +290,39 @@ std::vector<SimFrame> PlanBoardFrames(const SimConfig& config, const Projector* 
   return frames;
 }
 
+// The six faces of an axis-aligned box (centre, size) as planes
+// X = R (u, v, 0) + t whose z axis points out of the box.
+std::vector<SimFrame> BoxFaces(const cv::Vec3d& centre, const cv::Vec3d& size) {
+  std::vector<SimFrame> faces;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {1.0, -1.0}) {
+      cv::Vec3d normal(0, 0, 0), along(0, 0, 0);
+      normal[axis] = side;
+      along[(axis + 1) % 3] = 1;
+      const cv::Vec3d across = normal.cross(along);
+      SimFrame face;
+      face.kind = SimFrame::Kind::room;
+      face.R = cv::Matx33d(along[0], across[0], normal[0], along[1], across[1], normal[1], along[2], across[2],
+                           normal[2]);
+      face.t = centre + normal * (size[axis] / 2);
+      faces.push_back(face);
+    }
+  return faces;
+}
+
+// A plane X = R (u, v, 0) + t of the left camera's frame in camera `index`
+// (X_right = R_rig X + T_rig).
+void InCamera(const SimFrame& plane, int index, const SimConfig& config, cv::Matx33d* R, cv::Vec3d* t) {
+  *R = index == 0 ? plane.R : config.R * plane.R;
+  *t = index == 0 ? plane.t : config.R * plane.t + config.T;
+}
+
+// The plane-to-camera homography [r1 r2 t].
+cv::Matx33d Homography(const cv::Matx33d& R, const cv::Vec3d& t) {
+  return {R(0, 0), R(0, 1), t[0], R(1, 0), R(1, 1), t[1], R(2, 0), R(2, 1), t[2]};
+}
+
+
 }  // namespace
 
 Simulator::Simulator(SimConfig config)
@@ -314,24 +347,41 @@ Simulator::Simulator(SimConfig config)
     wall_ = std::make_unique<DotWallPattern>(wall.dot_size, wall.density, MixSeed({config_.seed, 0xd07}),
                                              config_.rendering);
   }
-}
-
-void Simulator::PlaneInCamera(int frame, int index, cv::Matx33d* R, cv::Vec3d* t) const {
-  const SimFrame& f = frames_.at(size_t(frame));
-  if (index == 0) {
-    *R = f.R;
-    *t = f.t;
-  } else {
-    *R = config_.R * f.R;
-    *t = config_.R * f.t + config_.T;
+  if (config_.room) {
+    const SimRoomScene& room = *config_.room;
+    room_faces_ = BoxFaces(room.centre, room.size);
+    for (size_t k = 0; k < room_faces_.size(); ++k)
+      room_patterns_.push_back(std::make_unique<DotWallPattern>(
+          room.dot_size, room.density, MixSeed({config_.seed, 0x2003, k}), config_.rendering));
+    SimFrame frame;
+    frame.kind = SimFrame::Kind::room;
+    frame.t = room.centre;
+    for (int i = 0; i < room.frames; ++i) frames_.push_back(frame);
   }
 }
 
+
+void Simulator::PlaneInCamera(int frame, int index, cv::Matx33d* R, cv::Vec3d* t) const {
+  InCamera(frames_.at(size_t(frame)), index, config_, R, t);
+}
+
 cv::Mat Simulator::RenderLinear(int frame, int index) const {
+  if (frames_.at(size_t(frame)).kind == SimFrame::Kind::room) {
+    std::vector<cv::Matx33d> faces;
+    std::vector<const DotWallPattern*> patterns;
+    for (size_t k = 0; k < room_faces_.size(); ++k) {
+      cv::Matx33d R;
+      cv::Vec3d t;
+      InCamera(room_faces_[k], index, config_, &R, &t);
+      faces.push_back(Homography(R, t));
+      patterns.push_back(room_patterns_[k].get());
+    }
+    return RenderRoom(rays(index), faces, patterns, config_.rendering.supersample);
+  }
   cv::Matx33d R;
   cv::Vec3d t;
   PlaneInCamera(frame, index, &R, &t);
-  const cv::Matx33d H(R(0, 0), R(0, 1), t[0], R(1, 0), R(1, 1), t[1], R(2, 0), R(2, 1), t[2]);
+  const cv::Matx33d H = Homography(R, t);
   const PlanePattern* pattern = nullptr;
   if (frames_[frame].kind == SimFrame::Kind::wall) {
     pattern = wall_.get();
@@ -385,6 +435,12 @@ SimFrameTruth Simulator::FrameTruth(int frame) const {
     truth.target = f.target_camera == 0 ? "left" : "right";
     truth.left = ViewTruth(frame, 0);
     truth.right = ViewTruth(frame, 1);
+  } else if (f.kind == SimFrame::Kind::room) {
+    truth.kind = "room";
+    for (const SimFrame& face : room_faces_) {
+      const cv::Vec3d normal(face.R(0, 2), face.R(1, 2), face.R(2, 2));
+      truth.room_planes.emplace_back(normal[0], normal[1], normal[2], normal.dot(face.t));
+    }
   } else {
     truth.kind = "wall";
     truth.wall_distance = config_.wall->distance;

@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
                      "FILE.yaml, then from every STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
-                     "built; the pairs it skips are counted as dropped in PROCESS_STATUS.");
+                     "built; the pairs it skips are counted as dropped in PROCESS_STATUS. With "
+                     "--save-rectified it writes the rectified pairs as PNG files to inspect.");
   ws::MatchConfig config;
   std::string calib_file;
   auto& m = config.matcher;
@@ -52,6 +53,14 @@ int main(int argc, char** argv) {
                  "2 makes the message 4x smaller)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  auto* save_dir = app.add_option("--save-rectified", config.save_rectified.dir,
+                                  "Folder for the rectified pairs as PNG, left_NNNNNN.png and "
+                                  "right_NNNNNN.png (NNNNNN: the frame id, 6 digits; created if needed)");
+  app.add_option("--save-every", config.save_rectified.save_every,
+                 "With --save-rectified: write the pairs whose frame id is a multiple of N")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str()
+      ->needs(save_dir);
   if (auto rc = cli.Parse(argc, argv)) return *rc;
   config.rectify.mode = ws::ParseRectificationMode(rectification);
 

@@ -95,7 +95,8 @@ TEST(CloudFilterOptions, ValuesOutOfRangeNameTheOptionAndReason) {
   EXPECT_EQ(with([](auto& c) { c.voxel_leaf = -0.01; }), "--voxel-leaf: must be > 0, got -0.01");
   EXPECT_EQ(with([](auto& c) { c.z_min = 0.5, c.z_max = 0.4; }),
             "--z-max: must be greater than --z-min (0.5), got 0.4");
-  EXPECT_EQ(with([](auto& c) { c.z_min = -1; }), "--z-min: must be >= 0, got -1");
+  EXPECT_EQ(with([](auto& c) { c.z_min = -1; }), "valid") << "a lat-lon cloud reaches behind the image plane";
+  EXPECT_EQ(with([](auto& c) { c.z_min = -INFINITY; }), "--z-min: must be a finite number, got -inf");
   EXPECT_EQ(with([](auto& c) { c.outliers_stddev_mul = INFINITY; }),
             "--outliers-stddev-mul: must be a finite number, got inf");
   EXPECT_EQ(with([](auto& c) { c.outliers_mean_k = 0; }), "--outliers-mean-k: must be >= 1, got 0");

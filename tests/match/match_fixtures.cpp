@@ -1,7 +1,12 @@
 #include "match_fixtures.h"
 
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+
 #include "calib/calib_file.h"
 #include "sim/sim_config.h"
+#include "test_support.h"
 
 namespace ws::test {
 namespace {
@@ -58,6 +63,16 @@ void WriteCalibrationFile(const std::string& path, const StereoRig& rig) {
   file.R = rig.R;
   file.T = rig.T;
   calib::WriteCalibrationFile(path, file);
+}
+
+std::string FisheyeSceneConfig(const std::string& dir, const std::string& scene) {
+  YAML::Node config = YAML::LoadFile(SourceDir() + "/config/sim/fisheye.yaml");
+  const YAML::Node kept = YAML::Clone(config["scene"][scene]);
+  config["scene"] = YAML::Node(YAML::NodeType::Map);
+  config["scene"][scene] = kept;
+  const std::string path = dir + "/fisheye-" + scene + ".yaml";
+  std::ofstream(path) << config;
+  return path;
 }
 
 }  // namespace ws::test

@@ -30,4 +30,8 @@ StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind);
 // stereo-calibrate would with a perfect solution.
 void WriteCalibrationFile(const std::string& path, const StereoRig& rig);
 
+// config/sim/fisheye.yaml (the 200-degree rig) with one of its scenes
+// ("wall", "room"), written as DIR/fisheye-SCENE.yaml; its path.
+std::string FisheyeSceneConfig(const std::string& dir, const std::string& scene);
+
 }  // namespace ws::test

@@ -65,6 +65,32 @@ TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
             CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI / 2));
 }
 
+// The range-accuracy formula against the triangulation itself: the range
+// change of a small disparity change, over each image.
+TEST(RayTriangulation, RangeChangeIsTheTriangulationsDerivative) {
+  const ws::StereoRig fisheye = RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  for (const ws::RectificationMode mode : {ws::RectificationMode::kPinhole, ws::RectificationMode::kLatLon}) {
+    const ws::Rectification rect = ws::BuildRectification(fisheye, {1.0, {}, mode});
+    int checked = 0;
+    for (int v = 10; v < rect.size.height; v += 97)
+      for (int u = 40; u < rect.size.width; u += 89)
+        for (const double d : {2.0, 10.0, 30.0}) {
+          const auto near = ws::TriangulateDisparity(rect, u, v, d), far = ws::TriangulateDisparity(rect, u, v, d - 1e-4);
+          if (!near || !far) continue;
+          const double numeric = (cv::norm(*far) - cv::norm(*near)) / 1e-4 * 0.1;
+          EXPECT_NEAR(ws::RangeChange(rect, u, v, d), numeric, 1e-3 * numeric)
+              << ws::RectificationModeName(mode) << " (" << u << ", " << v << ") d " << d;
+          ++checked;
+        }
+    EXPECT_GT(checked, 100) << ws::RectificationModeName(mode);
+  }
+  // Pinhole, centre row: dZ = Z^2 / (f b) per pixel.
+  const ws::Rectification pinhole = ws::BuildRectification(fisheye);
+  const double z = pinhole.f * pinhole.baseline / 20;
+  EXPECT_NEAR(ws::RangeChange(pinhole, pinhole.cx, pinhole.cy, 20, 1), z * z / (pinhole.f * pinhole.baseline), 1e-9);
+  EXPECT_TRUE(std::isnan(ws::RangeChange(pinhole, 10, 10, 0)));
+}
+
 TEST(RayTriangulation, PinholeIsFbOverD) {
   const ws::StereoRig demo = RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
   const ws::Rectification rect = ws::BuildRectification(demo);

@@ -1,8 +1,10 @@
 #include "wall_analysis.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "models/camera_model.h"
+#include "rectify/ray_triangulation.h"
 
 namespace ws::test {
 namespace {
@@ -16,15 +18,35 @@ bool Inside(const std::optional<Eigen::Vector2d>& pixel, const CameraModel& mode
 
 cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const cv::Vec3d& normal,
                           double offset) {
+  return TrueSceneDisparity(rect, rig, {cv::Vec4d(normal[0], normal[1], normal[2], offset)});
+}
+
+int FirstPlaneHit(const std::vector<cv::Vec4d>& planes, const cv::Vec3d& ray, double* scale) {
+  int first = -1;
+  for (size_t k = 0; k < planes.size(); ++k) {
+    const double s = planes[k][3] / cv::Vec3d(planes[k][0], planes[k][1], planes[k][2]).dot(ray);
+    if (s > 0 && (first < 0 || s < *scale)) first = int(k), *scale = s;
+  }
+  return first;
+}
+
+cv::Mat TrueSceneDisparity(const Rectification& rect, const StereoRig& rig, const std::vector<cv::Vec4d>& planes,
+                           cv::Mat* plane_index) {
   const Camera left(rig.left), right(rig.right);
-  const cv::Vec3d n = rect.R_left * normal;  // the wall in the rectified frame
+  std::vector<cv::Vec4d> rectified;  // the planes in the rectified frame
+  for (const cv::Vec4d& p : planes) {
+    const cv::Vec3d n = rect.R_left * cv::Vec3d(p[0], p[1], p[2]);
+    rectified.emplace_back(n[0], n[1], n[2], p[3]);
+  }
   cv::Mat disparity(rect.size, CV_32FC1, cv::Scalar(0));
+  if (plane_index) *plane_index = cv::Mat(rect.size, CV_32SC1, cv::Scalar(-1));
   cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
     for (int v = rows.start; v < rows.end; ++v)
       for (int u = 0; u < rect.size.width; ++u) {
         const cv::Vec3d ray = RectifiedRay(rect, u, v);
-        const double scale = offset / n.dot(ray);
-        if (!(scale > 0)) continue;
+        double scale = 0;
+        const int hit = FirstPlaneHit(rectified, ray, &scale);
+        if (hit < 0) continue;
         const cv::Vec3d X = rect.R_left.t() * (ray * scale);  // left camera frame
         const Eigen::Vector3d Xl(X[0], X[1], X[2]);
         if (!Inside(left.Project(Xl), rig.left)) continue;
@@ -34,9 +56,25 @@ cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const
         const double d = u - right_pixel.x;
         if (u - d < 0 || !(d > 0)) continue;
         disparity.at<float>(v, u) = float(d);
+        if (plane_index) plane_index->at<int>(v, u) = hit;
       }
   });
   return disparity;
+}
+
+RangeAccuracy PredictRangeAccuracy(const Rectification& rect, const cv::Mat& truth) {
+  std::vector<double> changes;
+  for (int v = 0; v < truth.rows; ++v)
+    for (int u = 0; u < truth.cols; ++u)
+      if (truth.at<float>(v, u) > 0) changes.push_back(RangeChange(rect, u, v, truth.at<float>(v, u)));
+  RangeAccuracy accuracy;
+  if (changes.empty()) return accuracy;
+  const int col = truth.cols / 2, row = truth.rows / 2;
+  if (truth.at<float>(row, col) > 0) accuracy.centre = RangeChange(rect, col, row, truth.at<float>(row, col));
+  std::sort(changes.begin(), changes.end());
+  accuracy.median = changes[changes.size() / 2];
+  accuracy.p90 = changes[changes.size() * 9 / 10];
+  return accuracy;
 }
 
 DisparityErrors CompareDisparity(const cv::Mat& disparity, const cv::Mat& truth) {

@@ -23,6 +23,26 @@ namespace ws::test {
 cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const cv::Vec3d& normal,
                           double offset);
 
+// The same for a scene of planes n . X = d (left camera frame) seen from
+// inside, a box room: each ray sees the first plane ahead along it.
+// *plane_index (CV_32SC1, when given): that plane's index where the
+// disparity is known, else -1.
+cv::Mat TrueSceneDisparity(const Rectification& rect, const StereoRig& rig, const std::vector<cv::Vec4d>& planes,
+                           cv::Mat* plane_index = nullptr);
+
+// The index of the first of `planes` (n . X = d) the ray from the origin
+// meets ahead, and *scale, the ray's multiple that reaches it; -1 for none.
+int FirstPlaneHit(const std::vector<cv::Vec4d>& planes, const cv::Vec3d& ray, double* scale);
+
+// The predicted range change for a 0.1 px disparity error
+// (ray_triangulation.h's RangeChange) over the pixels where `truth` holds a
+// disparity: at the image's centre pixel (0 when it holds none), the median
+// and the 90th percentile, metres.
+struct RangeAccuracy {
+  double centre = 0, median = 0, p90 = 0;
+};
+RangeAccuracy PredictRangeAccuracy(const Rectification& rect, const cv::Mat& truth);
+
 struct DisparityErrors {
   double density = 0;   // of the overlapping pixels, those with a disparity
   double bias = 0;      // mean of d - d_true over those within 1 px, pixels

@@ -23,27 +23,32 @@ SimTruth CaptureWall(const std::string& dir, const std::string& config, int fram
   return LoadSimTruth(dir + "/truth.yaml");
 }
 
-WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
-                     const std::string& name, int frames, const std::string& num_disparities,
-                     const WallChainOptions& options) {
+ChainLogs RunMatchAndCloud(const std::string& dir, const StereoRig& rig, const std::string& name,
+                           const std::string& num_disparities, const WallChainOptions& options) {
   const std::string calib = dir + "/" + name + ".yaml";
-  const std::string match = dir + "/" + name + "-match.lcmlog";
-  const std::string cloud = dir + "/" + name + "-cloud.lcmlog";
+  const ChainLogs logs{dir + "/" + name + "-match.lcmlog", dir + "/" + name + "-cloud.lcmlog"};
   WriteCalibrationFile(calib, rig);
   std::vector<std::string> argv = {"stereo-match", "--log-dir", dir, "--config", options.match_config,
                                     "--calib", calib, "--num-disparities", num_disparities, "--focal-scale",
                                     std::to_string(options.focal_scale), "--rectification",
                                     RectificationModeName(options.mode), "--in-url",
                                     "file://" + dir + "/images.lcmlog?speed=0", "--out-url",
-                                    "file://" + match + "?mode=w"};
+                                    "file://" + logs.match + "?mode=w"};
   argv.insert(argv.end(), options.match_args.begin(), options.match_args.end());
   auto r = RunCommand(argv, 120);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  r = RunCommand({"stereo-cloud", "--log-dir", dir, "--config", options.cloud_config, "--in-url",
-                  "file://" + match + "?speed=0", "--out-url", "file://" + cloud + "?mode=w"},
-                 120);
+  argv = {"stereo-cloud", "--log-dir", dir, "--config", options.cloud_config, "--in-url",
+          "file://" + logs.match + "?speed=0", "--out-url", "file://" + logs.cloud + "?mode=w"};
+  argv.insert(argv.end(), options.cloud_args.begin(), options.cloud_args.end());
+  r = RunCommand(argv, 120);
   EXPECT_EQ(r.exit_code, 0) << r.output;
+  return logs;
+}
 
+WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
+                     const std::string& name, int frames, const std::string& num_disparities,
+                     const WallChainOptions& options) {
+  const ChainLogs logs = RunMatchAndCloud(dir, rig, name, num_disparities, options);
   // The truth, seen through the true rig's rectification (the frame the
   // cloud is in only differs by the calibration's own rectifying rotation,
   // which is the same here: both calibrations share R and T).
@@ -53,9 +58,9 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Stereo
   const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);
   const cv::Vec3d normal = rect.R_left * wall.wall_normal;
 
-  const auto match_events = ReadLog(match);
+  const auto match_events = ReadLog(logs.match);
   const auto disparities = Messages<widestereo::disparity_t>(match_events, channel::kStereoDisparity);
-  const auto cloud_events = ReadLog(cloud);
+  const auto cloud_events = ReadLog(logs.cloud);
   const auto clouds = Messages<widestereo::point_cloud_t>(cloud_events, channel::kStereoCloudFiltered);
   const auto stats = Messages<widestereo::cloud_stats_t>(cloud_events, channel::kCloudStats);
   EXPECT_EQ(disparities.size(), size_t(frames));
@@ -79,6 +84,5 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Stereo
   }
   return run;
 }
-
 
 }  // namespace ws::test

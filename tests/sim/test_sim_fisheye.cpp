@@ -183,3 +183,40 @@ TEST(SimFisheye, DetectedCornersAreWhereTheModelProjectsThemBeyond90Degrees) {
 }
 
 }  // namespace
+
+namespace {
+
+// The box room: its six faces in the truth file, and every pixel of the
+// image circle textured (a ray always meets a face), where the wall frame
+// leaves the rays past 90 degrees on the background.
+TEST(SimFisheye, EveryRayInTheRoomMeetsATexturedFace) {
+  const Simulator& simulator = FisheyeSimulator();
+  const int room = simulator.frame_count() - 1, wall = room - 1;
+  ASSERT_EQ(simulator.frames()[size_t(room)].kind, SimFrame::Kind::room);
+  ASSERT_EQ(simulator.frames()[size_t(wall)].kind, SimFrame::Kind::wall);
+  const std::string dir = TempDir("sim-fisheye-room");
+  WriteSimTruth(dir + "/truth.yaml", simulator.Truth());
+  const SimFrameTruth truth = LoadSimTruth(dir + "/truth.yaml").frames[size_t(room)];
+  ASSERT_EQ(truth.kind, "room");
+  ASSERT_EQ(truth.room_planes.size(), 6u);
+  const SimRoomScene& scene = *simulator.config().room;
+  for (int axis = 0; axis < 3; ++axis) {
+    // Face 2 axis looks along +axis, 2 axis + 1 along -axis; distances from the left camera.
+    EXPECT_NEAR(truth.room_planes[size_t(2 * axis)][axis], 1, 1e-12);
+    EXPECT_NEAR(truth.room_planes[size_t(2 * axis)][3], scene.centre[axis] + scene.size[axis] / 2, 1e-9);
+    EXPECT_NEAR(truth.room_planes[size_t(2 * axis + 1)][3], scene.size[axis] / 2 - scene.centre[axis], 1e-9);
+  }
+  const float background = float(simulator.config().rendering.background);
+  for (int camera = 0; camera < 2; ++camera) {
+    const cv::Mat room_image = simulator.RenderLinear(room, camera), wall_image = simulator.RenderLinear(wall, camera);
+    const cv::Mat circle = room_image > 0;  // past the image circle: black
+    const double missed_room = cv::countNonZero(room_image == background) / double(cv::countNonZero(circle));
+    const double missed_wall = cv::countNonZero(wall_image == background) / double(cv::countNonZero(circle));
+    std::printf("[ room ] camera %d: background in %.4f of the image circle (the wall frame: %.3f)\n", camera,
+                missed_room, missed_wall);
+    EXPECT_LT(missed_room, 0.001);
+    EXPECT_GT(missed_wall, 0.05);
+  }
+}
+
+}  // namespace
