@@ -102,7 +102,8 @@ void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, cons
 // --knots auto (options.h): each count of kKnotLadder solved on every
 // inlier corner from the solved curve (ForField over the same field, no
 // outlier rejection, to kRankingTolerance) and cross-validated, until two
-// counts in a row do no better than the best; then the count
+// counts in a row do no better than the best held-out RMS while fitting
+// about as well as the best fit (kMissedFit); then the count
 // ChooseWithinNoise keeps solved as any count is (SolveAll).
 void ChooseKnots(const CalibrationOptions& options, const std::string& what, MonoState* s) {
   const CameraBlock solved = s->problem.cameras[0];
@@ -112,6 +113,8 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
   std::vector<std::vector<double>> folds;
   std::vector<CrossValidation> cvs;
   size_t best = 0;
+  double best_fit = INFINITY;  // the lowest fitted RMS so far
+  int saturated = 0;           // counts in a row that fit about as well as the best fit
   for (int knots : kKnotLadder) {
     CalibrationOptions o = options;
     o.knots = knots;
@@ -131,7 +134,9 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
     folds.push_back(cv.fold_rms_px[0]);
     cvs.push_back(cv);
     if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;
-    if (solves.size() >= best + 3) break;
+    best_fit = std::min(best_fit, s->knot_curve.back().rms_px);
+    saturated = s->knot_curve.back().rms_px <= kMissedFit * best_fit ? saturated + 1 : 0;
+    if (solves.size() >= best + 3 && saturated >= 2) break;
   }
   const int chosen = ChooseWithinNoise(folds);
   s->poses = poses;
