@@ -25,24 +25,13 @@
 #include "health/extrinsic_refine.h"
 #include "health/frame_checker.h"
 #include "sim/simulator.h"
+#include "bench_support.h"
+
+using ws::bench::Median;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180;
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-ws::StereoRig TrueRig(const ws::SimConfig& sim) {
-  ws::StereoRig rig;
-  rig.left = sim.left;
-  rig.right = sim.right;
-  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = sim.R.val[i];
-  for (int i = 0; i < 3; ++i) rig.T(i) = sim.T[i];
-  return rig;
-}
 
 ws::StereoRig Turned(const ws::StereoRig& rig, const Eigen::Vector3d& axis, double deg) {
   const Eigen::Matrix3d Q = Eigen::AngleAxisd(deg * kDeg, axis).toRotationMatrix();
@@ -115,7 +104,7 @@ int main(int argc, char** argv) {
   }
   const ws::SimConfig sim = ws::DefaultSimConfig();
   const ws::Simulator simulator(sim);
-  const ws::StereoRig truth = TrueRig(sim);
+  const ws::StereoRig truth = ws::bench::TrueRig(sim);
   const int first_wall = int(sim.board->poses);
   Pairs wall;
   for (int f = first_wall; f < first_wall + 3; ++f) wall.push_back(simulator.Render(f));

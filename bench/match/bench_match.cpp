@@ -18,19 +18,12 @@
 #include "lcm_io/image_codec.h"
 #include "match/match_node.h"
 #include "sim/simulator.h"
+#include "bench_support.h"
+
+using ws::bench::Median;
+using ws::bench::Milliseconds;
 
 namespace {
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double Milliseconds(const std::function<void()>& fn) {
-  const auto start = std::chrono::steady_clock::now();
-  fn();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectification& rect,
              const widestereo::stereo_frame_t& frame, int runs) {
@@ -74,12 +67,7 @@ int main(int argc, char** argv) {
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(left, 0);
   frame.right = ws::MatToImage(right, 0);
-  ws::StereoRig rig;
-  rig.left = sim.left;
-  rig.right = sim.right;
-  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = sim.R.val[i];
-  for (int i = 0; i < 3; ++i) rig.T(i) = sim.T[i];
-  const ws::Rectification rect = ws::BuildRectification(rig);
+  const ws::Rectification rect = ws::BuildRectification(ws::bench::TrueRig(sim));
   std::printf("%dx%d pair, median of %d alternating runs; ratios against bare OpenCV\n", left.cols, left.rows,
               runs);
 

@@ -21,28 +21,12 @@
 #include "lcm_io/image_codec.h"
 #include "match/match_node.h"
 #include "sim/simulator.h"
+#include "bench_support.h"
+
+using ws::bench::Median;
+using ws::bench::Milliseconds;
 
 namespace {
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double Milliseconds(const std::function<void()>& fn) {
-  const auto start = std::chrono::steady_clock::now();
-  fn();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-ws::StereoRig RigOf(const ws::SimConfig& sim) {
-  ws::StereoRig rig;
-  rig.left = sim.left;
-  rig.right = sim.right;
-  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = sim.R.val[i];
-  for (int i = 0; i < 3; ++i) rig.T(i) = sim.T[i];
-  return rig;
-}
 
 void Compare(const char* name, const ws::SimConfig& sim, int runs) {
   const ws::Simulator simulator(sim);
@@ -50,7 +34,7 @@ void Compare(const char* name, const ws::SimConfig& sim, int runs) {
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(left, 0);
   frame.right = ws::MatToImage(right, 0);
-  const ws::StereoRig rig = RigOf(sim);
+  const ws::StereoRig rig = ws::bench::TrueRig(sim);
   ws::RectifyOptions options[2];
   options[0].mode = ws::RectificationMode::kLatLon;
   options[1].mode = ws::RectificationMode::kPinhole;

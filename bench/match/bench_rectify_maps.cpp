@@ -18,19 +18,12 @@
 
 #include "rectify/rectification.h"
 #include "sim/sim_config.h"
+#include "bench_support.h"
+
+using ws::bench::Median;
+using ws::bench::Milliseconds;
 
 namespace {
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double Milliseconds(const std::function<void()>& fn) {
-  const auto start = std::chrono::steady_clock::now();
-  fn();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 ws::StereoRig TheiaRig(const std::string& kind) {
   const ws::SimConfig sim = ws::ParseSimConfig(
