@@ -1,5 +1,6 @@
 #include "match/matcher.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <opencv2/calib3d.hpp>
@@ -44,6 +45,13 @@ void CheckMatcherConfig(const MatcherConfig& c) {
   Require(c.uniqueness_ratio >= 0 && c.speckle_window >= 0 && c.speckle_range >= 0 &&
               c.texture_threshold >= 0 && c.p1_per_pixel >= 0 && c.p2_per_pixel > c.p1_per_pixel,
           "uniqueness_ratio, speckle and texture settings must be >= 0 and p2 > p1");
+}
+
+MatcherReach Reach(const MatcherConfig& config) {
+  const MatcherConfig c = AtMatchScale(config);
+  const int n = config.downscale, half = c.block_size / 2;
+  return {n * (std::max(0, c.min_disparity + c.num_disparities) + half), n * (std::max(0, -c.min_disparity) + half),
+          n * half};
 }
 
 cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
