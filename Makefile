@@ -45,6 +45,9 @@ test: build
 # readers, threads, models), the processes they run included, built with
 # -fsanitize=address,undefined: any report fails the test that triggered it.
 # The tests of targets not built are left out (ctest lists them *_NOT_BUILT).
+# ASAN_OPT: -O1 -g1 (line tables for the reports), not RelWithDebInfo's
+# -O2 -g: calib/problem.cpp, the heaviest file, took 363 s of CPU so against
+# more than 407 s (stopped unfinished); README "Reliability" has the figures.
 test-asan: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWS_SANITIZE=ON -DWS_BUILD_BENCH=OFF \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(ASAN_OPT)" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(ASAN_OPT)"

@@ -31,6 +31,12 @@ namespace {
 using namespace ws::test;
 namespace ch = ws::channel;
 
+// The sanitizers slow our own code several times over and OpenCV's not at
+// all, so the stages' shares of a frame's time change and the lag seen at
+// the output says nothing in make test-asan: like the memory bounds
+// (test_support.h), it is checked in the normal build only.
+constexpr bool kLagMeaningful = kMemoryBoundsMeaningful;
+
 struct Output {
   int64_t frame_id;
   int newest_sent;  // the newest frame id sent when it arrived
@@ -112,8 +118,10 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
     burst_outputs++;
     const int lag = outputs[k - 1].newest_sent - int(outputs[k].frame_id);
     worst_lag = std::max(worst_lag, lag);
-    EXPECT_LE(lag, 2) << "frame " << outputs[k].frame_id << " taken when " << outputs[k - 1].newest_sent
-                      << " had been sent";
+    if (kLagMeaningful) {
+      EXPECT_LE(lag, 2) << "frame " << outputs[k].frame_id << " taken when " << outputs[k - 1].newest_sent
+                        << " had been sent";
+    }
   }
   std::printf("newest frame: %d pairs sent at 30 Hz, %ld matched, %ld dropped; worst lag %d frames "
               "over %d outputs\n",
