@@ -3,7 +3,9 @@
 // matcher object's compute(). The pair is the simulator's random-dot wall
 // through the ~125 deg Theia-like rig. Runs alternate between the two, and
 // the medians are compared; for SGBM (stereo-match's default settings) and
-// for BM with the paper's 33 x 33 window.
+// for BM with the paper's 33 x 33 window. Then stereo-match's rectify and
+// match with the live settings (config/stereo-match-live.yaml) on the common
+// field's region (match/match_region.h) against the whole image, alternating.
 //
 //   bench_match [RUNS]    (default 5)
 #include <algorithm>
@@ -11,12 +13,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
 #include "lcm_io/image_codec.h"
 #include "match/match_node.h"
+#include "match/match_region.h"
 #include "sim/simulator.h"
 #include "bench_support.h"
 
@@ -52,6 +56,26 @@ void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectific
               Median(pipeline), Median(pipeline) / Median(bare));
 }
 
+void CompareRegion(const char* name, ws::MatcherConfig config, const ws::Rectification& rect,
+                   const widestereo::stereo_frame_t& frame, int runs) {
+  const auto shared = std::make_shared<const ws::Rectification>(rect);
+  config.common_field_only = true;
+  const cv::Rect region = ws::MatchRegion(rect, config);
+  ws::DisparityMatcher common(config);
+  config.common_field_only = false;
+  ws::DisparityMatcher whole(config);
+  std::vector<double> common_ms, whole_ms;
+  for (int run = 0; run < runs; ++run) {
+    common_ms.push_back(Milliseconds([&] { ws::RectifyAndMatch(shared, common, frame); }));
+    whole_ms.push_back(Milliseconds([&] { ws::RectifyAndMatch(shared, whole, frame); }));
+  }
+  std::printf("%-34s common field %dx%d at (%d, %d), matched region %dx%d: rectify + match %8.1f ms, "
+              "whole %dx%d image %8.1f ms (%.3f)\n",
+              name, rect.common.width, rect.common.height, rect.common.x, rect.common.y, region.width,
+              region.height, Median(common_ms), rect.size.width, rect.size.height, Median(whole_ms),
+              Median(common_ms) / Median(whole_ms));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,5 +101,12 @@ int main(int argc, char** argv) {
   bm.matcher.kind = "bm";
   bm.matcher.block_size = 33;  // the paper's window
   Compare("bm 128 disparities, block 33", bm, rect, frame, runs);
+
+  ws::MatcherConfig live;  // config/stereo-match-live.yaml
+  live.kind = "sgbm3way";
+  live.downscale = 2;
+  CompareRegion("live settings, focal scale 1", live, rect, frame, runs);
+  CompareRegion("live settings, focal scale 0.7", live,
+                ws::BuildRectification(rig, {0.7, {}, ws::RectificationMode::kPinhole}), frame, runs);
   return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "match/match_region.h"
 
 namespace ws {
 
@@ -19,8 +20,11 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
         std::to_string(left.rows) + " but " + calibration_source + " is for " +
         std::to_string(rect->input_size.width) + "x" + std::to_string(rect->input_size.height));
   MatchedFrame matched;
-  RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect);
-  matched.disparity = matcher.Compute(matched.left_rect, matched.right_rect);
+  const cv::Rect region = MatchRegion(*rect, matcher.config());
+  RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
+  matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
+  matcher.Compute(matched.left_rect(region), matched.right_rect(region))
+      .copyTo(matched.disparity(region));
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
   matched.disparity.setTo(-std::numeric_limits<float>::infinity(), rect->no_image);

@@ -52,6 +52,13 @@ void CheckMatcherConfig(const MatcherConfig& c) {
           "uniqueness_ratio, speckle and texture settings must be >= 0 and p2 > p1");
 }
 
+MatcherReach Reach(const MatcherConfig& config) {
+  const MatcherConfig c = AtMatchScale(config);
+  const int n = config.downscale, half = c.block_size / 2;
+  return {n * (std::max(0, c.min_disparity + c.num_disparities) + half), n * (std::max(0, -c.min_disparity) + half),
+          n * half};
+}
+
 cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
   CheckMatcherConfig(c);
   if (c.kind == "bm") {

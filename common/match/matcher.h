@@ -26,6 +26,9 @@ struct MatcherConfig {
   int p1_per_pixel = 8;        // SGBM: P1 = p1_per_pixel * channels * block_size^2
   int p2_per_pixel = 32;       // SGBM: P2 likewise
   int disp12_max_diff = 1;
+  // Match only the box of the rectified images where both hold image
+  // (match/match_region.h), not the empty borders about it.
+  bool common_field_only = true;
 };
 
 // Throws std::invalid_argument naming the field when a value is out of range.
@@ -57,6 +60,15 @@ class DisparityMatcher {
   int margin_;  // columns added on the left (LeftMargin)
   cv::Mat fixed_point_, small_left_, small_right_, small_disparity_, padded_left_, padded_right_;
 };
+
+// How far the match of a pixel reads, in full-resolution pixels: the columns
+// to its left (the disparity search, which must fit in the image for the
+// pixel to get a disparity, and half a window), to its right (negative
+// disparities, half a window) and the rows above and below (half a window).
+struct MatcherReach {
+  int left = 0, right = 0, rows = 0;
+};
+MatcherReach Reach(const MatcherConfig& config);
 
 // The raw OpenCV matcher for `config` at full resolution (downscale is
 // DisparityMatcher's), for comparisons with bare OpenCV.

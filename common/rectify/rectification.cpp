@@ -84,6 +84,17 @@ cv::Vec4d CommonBox(const StereoRig& rig, const cv::Matx33d& R_left, const cv::M
   return {std::max(l[0], r[0]), std::min(l[1], r[1]), std::max(l[2], r[2]), std::min(l[3], r[3])};
 }
 
+// cv::remap of `region` (all of the maps when empty) into that part of *out.
+void Remap(const cv::Mat& in, const cv::Mat maps[2], const cv::Rect& region, cv::Mat* out) {
+  if (region.empty()) {
+    cv::remap(in, *out, maps[0], maps[1], cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+    return;
+  }
+  *out = cv::Mat::zeros(maps[0].size(), in.type());
+  cv::Mat part = (*out)(region);  // remap writes into it: same size and type
+  cv::remap(in, part, maps[0](region), maps[1](region), cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+}
+
 }  // namespace
 
 RectificationMode ParseRectificationMode(const std::string& name) {
@@ -150,15 +161,14 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
   BuildMaps(left, rect.R_left, rect, rect.map_left, &rect.valid_left);
   BuildMaps(right, rect.R_right, rect, rect.map_right, &rect.valid_right);
   rect.no_image = (rect.valid_left == 0) | (rect.valid_right == 0);
+  rect.common = cv::boundingRect(rect.no_image == 0);
   return rect;
 }
 
 void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& right,
-                 cv::Mat* left_rect, cv::Mat* right_rect) {
-  cv::remap(left, *left_rect, rect.map_left[0], rect.map_left[1], cv::INTER_LINEAR,
-            cv::BORDER_CONSTANT);
-  cv::remap(right, *right_rect, rect.map_right[0], rect.map_right[1], cv::INTER_LINEAR,
-            cv::BORDER_CONSTANT);
+                 cv::Mat* left_rect, cv::Mat* right_rect, const cv::Rect& region) {
+  Remap(left, rect.map_left, region, left_rect);
+  Remap(right, rect.map_right, region, right_rect);
 }
 
 bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,

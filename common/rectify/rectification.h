@@ -69,15 +69,17 @@ struct Rectification {
   // image holds no data (the remap's constant border), not a neighbour's.
   cv::Mat valid_left, valid_right;
   cv::Mat no_image;  // 255 where either is 0: no disparity there
+  cv::Rect common;   // the bounding box of the pixels where both hold image (empty: none)
 };
 
 // Throws std::invalid_argument if the cameras' image sizes differ or the
 // baseline is zero.
 Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options = {});
 
-// Remaps both images (any type cv::remap takes) with bilinear interpolation.
+// Remaps both images (any type cv::remap takes) with bilinear interpolation;
+// with a region, only its pixels (the rest of both images is 0).
 void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& right,
-                 cv::Mat* left_rect, cv::Mat* right_rect);
+                 cv::Mat* left_rect, cv::Mat* right_rect, const cv::Rect& region = {});
 
 // Where a pixel of the left (right) input image lands in the rectified
 // image; false when the lens model cannot be inverted there.

@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
   app.add_option("--uniqueness", m.uniqueness_ratio, "Uniqueness ratio, percent")->capture_default_str();
   app.add_option("--speckle-window", m.speckle_window, "Speckle filter window (0: off)")->capture_default_str();
   app.add_option("--speckle-range", m.speckle_range, "Speckle filter disparity range")->capture_default_str();
+  bool whole_image = false;
+  app.add_flag("--whole-image", whole_image,
+               "Match the whole rectified image, not only the box where both rectified images hold "
+               "image (the common field) grown by the matcher's reach (for comparisons)");
   ws::AddRectifyOptions(app, config.rectify);
   std::string rectification = "auto";
   app.add_option("--rectification", rectification,
@@ -63,6 +67,7 @@ int main(int argc, char** argv) {
       ->needs(save_dir);
   if (auto rc = cli.Parse(argc, argv)) return *rc;
   config.rectify.mode = ws::ParseRectificationMode(rectification);
+  m.common_field_only = !whole_image;
 
   try {
     ws::Process process(cli.options());

@@ -31,6 +31,13 @@ namespace {
 using namespace ws::test;
 namespace ch = ws::channel;
 
+// The sanitizers slow our own code several times over (the cloud stage most)
+// and OpenCV's not at all, so the stages' shares of a frame's time change:
+// the lag seen at the output and the outputs during the burst say nothing in
+// make test-asan. Like the memory bounds (test_support.h), they are checked
+// in the normal build only; the accounting is checked in both.
+constexpr bool kTimingMeaningful = kMemoryBoundsMeaningful;
+
 struct Output {
   int64_t frame_id;
   int newest_sent;  // the newest frame id sent when it arrived
@@ -112,8 +119,10 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
     burst_outputs++;
     const int lag = outputs[k - 1].newest_sent - int(outputs[k].frame_id);
     worst_lag = std::max(worst_lag, lag);
-    EXPECT_LE(lag, 2) << "frame " << outputs[k].frame_id << " taken when " << outputs[k - 1].newest_sent
-                      << " had been sent";
+    if (kTimingMeaningful) {
+      EXPECT_LE(lag, 2) << "frame " << outputs[k].frame_id << " taken when " << outputs[k - 1].newest_sent
+                        << " had been sent";
+    }
   }
   std::printf("newest frame: %d pairs sent at 30 Hz, %ld matched, %ld dropped; worst lag %d frames "
               "over %d outputs\n",
@@ -122,7 +131,9 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
                              << in.dropped << " + " << in.rejected << " of " << next_id - first_id;
   EXPECT_EQ(in.rejected, 0);
   EXPECT_GT(in.dropped, 0);     // it could not keep up: it skipped
-  EXPECT_GE(burst_outputs, 3);  // and it matched all along (a loaded machine matches slowly)
+  if (kTimingMeaningful) {
+    EXPECT_GE(burst_outputs, 3);  // and it matched all along (a loaded machine matches slowly)
+  }
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ void Use(const image_t& image) {
 
 void Use(const stereo_frame_t& frame) {
   Use(frame.left);
-  Use(frame.right);
+  if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
 }
 
 void Use(const disparity_t& disparity) { Use(disparity.disparity); }

@@ -144,6 +144,9 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
   seeds.Message("gray", Frame("01", ws::Compression::none, small));
   seeds.Message("jpeg", Frame("01", ws::Compression::jpeg, small));
   seeds.Message("png", Frame("01", ws::Compression::png, small));
+  stereo_frame_t mono = Frame("01", ws::Compression::none, small);  // stereo-capture --mono's
+  mono.right = ws::NoImage(mono.utime);
+  seeds.Message("mono", mono);
   log_frames->push_back(Frame("01", ws::Compression::none, {16, 12}));
 
   const ws::StereoCornerFinder finder(ws::ParseBoardSpec("chessboard:9x6:0.025"),

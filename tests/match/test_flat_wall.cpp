@@ -36,8 +36,9 @@ class FlatWall : public ::testing::Test {
   static WallRun Run(const ws::StereoRig& rig, const std::string& name,
                      const std::vector<std::string>& match_args = {},
                      const std::string& match_config = "config/stereo-match.yaml",
-                     const std::string& cloud_config = "config/stereo-cloud.yaml") {
+                     const std::string& cloud_config = "config/stereo-cloud.yaml", double focal_scale = 1.0) {
     WallChainOptions options;
+    options.focal_scale = focal_scale;
     options.match_args = match_args;
     options.match_config = match_config;
     options.cloud_config = cloud_config;
@@ -109,16 +110,22 @@ TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
     std::vector<std::string> args;
     std::string match_config = "config/stereo-match.yaml";
     std::string cloud_config = "config/stereo-cloud.yaml";
+    double focal_scale = 1.0;
   };
   const std::vector<Mode> modes = {
       {"sgbm", {"--matcher", "sgbm"}},
       {"sgbm3way", {"--matcher", "sgbm3way"}},
       {"bm", {"--matcher", "bm", "--block-size", "15"}},
       {"sgbm3way-d2", {"--matcher", "sgbm3way", "--downscale", "2"}},
-      {"live", {}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml"}};
+      {"live", {}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml"},
+      // At focal scale 0.7 the rectified images hold the lenses' field in
+      // 968 x 726 of their 1280 x 960 pixels: the common field's region
+      // (the default) against the whole image.
+      {"live-f0.7", {}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml", 0.7},
+      {"live-f0.7-whole", {"--whole-image"}, "config/stereo-match-live.yaml", "config/stereo-cloud-live.yaml", 0.7}};
   std::vector<WallRun> runs;
   for (const Mode& mode : modes) {
-    runs.push_back(Run(rig, mode.name, mode.args, mode.match_config, mode.cloud_config));
+    runs.push_back(Run(rig, mode.name, mode.args, mode.match_config, mode.cloud_config, mode.focal_scale));
     ASSERT_EQ(runs.back().wall.size(), size_t(kFrames)) << mode.name;
   }
   for (size_t m = 0; m < modes.size(); ++m) {
@@ -136,6 +143,14 @@ TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
     EXPECT_GT(d.density, 0.6) << modes[m].name;
     EXPECT_LT(w.inlier_rms, 10 * runs[0].wall[0].inlier_rms) << modes[m].name;
   }
+  // Matching only the common field's region finds the same wall as
+  // matching the whole image.
+  const WallRun& region = runs[modes.size() - 2];
+  const WallRun& whole = runs.back();
+  EXPECT_NEAR(region.disparity[0].density, whole.disparity[0].density, 0.005);
+  EXPECT_NEAR(region.wall[0].coverage, whole.wall[0].coverage, 0.005);
+  EXPECT_NEAR(region.wall[0].inlier_rms, whole.wall[0].inlier_rms, 0.05 * whole.wall[0].inlier_rms);
+  EXPECT_NEAR(region.wall[0].offset, whole.wall[0].offset, 1e-4 * z);
 }
 
 }  // namespace
