@@ -62,7 +62,9 @@ TEST_P(LaunchOwnsItsProcesses, NoProcessOutlivesTheLauncherAndTheLogIsComplete) 
   std::this_thread::sleep_for(5s);  // frames on the bus and in the log
   if (ending.signal != 0) launch.Signal(ending.signal);
   const CommandResult result = launch.Wait(60);
-  if (ending.signal != 0 && ending.signal != SIGKILL) EXPECT_EQ(result.exit_code, 0) << result.output;
+  if (ending.signal != 0 && ending.signal != SIGKILL) {
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+  }
 
   const auto deadline = std::chrono::steady_clock::now() + 30s;
   auto any_alive = [&] {
