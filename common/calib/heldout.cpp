@@ -72,16 +72,16 @@ struct FoldResult {
 
 FoldResult SolveFold(const Problem& solved, const std::vector<int>& held,
                      const std::map<const Pose*, size_t>& index, const std::vector<Pose>& start,
-                     int k) {
+                     int k, int max_iterations) {
   FoldResult out;
   std::vector<Pose> poses = start;
   Problem train = Subproblem(solved, held, false, index, &poses);
   const std::string what = "cross-validation fold " + std::to_string(k + 1);
   try {
-    SolveSettings settings{what, kFoldIterations};
+    SolveSettings settings{what, std::min(kFoldIterations, max_iterations)};
     settings.tolerance = kRankingTolerance;
     Solve(train, settings);
-    settings.max_iterations = 100;  // the held-out poses: each alone, from the full solution's
+    settings.max_iterations = max_iterations;  // the held-out poses, each from the full solution's
     Problem test = Subproblem(solved, held, true, index, &poses);
     test.cameras = train.cameras;
     for (CameraBlock& camera : test.cameras) camera.fixed = true;
@@ -109,7 +109,7 @@ FoldResult SolveFold(const Problem& solved, const std::vector<int>& held,
 
 }  // namespace
 
-CrossValidation CrossValidate(const Problem& solved, int folds) {
+CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations) {
   std::vector<int> views;
   std::map<const Pose*, size_t> index;
   std::vector<Pose> start;
@@ -132,7 +132,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
         for (int k = range.start; k < range.end; ++k) {
           std::vector<int> held;
           for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
-          results[k] = SolveFold(solved, held, index, start, k);
+          results[k] = SolveFold(solved, held, index, start, k, max_iterations);
         }
       },
       folds);

@@ -60,7 +60,8 @@ struct CrossValidation {
 // them by up to 4e-4 px, enough to flip a choice that sits on the edge of
 // the fold-to-fold noise (kb4 against bspline_theta).
 inline constexpr int kFoldIterations = 5;
-CrossValidation CrossValidate(const Problem& solved, int folds);
+// The held-out poses are solved with up to `max_iterations` steps.
+CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations);
 
 // Of candidates in order of complexity, each with its per-fold held-out RMS
 // (the same folds for all), the least complex whose excess over the best
