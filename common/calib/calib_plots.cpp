@@ -19,17 +19,16 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
   return side == 0 ? s.left : s.right;
 }
 
-// Values on a grid of image points (point (i, j) at ((i + 0.5) step - 0.5))
-// as a heat map, clipped at `max`.
-plot::Heatmap ImageGridHeatmap(int cols, int rows, double step_x, double step_y,
-                               std::vector<double> values, const std::string& label, double max) {
+// Values on a grid of image points as a heat map, clipped at `max`.
+plot::Heatmap ImageGridHeatmap(const ImageGrid& grid, std::vector<double> values,
+                               const std::string& label, double max) {
   plot::Heatmap map;
-  map.cols = cols;
-  map.rows = rows;
-  map.x0 = 0.5 * step_x - 0.5;
-  map.y0 = 0.5 * step_y - 0.5;
-  map.dx = step_x;
-  map.dy = step_y;
+  map.cols = grid.cols;
+  map.rows = grid.rows;
+  map.x0 = grid.Pixel(0, 0).x();
+  map.y0 = grid.Pixel(0, 0).y();
+  map.dx = grid.step_x;
+  map.dy = grid.step_y;
   for (double& v : values) v = std::min(v, max);
   map.values = std::move(values);
   map.label = label;
@@ -223,14 +222,14 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
     panel.image_axes = true;
     panel.legend = "below";
     // The scale of the observed field (the unobserved corners can be far larger).
-    panel.heatmap = ImageGridHeatmap(u.cols, u.rows, u.step_x, u.step_y, u.sigma_px,
+    panel.heatmap = ImageGridHeatmap(u.grid, u.sigma_px,
                                      "1-sigma [px]", 2 * u.worst_px);
     std::vector<double> x, y;
-    for (int j = 0; j < u.rows; ++j)
-      for (int i = 0; i < u.cols; ++i)
-        if (u.observed[size_t(j) * u.cols + i]) {
-          x.push_back(u.Pixel(i, j).x());
-          y.push_back(u.Pixel(i, j).y());
+    for (int j = 0; j < u.grid.rows; ++j)
+      for (int i = 0; i < u.grid.cols; ++i)
+        if (u.observed[j * u.grid.cols + i]) {
+          x.push_back(u.grid.Pixel(i, j).x());
+          y.push_back(u.grid.Pixel(i, j).y());
         }
     plot::Series& seen = panel.series.emplace_back("cells with corners",
                                                    x, y, plot::Style::kPoints, "#009e73");
@@ -254,7 +253,7 @@ void WriteProjectionDiffPng(const std::vector<std::pair<std::string, ProjectionD
     panel.legend = "off";
     // Clipped at 3x the median, so the field's structure shows; NaN: not compared.
     const double top = std::max(d.median_px > 0 ? 3 * d.median_px : d.max_px, 1e-6);
-    panel.heatmap = ImageGridHeatmap(d.cols, d.rows, d.step_x, d.step_y, d.diff_px,
+    panel.heatmap = ImageGridHeatmap(d.grid, d.diff_px,
                                      "difference [px]", top);
   }
   plot::WritePng(figure, png_path);

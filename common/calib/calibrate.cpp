@@ -147,7 +147,7 @@ std::string UncertaintyLine(const CameraCalibration& camera) {
   std::snprintf(buf, sizeof buf,
                 "%s: projection uncertainty (1 sigma, worst direction) median %.4f px, worst "
                 "%.4f px over the %ld observed cells of %d x %d",
-                camera.name.c_str(), u.median_px, u.worst_px, observed, u.cols, u.rows);
+                camera.name.c_str(), u.median_px, u.worst_px, observed, u.grid.cols, u.grid.rows);
   return buf;
 }
 

@@ -82,16 +82,13 @@ ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_ra
         std::to_string(ma.image_height) + " and " + std::to_string(b.model().image_width) + "x" +
         std::to_string(b.model().image_height) + "): not calibrations of one camera");
   ProjectionDiff out;
-  out.cols = cols;
-  out.rows = rows;
-  out.step_x = double(ma.image_width) / cols;
-  out.step_y = double(ma.image_height) / rows;
-  out.diff_px.assign(size_t(cols) * rows, NAN);
+  out.grid = ImageGrid::Over(ma.image_width, ma.image_height, cols, rows);
+  out.diff_px.assign(out.grid.size(), NAN);
   const Eigen::Vector2d centre((ma.image_width - 1) / 2.0, (ma.image_height - 1) / 2.0);
   std::vector<GridRay> all, central;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < cols; ++i) {
-      const Eigen::Vector2d q = out.Pixel(i, j);
+      const Eigen::Vector2d q = out.grid.Pixel(i, j);
       const auto ray = a.Unproject(q);
       if (!ray) continue;
       all.push_back({j * cols + i, q, *ray});

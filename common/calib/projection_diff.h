@@ -20,23 +20,19 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "calib/image_grid.h"
 #include "models/camera_model.h"
 
 namespace ws::calib {
 
 struct ProjectionDiff {
-  int cols = 0, rows = 0;
-  double step_x = 0, step_y = 0;  // grid point (i, j) at ((i + 0.5) step - 0.5)
-  std::vector<double> diff_px;    // row-major, cols * rows; NaN where not compared
+  ImageGrid grid;
+  std::vector<double> diff_px;    // per grid point; NaN where not compared
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // applied to A's rays
   double rotation_deg = 0;
   int fit_points = 0;  // grid points the rotation was fitted to
   int points = 0;      // grid points compared
   double rms_px = 0, median_px = 0, max_px = 0;
-
-  Eigen::Vector2d Pixel(int i, int j) const {
-    return {(i + 0.5) * step_x - 0.5, (j + 0.5) * step_y - 0.5};
-  }
 };
 
 // The default fit radius: a sixth of the smaller image side.

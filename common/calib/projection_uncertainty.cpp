@@ -68,21 +68,15 @@ ProjectionUncertainty MapProjectionUncertainty(const CameraBlock& camera,
   ProjectionUncertainty map;
   const int n = kNumIntrinsics + int(camera.coeffs.size());
   if (covariance.rows() != n || covariance.cols() != n || width <= 0 || height <= 0) return map;
-  map.cols = cols;
-  map.rows = rows;
-  map.step_x = double(width) / cols;
-  map.step_y = double(height) / rows;
-  map.sigma_px.assign(size_t(cols) * rows, NAN);
-  map.observed.assign(size_t(cols) * rows, 0);
-  for (const Eigen::Vector2d& q : corners) {
-    const int i = int(std::floor((q.x() + 0.5) / map.step_x));
-    const int j = int(std::floor((q.y() + 0.5) / map.step_y));
-    if (i >= 0 && i < cols && j >= 0 && j < rows) map.observed[size_t(j) * cols + i] = 1;
-  }
+  map.grid = ImageGrid::Over(width, height, cols, rows);
+  map.sigma_px.assign(map.grid.size(), NAN);
+  map.observed.assign(map.grid.size(), 0);
+  for (const Eigen::Vector2d& q : corners)
+    if (const auto cell = map.grid.Cell(q)) map.observed[*cell] = 1;
   std::vector<double> observed;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < cols; ++i) {
-      const auto ray = PixelRay(camera, map.Pixel(i, j));
+      const auto ray = PixelRay(camera, map.grid.Pixel(i, j));
       if (!ray) continue;
       const auto sigma = ProjectionCovariance(camera, covariance, *ray);
       if (!sigma) continue;

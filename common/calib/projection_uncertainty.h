@@ -32,22 +32,18 @@
 #include <vector>
 
 #include "calib/camera_block.h"
+#include "calib/image_grid.h"
 
 namespace ws::calib {
 
 struct ProjectionUncertainty {
-  int cols = 0, rows = 0;          // grid points across and down
-  double step_x = 0, step_y = 0;   // pixels between grid points; point (i, j) at
-                                   // ((i + 0.5) step_x - 0.5, (j + 0.5) step_y - 0.5)
-  std::vector<double> sigma_px;    // row-major, cols * rows; NaN where no ray
+  ImageGrid grid;
+  std::vector<double> sigma_px;    // per grid point; NaN where no ray
   std::vector<char> observed;      // 1 where an inlier corner lies in the grid cell
   double median_px = -1;           // over the observed cells; negative: none
   double worst_px = -1;
 
   bool empty() const { return sigma_px.empty(); }
-  Eigen::Vector2d Pixel(int i, int j) const {
-    return {(i + 0.5) * step_x - 0.5, (j + 0.5) * step_y - 0.5};
-  }
 };
 
 // The 2 x 2 covariance of projecting the camera-frame direction `ray` given

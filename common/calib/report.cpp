@@ -23,18 +23,13 @@ Json ViewRmsJson(const std::vector<double>& rms) {
   return out;
 }
 
-// projection_uncertainty.h; null where a grid point has no ray.
+// projection_uncertainty.h.
 Json UncertaintyReport(const ProjectionUncertainty& u) {
   Json out;
   out["definition"] =
       "worst-direction 1-sigma of projecting a fixed camera-frame ray, from the solve's "
       "covariance with the board poses marginalised (README: Projection uncertainty)";
-  out["cols"] = u.cols;
-  out["rows"] = u.rows;
-  out["step_px"] = {u.step_x, u.step_y};
-  Json sigma = Json::array();
-  for (double s : u.sigma_px) sigma.push_back(std::isfinite(s) ? Json(s) : Json());
-  out["sigma_px"] = sigma;
+  out.update(ImageGridJson(u.grid, "sigma_px", u.sigma_px));
   out["observed"] = std::vector<int>(u.observed.begin(), u.observed.end());
   out["median_px"] = u.median_px;
   out["worst_px"] = u.worst_px;
@@ -44,6 +39,18 @@ Json UncertaintyReport(const ProjectionUncertainty& u) {
 const char* FlowName(StereoFlow flow) { return flow == StereoFlow::kJoint ? "joint" : "paper"; }
 
 }  // namespace
+
+Json ImageGridJson(const ImageGrid& grid, const std::string& key,
+                   const std::vector<double>& values) {
+  Json out;
+  out["cols"] = grid.cols;
+  out["rows"] = grid.rows;
+  out["step_px"] = {grid.step_x, grid.step_y};
+  Json array = Json::array();
+  for (double v : values) array.push_back(std::isfinite(v) ? Json(v) : Json());
+  out[key] = array;
+  return out;
+}
 
 Json CameraReport(const CameraCalibration& c) {
   const CameraModel& m = c.model;

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "calib/calibrate.h"
+#include "calib/image_grid.h"
 
 namespace ws::calib {
 
@@ -40,6 +41,10 @@ namespace ws::calib {
 using Json = nlohmann::ordered_json;
 
 Json CameraReport(const CameraCalibration& camera);
+// Values on an image grid: {"cols", "rows", "step_px": [x, y], KEY: [row-major,
+// null where not finite]}.
+Json ImageGridJson(const ImageGrid& grid, const std::string& key,
+                   const std::vector<double>& values);
 Json StereoReport(const StereoCalibration& calibration);
 // Every model under "models": a solved one as StereoReport, a failed one as
 // {"model": NAME, "error": "..."}; Table II of the solved ones.

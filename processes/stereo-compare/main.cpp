@@ -14,11 +14,11 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "calib/calib_file.h"
 #include "calib/calib_plots.h"
 #include "calib/projection_diff.h"
+#include "calib/report.h"
 
 namespace {
 
@@ -33,21 +33,16 @@ struct Options {
   std::string report, plot;
 };
 
-nlohmann::ordered_json DiffJson(const std::string& name, const ProjectionDiff& d) {
-  nlohmann::ordered_json grid = nlohmann::ordered_json::array();
-  for (double v : d.diff_px)
-    grid.push_back(std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json());
-  return {{"camera", name},
-          {"rms_px", d.rms_px},
-          {"median_px", d.median_px},
-          {"max_px", d.max_px},
-          {"points", d.points},
-          {"rotation_deg", d.rotation_deg},
-          {"fit_points", d.fit_points},
-          {"cols", d.cols},
-          {"rows", d.rows},
-          {"step_px", {d.step_x, d.step_y}},
-          {"diff_px", grid}};
+Json DiffJson(const std::string& name, const ProjectionDiff& d) {
+  Json out{{"camera", name},
+           {"rms_px", d.rms_px},
+           {"median_px", d.median_px},
+           {"max_px", d.max_px},
+           {"points", d.points},
+           {"rotation_deg", d.rotation_deg},
+           {"fit_points", d.fit_points}};
+  out.update(ImageGridJson(d.grid, "diff_px", d.diff_px));
+  return out;
 }
 
 }  // namespace
@@ -96,9 +91,9 @@ int main(int argc, char** argv) {
     if (!a.mono && !b.mono)
       std::printf("stereo: baseline %.6f m against %.6f m\n", b.T.norm(), a.T.norm());
     if (!o.report.empty()) {
-      nlohmann::ordered_json cameras = nlohmann::ordered_json::array();
+      Json cameras = Json::array();
       for (const auto& [name, d] : diffs) cameras.push_back(DiffJson(name, d));
-      const nlohmann::ordered_json report{{"a", o.a}, {"b", o.b}, {"cameras", cameras}};
+      const Json report{{"a", o.a}, {"b", o.b}, {"cameras", cameras}};
       std::ofstream out(o.report);
       out << report.dump(2) << "\n";
       if (!out) throw std::runtime_error("cannot write the report " + o.report);

@@ -51,11 +51,11 @@ TEST(ProjectionUncertainty, PredictsTheSpreadOfRenoisedSolves) {
   std::vector<std::vector<Eigen::Vector2d>> pixels(cells);
   for (int k = 0; k < kSolves; ++k) {
     const Camera solved(CalibrateCamera(Renoised(exact, noise, 200 + k), quick).model);
-    for (int j = 0; j < predicted.rows; ++j)
-      for (int i = 0; i < predicted.cols; ++i) {
-        const size_t cell = size_t(j) * predicted.cols + i;
+    for (int j = 0; j < predicted.grid.rows; ++j)
+      for (int i = 0; i < predicted.grid.cols; ++i) {
+        const size_t cell = size_t(j) * predicted.grid.cols + i;
         if (!predicted.observed[cell]) continue;
-        const auto ray = camera.Unproject(predicted.Pixel(i, j));
+        const auto ray = camera.Unproject(predicted.grid.Pixel(i, j));
         ASSERT_TRUE(ray);
         const auto q = solved.Project(*ray);
         ASSERT_TRUE(q);
