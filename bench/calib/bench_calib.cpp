@@ -8,7 +8,7 @@
 // coefficients, no cross-validation) and against cv::calibrateCamera on the
 // same detections, on the mustache lens (models of synthetic_rig.h).
 //
-//   build/bench/bench_calib [--repeats N]
+//   build/bench/bench_calib [--repeats N] [--auto-only]
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -118,7 +118,13 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", repeats, "Runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
+  bool auto_only = false;
+  app.add_flag("--auto-only", auto_only, "Only the --knots auto table");
   CLI11_PARSE(app, argc, argv);
+  if (auto_only) {
+    AutoKnots(repeats);
+    return 0;
+  }
 
   std::printf("%6s %8s %12s %12s %12s %12s %8s %12s %12s\n", "views", "corners", "opencv [s]",
               "ours [s]", "ours,nocov", "ours,no cv", "ratio", "opencv rms", "ours rms");

@@ -13,18 +13,22 @@
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
 //   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
 //
-// The coefficient block's size must be known at compile time for fast
-// automatic differentiation: it is for N up to kMaxFixedCoeffs (every poly
-// model, and B-splines of up to that many knots); larger splines use Ceres's
-// dynamic automatic differentiation, which gives the same numbers more slowly.
+// The derivatives are automatic (Ceres Jets) and exact, but a corner is not
+// differentiated by every coefficient: its residual reads only the model's
+// local coefficients at its ideal point (distortion.h; a cubic spline's 4,
+// however many knots it has), so the Jet carries those and the fixed-size
+// blocks, and their derivatives go to their columns of the coefficient
+// block (the other columns are 0). The Jet's size, and so the cost per
+// corner, does not grow with the number of knots.
 #pragma once
 
-#include <ceres/autodiff_cost_function.h>
-#include <ceres/dynamic_autodiff_cost_function.h>
+#include <ceres/cost_function.h>
+#include <ceres/jet.h>
 #include <ceres/rotation.h>
 
 #include <Eigen/Core>
-#include <memory>
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -34,8 +38,6 @@
 #include "models/scalar_part.h"
 
 namespace ws::calib {
-
-inline constexpr int kMaxFixedCoeffs = 24;
 
 // Corners of one view flattened for the cost functions.
 struct ViewPoints {
@@ -55,64 +57,108 @@ struct ViewPoints {
   }
 };
 
-// Projects the view's corners, displaced by the board's `warp`, through
-// `model` after `rotation` (row-major 3x3) and `translation`, writing
-// projected - observed. False if a corner
-// has no projection (a pinhole model: behind the camera) or its ideal radius
+// One view's corners as a cost over (intrinsics, coeffs, warp, pose) or,
+// with kViaExtrinsic, (intrinsics, coeffs, warp, pose, extrinsic): a board
+// posed in the left camera's frame seen by the right camera,
+// X_right = R_e (R_b X + t_b) + T_e. L >= model.NumLocalCoeffs() is the
+// Jet's room for the local coefficients. Evaluate fails if a corner has no
+// projection (a pinhole model: behind the camera) or its ideal radius
 // (radial_coordinate.h) exceeds points.max_radius.
-template <class Model, typename T>
-bool ViewResiduals(const Model& model, const ViewPoints& points, const T* intrinsics,
-                   const T* coeffs, const T* warp, const T* rotation, const T* translation,
-                   T* residuals) {
-  const int n = points.size();
-  for (int i = 0; i < n; ++i) {
-    const double* X = &points.object[3 * i];
-    const T z = X[2] + warp[0] * points.warp[2 * i] + warp[1] * points.warp[2 * i + 1];
-    T camera[3];
-    for (int r = 0; r < 3; ++r)
-      camera[r] =
-          rotation[3 * r] * X[0] + rotation[3 * r + 1] * X[1] + rotation[3 * r + 2] * z + translation[r];
-    const double point[3] = {ScalarPart(camera[0]), ScalarPart(camera[1]), ScalarPart(camera[2])};
-    if (!(ws::IdealRadius<typename Model::Coordinate>(point) <= points.max_radius)) return false;
-    T pixel[2];
-    if (!Project(model, intrinsics, coeffs, camera, pixel)) return false;
-    residuals[2 * i] = pixel[0] - points.image[2 * i];
-    residuals[2 * i + 1] = pixel[1] - points.image[2 * i + 1];
+//
+// The chain rule is split at the ideal point (x, y): the rig's blocks (warp,
+// pose, extrinsic) reach the pixel only through it, so one Jet carries them
+// to (x, y) and another carries (x, y), the intrinsics and the local
+// coefficients to the pixel; d pixel / d rig = d pixel / d(x, y) . d(x, y) / d rig.
+template <class Model, bool kViaExtrinsic, int L>
+class ViewCost final : public ceres::CostFunction {
+ public:
+  // Keeps a pointer to `model`.
+  ViewCost(const Model& model, ViewPoints points) : model_(&model), points_(std::move(points)) {
+    set_num_residuals(2 * points_.size());
+    for (int size : {int(kNumIntrinsics), model.NumCoeffs(), 2, 6}) AddBlock(size);
+    if (kViaExtrinsic) AddBlock(6);
   }
-  return true;
-}
 
-// Corners seen by a camera whose board pose is a parameter block.
-template <class Model>
-struct ViewResidual {
-  const Model* model;
-  ViewPoints points;
+  bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
+    if (jacobians == nullptr) {
+      double R[9], t[3], ideal[2];
+      BoardToCamera(p[3], kViaExtrinsic ? p[4] : nullptr, R, t);
+      for (int i = 0; i < points_.size(); ++i) {
+        if (!Ideal(i, p[2], R, t, ideal)) return false;
+        ProjectIdeal(*model_, p[0], p[1], ideal, residuals + 2 * i);
+        residuals[2 * i] -= points_.image[2 * i];
+        residuals[2 * i + 1] -= points_.image[2 * i + 1];
+      }
+      return true;
+    }
+    RigJet warp[2], pose[6], extrinsic[6], R[9], t[3];
+    Seed(p[2], 2, kWarpAt, warp);
+    Seed(p[3], 6, kPoseAt, pose);
+    if (kViaExtrinsic) Seed(p[4], 6, kExtrinsicAt, extrinsic);
+    BoardToCamera(pose, kViaExtrinsic ? extrinsic : nullptr, R, t);
+    LensJet intrinsics[kNumIntrinsics];
+    Seed(p[0], kNumIntrinsics, kIntrinsicsAt, intrinsics);
+    const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
+    std::vector<LensJet> coeffs(p[1], p[1] + n);  // constants but for a corner's local ones
+    for (int i = 0; i < points_.size(); ++i) {
+      RigJet ideal[2];
+      if (!Ideal(i, warp, R, t, ideal)) return false;
+      const int first = model_->FirstLocalCoeff(ideal[0].a, ideal[1].a);
+      auto in_range = [&](int j) { return first + j >= 0 && first + j < n; };
+      for (int j = 0; j < local; ++j)
+        if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 1.0;
+      const LensJet lens_ideal[2] = {LensJet(ideal[0].a, kXAt), LensJet(ideal[1].a, kXAt + 1)};
+      LensJet pixel[2];
+      ProjectIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, pixel);
+      for (int j = 0; j < local; ++j)
+        if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 0.0;
+      for (int k = 0; k < 2; ++k) {
+        const int row = 2 * i + k;
+        const LensJet& q = pixel[k];
+        residuals[row] = q.a - points_.image[row];
+        if (double* J = jacobians[0]) std::copy_n(&q.v[kIntrinsicsAt], kNumIntrinsics, J + row * kNumIntrinsics);
+        if (double* J = jacobians[1] ? jacobians[1] + row * n : nullptr) {
+          std::fill(J, J + n, 0.0);
+          for (int j = 0; j < local; ++j)
+            if (in_range(j)) J[first + j] = q.v[kLocalAt + j];
+        }
+        const RigJet by_rig = q.v[kXAt] * ideal[0] + q.v[kXAt + 1] * ideal[1];
+        Scatter(by_rig, kWarpAt, 2, row, jacobians[2]);
+        Scatter(by_rig, kPoseAt, 6, row, jacobians[3]);
+        if (kViaExtrinsic) Scatter(by_rig, kExtrinsicAt, 6, row, jacobians[4]);
+      }
+    }
+    return true;
+  }
 
+ private:
+  // The rig's blocks in one Jet, (x, y), the intrinsics and the local
+  // coefficients in the other.
+  static constexpr int kWarpAt = 0, kPoseAt = 2, kExtrinsicAt = 8;
+  using RigJet = ceres::Jet<double, kViaExtrinsic ? 14 : 8>;
+  static constexpr int kXAt = 0, kIntrinsicsAt = 2, kLocalAt = kIntrinsicsAt + kNumIntrinsics;
+  using LensJet = ceres::Jet<double, kLocalAt + L>;
+
+  void AddBlock(int size) { mutable_parameter_block_sizes()->push_back(size); }
+
+  template <class Jet>
+  static void Seed(const double* values, int size, int at, Jet* out) {
+    for (int j = 0; j < size; ++j) out[j] = Jet(values[j], at + j);
+  }
+  // d value / d block, row `row` of the row-major Jacobian of a block of `size`.
+  static void Scatter(const RigJet& value, int at, int size, int row, double* jacobian) {
+    if (jacobian == nullptr) return;  // a constant block
+    std::copy_n(&value.v[at], size, jacobian + row * size);
+  }
+
+  // Board -> camera: the pose's, then (kViaExtrinsic) the extrinsic's.
   template <typename T>
-  bool operator()(const T* intrinsics, const T* coeffs, const T* warp, const T* pose,
-                  T* residuals) const {
-    T R[9];
+  static void BoardToCamera(const T* pose, const T* extrinsic, T* R, T* t) {
     ceres::AngleAxisToRotationMatrix(pose, ceres::RowMajorAdapter3x3(R));
-    return ViewResiduals(*model, points, intrinsics, coeffs, warp, R, pose + 3, residuals);
-  }
-  template <typename T>
-  bool operator()(T const* const* p, T* residuals) const {
-    return (*this)(p[0], p[1], p[2], p[3], residuals);
-  }
-};
-
-// Corners seen by the right camera of a board whose pose is given in the left
-// camera's frame: X_right = R_e (R_b X + t_b) + T_e.
-template <class Model>
-struct StereoViewResidual {
-  const Model* model;
-  ViewPoints points;
-
-  template <typename T>
-  bool operator()(const T* intrinsics, const T* coeffs, const T* warp, const T* pose,
-                  const T* extrinsic, T* residuals) const {
-    T Rb[9], Re[9], R[9], t[3];
-    ceres::AngleAxisToRotationMatrix(pose, ceres::RowMajorAdapter3x3(Rb));
+    std::copy(pose + 3, pose + 6, t);
+    if (!kViaExtrinsic) return;
+    T Re[9], Rb[9];
+    std::copy(R, R + 9, Rb);
     ceres::AngleAxisToRotationMatrix(extrinsic, ceres::RowMajorAdapter3x3(Re));
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c)
@@ -120,89 +166,42 @@ struct StereoViewResidual {
       t[r] = Re[3 * r] * pose[3] + Re[3 * r + 1] * pose[4] + Re[3 * r + 2] * pose[5] +
              extrinsic[3 + r];
     }
-    return ViewResiduals(*model, points, intrinsics, coeffs, warp, R, t, residuals);
   }
+
+  // The ideal point of corner i displaced by the board's warp, through R, t;
+  // false where the coordinate has none or it lies beyond max_radius.
   template <typename T>
-  bool operator()(T const* const* p, T* residuals) const {
-    return (*this)(p[0], p[1], p[2], p[3], p[4], residuals);
+  bool Ideal(int i, const T* warp, const T* R, const T* t, T* ideal) const {
+    const double* X = &points_.object[3 * i];
+    const T z = X[2] + warp[0] * points_.warp[2 * i] + warp[1] * points_.warp[2 * i + 1];
+    T camera[3];
+    for (int r = 0; r < 3; ++r)
+      camera[r] = R[3 * r] * X[0] + R[3 * r + 1] * X[1] + R[3 * r + 2] * z + t[r];
+    return Model::Coordinate::Ideal(camera, ideal) &&
+           std::hypot(ScalarPart(ideal[0]), ScalarPart(ideal[1])) <= points_.max_radius;
   }
+
+  const Model* model_;
+  ViewPoints points_;
 };
 
-namespace detail {
-
-// The coefficient counts a model can have, compiled as fixed sizes.
-template <class Model>
-struct FixedCoeffRange {
-  static constexpr int kMin = 1, kMax = kMaxFixedCoeffs;
-};
-template <int K, class Coordinate>
-struct FixedCoeffRange<PolyDistortion<K, Coordinate>> {
-  static constexpr int kMin = K, kMax = K;
-};
-
-template <class Model, int N, class Make>
-ceres::CostFunction* DispatchCoeffs(int n, const Make& make) {
-  if constexpr (N > FixedCoeffRange<Model>::kMax) {
-    return make(std::integral_constant<int, 0>());  // dynamic
-  } else {
-    if (n == N) return make(std::integral_constant<int, N>());
-    return DispatchCoeffs<Model, N + 1>(n, make);
-  }
-}
-
-}  // namespace detail
-
-// Cost function of ViewResidual over (intrinsics, coeffs, warp, pose).
-template <class Model>
-ceres::CostFunction* MakeViewCost(const Model& model, ViewPoints points) {
-  using F = ViewResidual<Model>;
-  const int residuals = 2 * points.size();
-  const int n = model.NumCoeffs();
-  return detail::DispatchCoeffs<Model, detail::FixedCoeffRange<Model>::kMin>(
-      n, [&](auto size) -> ceres::CostFunction* {
-        constexpr int N = decltype(size)::value;
-        if constexpr (N == 0) {
-          auto* cost = new ceres::DynamicAutoDiffCostFunction<F, 8>(new F{&model, points});
-          for (int block : {int(kNumIntrinsics), n, 2, 6}) cost->AddParameterBlock(block);
-          cost->SetNumResiduals(residuals);
-          return cost;
-        } else {
-          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 2, 6>(
-              new F{&model, points}, residuals);
-        }
-      });
-}
-
-// Cost function of StereoViewResidual over (intrinsics, coeffs, warp, pose, extrinsic).
-template <class Model>
-ceres::CostFunction* MakeStereoViewCost(const Model& model, ViewPoints points) {
-  using F = StereoViewResidual<Model>;
-  const int residuals = 2 * points.size();
-  const int n = model.NumCoeffs();
-  return detail::DispatchCoeffs<Model, detail::FixedCoeffRange<Model>::kMin>(
-      n, [&](auto size) -> ceres::CostFunction* {
-        constexpr int N = decltype(size)::value;
-        if constexpr (N == 0) {
-          auto* cost = new ceres::DynamicAutoDiffCostFunction<F, 8>(new F{&model, points});
-          for (int block : {int(kNumIntrinsics), n, 2, 6, 6}) cost->AddParameterBlock(block);
-          cost->SetNumResiduals(residuals);
-          return cost;
-        } else {
-          return new ceres::AutoDiffCostFunction<F, ceres::DYNAMIC, kNumIntrinsics, N, 2, 6, 6>(
-              new F{&model, points}, residuals);
-        }
-      });
-}
-
-// The cost of one view's corners for any model: ViewResidual, or
-// StereoViewResidual when the board pose is the left camera's
-// (via_extrinsic). The cost keeps a pointer to `model`.
+// The cost of one view's corners for any model (ViewCost; via_extrinsic: the
+// board pose is the left camera's). The Jet is sized for a cubic spline's
+// 4 local coefficients, or the model's bound for any other.
 inline ceres::CostFunction* MakeCost(const AnyDistortionModel& model, ViewPoints points,
                                      bool via_extrinsic) {
   return std::visit(
       [&](const auto& m) -> ceres::CostFunction* {
-        return via_extrinsic ? MakeStereoViewCost(m, std::move(points))
-                             : MakeViewCost(m, std::move(points));
+        using Model = std::decay_t<decltype(m)>;
+        constexpr int kCubic = 4, kMax = Model::kMaxLocalCoeffs;
+        auto make = [&](auto width) -> ceres::CostFunction* {
+          constexpr int kWidth = decltype(width)::value;
+          if (via_extrinsic) return new ViewCost<Model, true, kWidth>(m, std::move(points));
+          return new ViewCost<Model, false, kWidth>(m, std::move(points));
+        };
+        if constexpr (kMax > kCubic)
+          if (m.NumLocalCoeffs() <= kCubic) return make(std::integral_constant<int, kCubic>());
+        return make(std::integral_constant<int, kMax>());
       },
       model);
 }

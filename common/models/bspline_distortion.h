@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include <ceres/jet.h>
+
 #include "models/bspline_basis.h"
 #include "models/distortion.h"
 #include "models/radial_coordinate.h"
@@ -68,32 +70,56 @@ class Bspline {
   std::vector<double> EstimatedCoeffs(const std::vector<double>& stored) const;
 
   // B(r), Eq. 3; the span is chosen on the value of r, the derivatives are
-  // those of that span's polynomial.
+  // those of that span's polynomial. The basis is evaluated on the value r0
+  // with its derivative (one dual number) rather than on r's own derivatives:
+  // dB = sum_j N_j(r0) d alpha_j + (sum_j alpha_j N_j'(r0)) dr.
   template <typename T>
   T RadialDistortion(const T* coeffs, const T& r) const {
-    const int span = FindSpan(knots_, degree_, ScalarPart(r));
-    T basis[kMaxSplineDegree + 1];
-    NonZeroBasis(knots_, degree_, span, r, basis);
+    using Dual = ceres::Jet<double, 1>;
+    const double r0 = ScalarPart(r);
+    const int span = FindSpan(knots_, degree_, r0);
+    Dual basis[kMaxSplineDegree + 1];
+    NonZeroBasis(knots_, degree_, span, Dual(r0, 0), basis);
     T sum(0.0);
+    double slope = 0;
     for (int j = 0; j <= degree_; ++j) {
-      const int coeff = span - degree_ + j - first_estimated_;
-      if (coeff >= 0) sum += coeffs[coeff] * basis[j];
+      const int coeff = FirstOfSpan(span) + j;
+      if (coeff < 0) continue;
+      sum += coeffs[coeff] * basis[j].a;
+      slope += ScalarPart(coeffs[coeff]) * basis[j].v[0];
     }
-    return sum;
+    return sum + (r - r0) * slope;
   }
 
   template <typename T>
   void Distort(const T* coeffs, const T& p1, const T& p2, const T& x, const T& y, T* xd,
                T* yd) const {
-    using std::sqrt;
-    const T r2 = x * x + y * y;
-    // sqrt has no derivative at 0; there B is flat (kIdentifiable) or has a
-    // cone point (kAll) and a zero derivative is the one that is always defined.
-    const T r = ScalarPart(r2) > 0.0 ? T(sqrt(r2)) : T(0.0);
-    RadialTangential(RadialDistortion(coeffs, r), p1, p2, x, y, xd, yd);
+    RadialTangential(RadialDistortion(coeffs, Radius(x, y)), p1, p2, x, y, xd, yd);
+  }
+
+  // Local support (distortion.h): on a span only its degree + 1 basis
+  // functions are non-zero, so Distort at (x, y) reads coeffs[first ..
+  // first + degree] only (those of them that are estimated).
+  static constexpr int kMaxLocalCoeffs = kMaxSplineDegree + 1;
+  int NumLocalCoeffs() const { return degree_ + 1; }
+  int FirstLocalCoeff(double x, double y) const {
+    return FirstOfSpan(FindSpan(knots_, degree_, Radius(x, y)));
   }
 
  private:
+  // r of the ideal point. sqrt has no derivative at 0; there B is flat
+  // (kIdentifiable) or has a cone point (kAll) and a zero derivative is the
+  // one that is always defined.
+  template <typename T>
+  static T Radius(const T& x, const T& y) {
+    using std::sqrt;
+    const T r2 = x * x + y * y;
+    return ScalarPart(r2) > 0.0 ? T(sqrt(r2)) : T(0.0);
+  }
+  // The index into coeffs of alpha_{span - degree}, the first basis function
+  // non-zero on the span (negative where it is gauge-fixed).
+  int FirstOfSpan(int span) const { return span - degree_ - first_estimated_; }
+
   std::vector<double> knots_;
   int degree_;
   int first_estimated_;  // alpha index of coeffs[0]: 2 for kIdentifiable, else 0

@@ -25,6 +25,13 @@
 //   template <typename T> T RadialDistortion(const T* coeffs, const T& r) const;   // D(r)
 //   template <typename T> void Distort(const T* coeffs, const T& p1, const T& p2,
 //                                      const T& x, const T& y, T* xd, T* yd) const;
+//   // Local support: Distort at the ideal point (x, y) reads only
+//   // coeffs[FirstLocalCoeff(x, y) + j], 0 <= j < NumLocalCoeffs() (those of
+//   // them in [0, NumCoeffs())), so that a solver differentiates a corner's
+//   // residual by those few (calib/residuals.h). A spline: its degree + 1.
+//   static constexpr int kMaxLocalCoeffs;            // bound of NumLocalCoeffs()
+//   int NumLocalCoeffs() const;
+//   int FirstLocalCoeff(double x, double y) const;
 //
 // A new model (say a spline over the incidence angle for fisheye lenses) is a
 // new header with such a class plus one entry in model_registry.h; solvers and

@@ -68,6 +68,11 @@ class PolyDistortion {
     RadialTangential(OfSquaredRadius(k, x * x + y * y), p1, p2, x, y, xd, yd);
   }
 
+  // Every coefficient acts at every radius (distortion.h).
+  static constexpr int kMaxLocalCoeffs = N;
+  int NumLocalCoeffs() const { return N; }
+  int FirstLocalCoeff(double, double) const { return 0; }
+
  private:
   // D as a polynomial in r^2 (Horner's rule): smooth in x and y, no sqrt.
   template <typename T>

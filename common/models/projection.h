@@ -29,13 +29,23 @@ constexpr int kFx = 0, kFy = 1, kCx = 2, kCy = 3, kP1 = 4, kP2 = 5, kNumIntrinsi
 // (uv untouched) where the model's coordinate has no ideal point for it
 // (pinhole models: Z <= 0; angle models: straight back).
 template <typename Model, typename T>
-bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel) {
-  T ideal[2];
-  if (!Model::Coordinate::Ideal(point, ideal)) return false;
+bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel);
+
+// The pixel of the ideal point (x, y): Project after the coordinate.
+template <typename Model, typename T>
+void ProjectIdeal(const Model& model, const T* intrinsics, const T* coeffs, const T* ideal,
+                  T* pixel) {
   T xd, yd;
   model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], ideal[0], ideal[1], &xd, &yd);
   pixel[0] = intrinsics[kFx] * xd + intrinsics[kCx];
   pixel[1] = intrinsics[kFy] * yd + intrinsics[kCy];
+}
+
+template <typename Model, typename T>
+bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel) {
+  T ideal[2];
+  if (!Model::Coordinate::Ideal(point, ideal)) return false;
+  ProjectIdeal(model, intrinsics, coeffs, ideal, pixel);
   return true;
 }
 

@@ -1,0 +1,105 @@
+// The calibration cost's Jacobians (calib/residuals.h: each corner
+// differentiated by its local coefficients only, the chain rule split at the
+// ideal point) against central differences of its own residuals, for every
+// block, with the board pose in the camera's frame and via the extrinsic,
+// on every test camera and on a spline of 31 coefficients.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "../models/test_cameras.h"
+#include "calib/residuals.h"
+
+namespace ws::calib {
+namespace {
+
+using ws::testing::TestCamera;
+using ws::testing::TestCameras;
+
+// A 5 x 4 board seen obliquely from close by: its corners' ideal radii
+// run from near the axis to past 1 (45 degrees), across many knot spans.
+ViewPoints Board() {
+  ViewPoints points;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Eigen::Vector3d X(0.12 * i - 0.3, 0.12 * j - 0.2, 0.0);
+      points.Add(X, Eigen::Vector2d(600 + 10 * i, 450 - 7 * j),
+                 Eigen::Vector2d(X.x() * X.x() - 0.02, X.y() * X.y() - 0.01));
+    }
+  return points;
+}
+
+void CheckJacobians(const AnyDistortionModel& model, std::vector<std::vector<double>> blocks,
+                    bool via_extrinsic, const std::string& where) {
+  std::unique_ptr<ceres::CostFunction> cost(MakeCost(model, Board(), via_extrinsic));
+  const int rows = cost->num_residuals();
+  ASSERT_EQ(cost->parameter_block_sizes().size(), blocks.size()) << where;
+  std::vector<double*> parameters;
+  std::vector<std::vector<double>> jacobians;
+  std::vector<double*> jacobian_pointers;
+  for (auto& block : blocks) {
+    parameters.push_back(block.data());
+    jacobians.emplace_back(rows * block.size());
+    jacobian_pointers.push_back(jacobians.back().data());
+  }
+  std::vector<double> residuals(rows), plus(rows), minus(rows), plain(rows);
+  ASSERT_TRUE(cost->Evaluate(parameters.data(), residuals.data(), jacobian_pointers.data()))
+      << where;
+  ASSERT_TRUE(cost->Evaluate(parameters.data(), plain.data(), nullptr)) << where;
+  for (int row = 0; row < rows; ++row) EXPECT_NEAR(residuals[row], plain[row], 1e-9) << where;
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    for (size_t j = 0; j < blocks[b].size(); ++j) {
+      const double saved = blocks[b][j];
+      const double step = 1e-6 * std::max(1.0, std::abs(saved));
+      blocks[b][j] = saved + step;
+      ASSERT_TRUE(cost->Evaluate(parameters.data(), plus.data(), nullptr)) << where;
+      blocks[b][j] = saved - step;
+      ASSERT_TRUE(cost->Evaluate(parameters.data(), minus.data(), nullptr)) << where;
+      blocks[b][j] = saved;
+      for (int row = 0; row < rows; ++row) {
+        const double numeric = (plus[row] - minus[row]) / (2 * step);
+        const double automatic = jacobians[b][row * blocks[b].size() + j];
+        EXPECT_NEAR(automatic, numeric, 2e-5 * (1 + std::abs(numeric)))
+            << where << ": d residual[" << row << "] / d block " << b << "[" << j << "]";
+      }
+    }
+  }
+}
+
+void CheckBothWays(const AnyDistortionModel& model, const std::vector<double>& intrinsics,
+                   const std::vector<double>& coeffs, const std::string& name) {
+  const std::vector<double> warp{2e-3, -1e-3}, pose{0.25, -0.35, 0.1, 0.02, -0.01, 0.3},
+      extrinsic{0.01, 0.02, -0.015, -0.12, 0.002, 0.004};
+  CheckJacobians(model, {intrinsics, coeffs, warp, pose}, false, name + ", board in its frame");
+  CheckJacobians(model, {intrinsics, coeffs, warp, pose, extrinsic}, true,
+                 name + ", board via the extrinsic");
+}
+
+class ViewCostJacobians : public ::testing::TestWithParam<TestCamera> {};
+
+TEST_P(ViewCostJacobians, MatchCentralDifferences) {
+  const TestCamera& test = GetParam();
+  const auto intrinsics = test.model.Intrinsics();
+  const AnyDistortionModel model = MakeModel(test.model.distortion, test.which);
+  const std::vector<double> coeffs = std::visit(
+      [&](const auto& m) { return m.EstimatedCoeffs(test.model.distortion.coeffs); }, model);
+  CheckBothWays(model, {intrinsics.begin(), intrinsics.end()}, coeffs, test.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, ViewCostJacobians, ::testing::ValuesIn(TestCameras()),
+                         [](const auto& info) { return info.param.name; });
+
+// Many knots: a corner reads 4 of 31 coefficients, every span is used.
+TEST(ViewCostJacobians, ThirtyOneCoefficientSplineMatchesCentralDifferences) {
+  for (const std::string kind : {"bspline", "bspline_theta"}) {
+    const AnyDistortionModel model = MakeCalibrationModel(kind, CalibrationSetup{1.6, 30, 3});
+    std::vector<double> coeffs(31);
+    for (size_t i = 0; i < coeffs.size(); ++i) coeffs[i] = 0.02 * std::sin(0.7 * i) - 0.003 * i;
+    CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, kind + " 31");
+  }
+}
+
+}  // namespace
+}  // namespace ws::calib
