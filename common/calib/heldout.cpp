@@ -6,7 +6,8 @@
 #include <map>
 #include <numeric>
 
-#include <opencv2/core/utility.hpp>
+#include <Eigen/Dense>
+#include <optional>
 
 #include "calib/pose_fit.h"
 
@@ -46,105 +47,137 @@ HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int
 
 namespace {
 
-// The problem's observations whose view is (or, with keep = false, is not)
-// in `views`, on the board poses of *poses (copies of the problem's, one per
-// distinct pose the problem points to).
-Problem Subproblem(const Problem& solved, const std::vector<int>& views, bool keep,
-                   const std::map<const Pose*, size_t>& index, std::vector<Pose>* poses) {
-  Problem out = solved;
-  out.observations.clear();
-  out.left_out.clear();
-  for (Observation o : solved.observations) {
-    if (std::binary_search(views.begin(), views.end(), o.view) != keep) continue;
-    o.pose = &(*poses)[index.at(o.pose)];
-    out.observations.push_back(o);
-  }
-  return out;
-}
-
-// One fold's held-out residuals per camera (sum of squares, count), or none
-// when leaving it out leaves a camera without enough views.
-struct FoldResult {
-  bool solved = false;
-  std::vector<double> sum;
-  std::vector<int> count;
+// What one board pose's corners (those of every observation on it) add to
+// the normal equations of the free parameters f and the pose p, and their
+// Schur complement with the pose eliminated: S = A_ff - A_fp A_pp^-1 A_pf,
+// b = g_f - A_fp A_pp^-1 g_p.
+struct PoseTerms {
+  int view = -1;
+  std::vector<int> blocks;  // into Linearisation::blocks
+  Eigen::Matrix<double, 6, 6> App_inverse;
+  bool posed = false;       // A_pp is positive definite
+  Eigen::MatrixXd S;
+  Eigen::VectorXd b;
 };
 
-FoldResult SolveFold(const Problem& solved, const std::vector<int>& held,
-                     const std::map<const Pose*, size_t>& index, const std::vector<Pose>& start,
-                     int k, int max_iterations) {
-  FoldResult out;
-  std::vector<Pose> poses = start;
-  Problem train = Subproblem(solved, held, false, index, &poses);
-  const std::string what = "cross-validation fold " + std::to_string(k + 1);
-  try {
-    SolveSettings settings{what, std::min(kFoldIterations, max_iterations)};
-    settings.tolerance = kRankingTolerance;
-    Solve(train, settings);
-    settings.max_iterations = max_iterations;  // the held-out poses, each from the full solution's
-    Problem test = Subproblem(solved, held, true, index, &poses);
-    test.cameras = train.cameras;
-    for (CameraBlock& camera : test.cameras) camera.fixed = true;
-    test.extrinsic = train.extrinsic;
-    test.extrinsic_fixed = true;
-    settings.what = what + " held-out poses";
-    Solve(test, settings);
-    for (size_t c = 0; c < solved.cameras.size(); ++c) {
-      double sum = 0;
-      int count = 0;
-      for (const CornerResidual& r : Residuals(test, int(c)))
-        if (!r.outlier && r.residual.allFinite()) {
-          sum += r.residual.squaredNorm();
-          ++count;
-        }
-      out.sum.push_back(sum);
-      out.count.push_back(count);
-    }
-    out.solved = true;
-  } catch (const CalibrationError&) {
-    // A fold that leaves a camera without enough views: it counts as no fold.
+std::vector<PoseTerms> PosesOf(const Problem& problem, const Linearisation& lin) {
+  std::vector<PoseTerms> poses;
+  const int nf = lin.free_size;
+  for (size_t k = 0; k < lin.blocks.size(); ++k) {
+    const Linearisation::Block& block = lin.blocks[k];
+    if (block.pose >= int(poses.size())) poses.resize(block.pose + 1);
+    poses[block.pose].blocks.push_back(int(k));
+    poses[block.pose].view = problem.observations[block.observation].view;
   }
-  return out;
+  for (PoseTerms& pose : poses) {
+    Eigen::Matrix<double, 6, 6> App = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::MatrixXd Afp = Eigen::MatrixXd::Zero(nf, 6);
+    Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
+    pose.S = Eigen::MatrixXd::Zero(nf, nf);
+    pose.b = Eigen::VectorXd::Zero(nf);
+    for (int k : pose.blocks) {
+      const Linearisation::Block& block = lin.blocks[k];
+      App += block.J_pose.transpose() * block.J_pose;
+      Afp += block.J_free.transpose() * block.J_pose;
+      gp += block.J_pose.transpose() * block.r;
+      pose.S.noalias() += block.J_free.transpose() * block.J_free;
+      pose.b.noalias() += block.J_free.transpose() * block.r;
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(App);
+    const auto& values = eig.eigenvalues();
+    pose.posed = values(0) > 1e-12 * std::max(1.0, values(5));
+    if (!pose.posed) continue;  // its corners cannot fix it: it adds nothing
+    pose.App_inverse =
+        eig.eigenvectors() * values.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+    pose.S.noalias() -= Afp * pose.App_inverse * Afp.transpose();
+    pose.b.noalias() -= Afp * pose.App_inverse * gp;
+  }
+  return poses;
+}
+
+// The Gauss-Newton step of the free parameters for normal equations S, b
+// (S d = -b), S scaled to unit diagonal first (the parameters' units differ
+// by orders of magnitude). Directions the fold's views do not determine
+// (eigenvalues below 1e-12 of the largest: a spline's spans no training
+// corner reaches, without the prior) keep their value, as Levenberg-
+// Marquardt from the full solution would; none if S is not finite.
+std::optional<Eigen::VectorXd> Step(const Eigen::MatrixXd& S, const Eigen::VectorXd& b) {
+  if (!S.allFinite() || !b.allFinite()) return std::nullopt;
+  const Eigen::VectorXd d = S.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(d.asDiagonal() * S * d.asDiagonal());
+  const Eigen::VectorXd& values = eig.eigenvalues();
+  const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd inverse =
+      values.unaryExpr([&](double v) { return v > floor ? 1.0 / v : 0.0; });
+  const Eigen::MatrixXd& V = eig.eigenvectors();
+  Eigen::VectorXd step = -(d.asDiagonal() * (V * (inverse.asDiagonal() * (V.transpose() * (d.asDiagonal() * b)))));
+  if (!step.allFinite()) return std::nullopt;
+  return step;
 }
 
 }  // namespace
 
-CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations) {
+CrossValidation CrossValidate(const Problem& solved, int folds) {
   std::vector<int> views;
-  std::map<const Pose*, size_t> index;
-  std::vector<Pose> start;
-  for (const Observation& o : solved.observations) {
-    views.push_back(o.view);
-    if (index.emplace(o.pose, start.size()).second) start.push_back(*o.pose);
-  }
+  for (const Observation& o : solved.observations) views.push_back(o.view);
   std::sort(views.begin(), views.end());
   views.erase(std::unique(views.begin(), views.end()), views.end());
   CrossValidation cv;
   const int n_cameras = int(solved.cameras.size());
   if (folds < 2 || int(views.size()) < 2 * folds) return cv;
-  // The folds are independent solves: on every core (OpenCV's pool), each
-  // fold's result kept in its place, so the outcome does not depend on the
-  // order they finish in.
-  std::vector<FoldResult> results(folds);
-  cv::parallel_for_(
-      cv::Range(0, folds),
-      [&](const cv::Range& range) {
-        for (int k = range.start; k < range.end; ++k) {
-          std::vector<int> held;
-          for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
-          results[k] = SolveFold(solved, held, index, start, k, max_iterations);
-        }
-      },
-      folds);
+  Problem problem = solved;
+  const Linearisation lin = Linearise(problem, "cross-validation");
+  const std::vector<PoseTerms> poses = PosesOf(problem, lin);
+  Eigen::MatrixXd S_all = lin.prior_J.transpose() * lin.prior_J;
+  Eigen::VectorXd b_all = lin.prior_J.transpose() * lin.prior_r;
+  for (const PoseTerms& pose : poses)
+    if (pose.posed) {
+      S_all += pose.S;
+      b_all += pose.b;
+    }
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);
   cv.fold_rms_px.assign(n_cameras, {});
-  for (const FoldResult& fold : results) {
-    if (!fold.solved) continue;
+  for (int k = 0; k < folds; ++k) {
+    std::vector<int> held;  // dealt round-robin in view order
+    for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
+    auto is_held = [&](const PoseTerms& pose) {
+      return std::binary_search(held.begin(), held.end(), pose.view);
+    };
+    // Training: the step from the full solution without the fold's poses.
+    Eigen::MatrixXd S = S_all;
+    Eigen::VectorXd b = b_all;
+    for (const PoseTerms& pose : poses)
+      if (pose.posed && is_held(pose)) {
+        S -= pose.S;
+        b -= pose.b;
+      }
+    const std::optional<Eigen::VectorXd> step = Step(S, b);
+    if (!step) continue;  // the other folds do not determine the camera
+    // Testing: each held-out pose refitted to its corners under the step.
+    std::vector<double> fold_sum(n_cameras, 0.0);
+    std::vector<int> fold_count(n_cameras, 0);
+    for (const PoseTerms& pose : poses) {
+      if (!pose.posed || !is_held(pose)) continue;
+      std::vector<Eigen::VectorXd> e;
+      Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
+      for (int index : pose.blocks) {
+        const Linearisation::Block& block = lin.blocks[index];
+        e.push_back(block.r + block.J_free * *step);
+        gp += block.J_pose.transpose() * e.back();
+      }
+      const Eigen::Matrix<double, 6, 1> pose_step = -pose.App_inverse * gp;
+      for (size_t i = 0; i < pose.blocks.size(); ++i) {
+        const Linearisation::Block& block = lin.blocks[pose.blocks[i]];
+        const int camera = problem.observations[block.observation].camera;
+        fold_sum[camera] += (e[i] + block.J_pose * pose_step).squaredNorm();
+        fold_count[camera] += int(block.r.size()) / 2;
+      }
+    }
     for (int c = 0; c < n_cameras; ++c) {
-      sum[c] += fold.sum[c];
-      count[c] += fold.count[c];
-      cv.fold_rms_px[c].push_back(fold.count[c] ? std::sqrt(fold.sum[c] / fold.count[c]) : 0.0);
+      sum[c] += fold_sum[c];
+      count[c] += fold_count[c];
+      cv.fold_rms_px[c].push_back(fold_count[c] ? std::sqrt(fold_sum[c] / fold_count[c]) : 0.0);
     }
     ++cv.folds;
   }

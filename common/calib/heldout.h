@@ -34,14 +34,21 @@ HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, i
 // K-fold cross-validation of a solved problem (issue #14). The problem's
 // views are dealt round-robin, in view order, into `folds` folds (a stereo
 // view's two images are one view, so they stay together). For each fold the
-// problem is solved again without it, warm-started at the full solution
-// (the same cameras, extrinsic and poses, no outlier rejection, the
-// inliers as they are); then, with every camera parameter and the extrinsic
-// held at that fold's solution, only the held-out views' board poses are
-// fitted (each starting at its pose in the full solution) and their
-// corners' residuals kept: the held-out residuals. The folds are solved in
-// parallel on OpenCV's thread pool (cv::setNumThreads bounds it); the result
-// does not depend on it.
+// problem without it is solved by one Gauss-Newton step from the full
+// solution (the same cameras, extrinsic and poses, no outlier rejection, the
+// inliers as they are; the other views' poses eliminated by the Schur
+// complement); then, with every camera parameter and the extrinsic held at
+// that step, each held-out view's board pose is refitted to its corners
+// (one Gauss-Newton step from its pose in the full solution), and those
+// corners' residuals are kept: the held-out residuals.
+//
+// One step, because the fold's optimum is a small step away: the full
+// solution minimises the sum over all views, so without a fifth of them the
+// gradient is that fifth's, and Gauss-Newton takes it to second order. The
+// whole cross-validation then costs one Jacobian of the solved problem and
+// one small dense solve per fold, not K solves: measured against folds
+// solved to convergence (five Levenberg-Marquardt steps and the held-out
+// poses solved), see README "Calibration".
 struct CrossValidation {
   int folds = 0;  // 0: not enough views (fewer than 2 per fold) or not asked
   // Per camera of the problem: the RMS of every held-out residual of every
@@ -49,19 +56,8 @@ struct CrossValidation {
   std::vector<double> rms_px;
   std::vector<std::vector<double>> fold_rms_px;
 };
-//
-// A fold's training solve takes at most kFoldIterations Levenberg-Marquardt
-// steps: from the full solution the fold's optimum (a fifth of the views
-// fewer) is a small step away, which Gauss-Newton takes to second order;
-// a few more steps absorb rejected ones. Measured against folds solved to
-// convergence: on the mustache rig (bench/calib) every knot count's held-out
-// RMS agrees to 1e-5 px at 3 steps (3e-5 px at 1); on fisheye-stereo-ros
-// (real corners, 0.4 px noise) to 1e-4 px at 5 steps, while 2 steps moved
-// them by up to 4e-4 px, enough to flip a choice that sits on the edge of
-// the fold-to-fold noise (kb4 against bspline_theta).
-inline constexpr int kFoldIterations = 5;
-// The held-out poses are solved with up to `max_iterations` steps.
-CrossValidation CrossValidate(const Problem& solved, int folds, int max_iterations);
+// Throws CalibrationError if the solved problem cannot be evaluated.
+CrossValidation CrossValidate(const Problem& solved, int folds);
 
 // Of candidates in order of complexity, each with its per-fold held-out RMS
 // (the same folds for all), the least complex whose excess over the best

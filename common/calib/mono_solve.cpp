@@ -124,7 +124,7 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
     SolveSettings settings = StageSettings(options, trial, options.max_iterations);
     settings.tolerance = kRankingTolerance;
     Solve(s->problem, settings);
-    const CrossValidation cv = CrossValidate(s->problem, options.cv_folds, options.max_iterations);
+    const CrossValidation cv = CrossValidate(s->problem, options.cv_folds);
     if (cv.folds == 0) throw CalibrationError(what + ": too few views to cross-validate the knots");
     s->knot_curve.push_back(
         {knots, Rms(Residuals(s->problem, 0)), cv.rms_px[0], cv.fold_rms_px[0]});
@@ -256,7 +256,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
 
 CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options) {
   return state.heldout.folds ? state.heldout
-                             : CrossValidate(state.problem, options.cv_folds, options.max_iterations);
+                             : CrossValidate(state.problem, options.cv_folds);
 }
 
 }  // namespace ws::calib

@@ -70,6 +70,7 @@ struct Built {
   ParameterArena arena;
   ceres::Problem ceres;
   std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
+  std::vector<int> data_observation;  // per data block: its index in problem.observations
   int data_residuals = 0;
   std::vector<double*> poses;        // board poses
   std::vector<double*> free_blocks;  // free camera blocks, the extrinsic, the warp
@@ -125,6 +126,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       built->data_residuals += cost->num_residuals();
       built->data_blocks.push_back(
           built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
+      built->data_observation.push_back(int(kept.size()) - 1);
     }
     double* pose = arena[o.pose->data.data()];
     if (!costs.empty() &&
@@ -281,6 +283,59 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
       for (size_t j = 0; j < index.size(); ++j)
         if (index[i] >= 0 && index[j] >= 0) out(i, j) = (*covariance)(index[i], index[j]);
   }
+}
+
+Linearisation Linearise(Problem& problem, const std::string& what) {
+  Built built(problem);
+  Build(problem, SolveSettings{what}, &built);
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = built.poses;
+  options.parameter_blocks.insert(options.parameter_blocks.end(), built.free_blocks.begin(),
+                                  built.free_blocks.end());
+  std::vector<ceres::ResidualBlockId> all;
+  built.ceres.GetResidualBlocks(&all);
+  options.residual_blocks = built.data_blocks;
+  for (ceres::ResidualBlockId id : all)
+    if (std::find(built.data_blocks.begin(), built.data_blocks.end(), id) == built.data_blocks.end())
+      options.residual_blocks.push_back(id);
+  options.apply_loss_function = false;
+  options.num_threads = 1;
+  std::vector<double> residuals;
+  ceres::CRSMatrix crs;
+  if (!built.ceres.Evaluate(options, nullptr, &residuals, nullptr, &crs))
+    throw CalibrationError(what + ": the residuals cannot be evaluated at the solution");
+  const int pose_columns = 6 * int(built.poses.size());
+  Linearisation out;
+  out.free_size = crs.num_cols - pose_columns;
+  // Rows [row, row + count) of the Jacobian: by the free parameters into
+  // *free and, if pose_column >= 0, by that pose into *pose.
+  auto rows = [&](int row, int count, int pose_column, Eigen::MatrixXd* free,
+                  Eigen::MatrixXd* pose) {
+    free->setZero(count, out.free_size);
+    if (pose) pose->setZero(count, 6);
+    for (int i = 0; i < count; ++i)
+      for (int k = crs.rows[row + i]; k < crs.rows[row + i + 1]; ++k) {
+        const int column = crs.cols[k];
+        if (column >= pose_columns) (*free)(i, column - pose_columns) = crs.values[k];
+        else if (pose && column >= pose_column && column < pose_column + 6)
+          (*pose)(i, column - pose_column) = crs.values[k];
+      }
+  };
+  int row = 0;
+  for (size_t b = 0; b < built.data_blocks.size(); ++b) {
+    const int count = built.ceres.GetCostFunctionForResidualBlock(built.data_blocks[b])->num_residuals();
+    const Observation& o = problem.observations[built.data_observation[b]];
+    const double* pose = built.arena[o.pose->data.data()];
+    const int index = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
+    Linearisation::Block block{built.data_observation[b], index};
+    block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
+    rows(row, count, 6 * index, &block.J_free, &block.J_pose);
+    out.blocks.push_back(std::move(block));
+    row += count;
+  }
+  out.prior_r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, crs.num_rows - row);
+  rows(row, crs.num_rows - row, -1, &out.prior_J, nullptr);
+  return out;
 }
 
 std::vector<CornerResidual> Residuals(const Problem& problem, int camera) {

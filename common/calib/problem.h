@@ -82,6 +82,27 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings);
 // (covariance.h), into outcome.
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome);
 
+// The problem linearised at its parameters, without a robust loss: per
+// observation with corners, its residuals (inlier corners, u and v) and their
+// Jacobian by the free parameters (the free cameras, extrinsic and warp in
+// their tangent spaces, as EstimateStddev orders them) and by its board
+// pose; the smoothness prior's residuals and Jacobian by the free
+// parameters. Observations that cannot be evaluated move to left_out
+// (Solve); throws CalibrationError if nothing can.
+struct Linearisation {
+  struct Block {
+    int observation = 0;  // index into problem.observations
+    int pose = 0;         // the board pose's index among the distinct poses
+    Eigen::VectorXd r;
+    Eigen::MatrixXd J_free, J_pose;  // J_pose: 6 columns
+  };
+  int free_size = 0;
+  std::vector<Block> blocks;
+  Eigen::VectorXd prior_r;
+  Eigen::MatrixXd prior_J;
+};
+Linearisation Linearise(Problem& problem, const std::string& what);
+
 // Every corner of camera `camera` with its residual (outliers flagged), the
 // board displaced by the problem's warp.
 std::vector<CornerResidual> Residuals(const Problem& problem, int camera);

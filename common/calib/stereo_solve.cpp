@@ -192,7 +192,7 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   // camera's own solve (R, T then play no part in it).
   const bool joint_kept = out.flow == StereoFlow::kJoint;
   const CrossValidation joint_cv =
-      joint_kept ? CrossValidate(problem, options.cv_folds, options.max_iterations)
+      joint_kept ? CrossValidate(problem, options.cv_folds)
                  : CrossValidation{};
   for (int c = 0; c < 2; ++c) {
     CameraCalibration& camera = c == 0 ? out.left : out.right;
