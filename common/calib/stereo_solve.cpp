@@ -40,8 +40,7 @@ Pose AverageExtrinsic(const std::vector<Pose>& left, const std::vector<Pose>& ri
   return Pose::FromRt(U * svd.matrixV().transpose(), T);
 }
 
-// Each camera's own solve, the two at once on OpenCV's pool (a nested
-// parallel region, the cross-validation's folds, then runs in line). The
+// Each camera's own solve, the two at once on OpenCV's pool. The
 // progress lines of the two are serialised; an error is the left camera's
 // when both fail, as when they ran one after the other.
 void SolveBothMono(const StereoData& data, const BoardExtent& board,
