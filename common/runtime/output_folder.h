@@ -14,4 +14,10 @@ namespace ws {
 // `folder` is "" (the process was started without such a folder).
 std::string FileInFolder(const std::string& folder, const std::string& name);
 
+// Checks, before any work, that the file `path` given as `option` (--out,
+// --report) can be written where it names: its folder ("." for a bare name)
+// exists and this process may write in it. Throws std::invalid_argument
+// naming the option and the folder otherwise; "" (no such file) passes.
+void RequireWritableFolderOf(const std::string& option, const std::string& path);
+
 }  // namespace ws

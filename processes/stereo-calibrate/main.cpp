@@ -6,6 +6,7 @@
 
 #include "calib/calibrate_node.h"
 #include "models/model_registry.h"
+#include "runtime/output_folder.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-calibrate",
@@ -97,6 +98,8 @@ int main(int argc, char** argv) {
     if (state.empty() && !replay) state = cli.options().log_dir + "/stereo-calibrate-views.lcmlog";
     node.session.state_path = state == "none" ? "" : state;
     ws::calib::CheckOptions(calib);
+    ws::RequireWritableFolderOf("--out", node.out_yaml);
+    ws::RequireWritableFolderOf("--report", node.report_json);
 
     ws::Process process(cli.options());
     ws::calib::CalibrateNode calibrate(process, node);

@@ -6,6 +6,7 @@
 
 #include "health/health_node.h"
 #include "rectify/rectify_options.h"
+#include "runtime/output_folder.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-health",
@@ -83,6 +84,8 @@ int main(int argc, char** argv) {
   }
 
   try {
+    ws::RequireWritableFolderOf("--out", c.out_yaml);
+    ws::RequireWritableFolderOf("--report", c.report_json);
     ws::Process process(cli.options());
     ws::HealthNode node(process, c);
     node.Start(calib_file);

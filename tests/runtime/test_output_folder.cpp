@@ -1,9 +1,11 @@
-// FileInFolder: the one rule for every command argument that names a file.
+// FileInFolder: the one rule for every command argument that names a file;
+// RequireWritableFolderOf: an output option checked before any work.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
 #include "runtime/output_folder.h"
+#include "test_support.h"
 
 namespace {
 
@@ -18,6 +20,33 @@ TEST(FileInFolder, OnlyAPlainFileNameInTheFolder) {
     EXPECT_STREQ(e.what(), "'../x.pcd' is not a plain file name (no '/', no '..'); files go only into /data/clouds");
   }
   EXPECT_THROW(ws::FileInFolder("", "cloud.pcd"), std::invalid_argument);
+}
+
+TEST(RequireWritableFolderOf, AMissingFolderIsAnErrorNamingTheOptionAndTheFolder) {
+  const std::string dir = ws::test::TempDir("writable-folder");
+  EXPECT_NO_THROW(ws::RequireWritableFolderOf("--out", dir + "/calib.yaml"));
+  EXPECT_NO_THROW(ws::RequireWritableFolderOf("--out", "calib.yaml"));  // the working folder
+  EXPECT_NO_THROW(ws::RequireWritableFolderOf("--report", ""));         // none asked for
+  try {
+    ws::RequireWritableFolderOf("--report", dir + "/missing/report.json");
+    ADD_FAILURE() << "a missing folder passed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "--report " + dir + "/missing/report.json: the folder " + dir +
+                                         "/missing does not exist");
+  }
+}
+
+TEST(RequireWritableFolderOf, StereoCalibrateRefusesAnOutFolderThatIsNotThereBeforeItStarts) {
+  const std::string dir = ws::test::TempDir("calibrate-out-missing");
+  const auto run = ws::test::RunCommand(
+      {"stereo-calibrate", "--once", "--log-dir", dir, "--in-url", "file://" + dir + "/none.lcmlog?speed=0",
+       "--out", dir + "/missing/calib.yaml"},
+      30);
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("--out " + dir + "/missing/calib.yaml: the folder " + dir +
+                            "/missing does not exist"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace
