@@ -6,6 +6,7 @@
 
 #include "health/health_node.h"
 #include "rectify/rectify_options.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-health",
