@@ -19,6 +19,7 @@
 #include "calib/heldout.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "widestereo/stereo_corners_t.hpp"
 
 namespace {

@@ -21,6 +21,7 @@
 #include "calib/calib_data.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "widestereo/stereo_corners_t.hpp"
 
 namespace {

@@ -17,6 +17,7 @@
 
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "runtime/wall_clock.h"
 #include "sim/sim_source.h"
 #include "sim/truth_calibration.h"

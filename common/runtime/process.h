@@ -29,7 +29,7 @@
 
 #include "auth/message_auth.h"
 #include "lcm_io/decode.h"
-#include "runtime/process_cli.h"
+#include "runtime/process_options.h"
 #include "runtime/text_log.h"
 #include "widestereo/process_status_t.hpp"
 

@@ -8,17 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
-namespace ws {
+#include "runtime/process_options.h"
 
-struct ProcessOptions {
-  std::string name;
-  std::string config_file;
-  std::string in_url;   // "" = LCM's default (LCM_DEFAULT_URL or udpm multicast)
-  std::string out_url;
-  std::string log_dir = "logs";
-  std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
-  bool quiet = false;
-};
+namespace ws {
 
 class ProcessCli {
  public:

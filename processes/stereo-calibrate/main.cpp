@@ -7,6 +7,7 @@
 #include "calib/calibrate_node.h"
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-calibrate",

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "source/capture_loop.h"
 #include "source/make_source.h"
 

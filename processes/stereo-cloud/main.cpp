@@ -6,6 +6,7 @@
 #include "cloud/cloud_filter_options.h"
 #include "cloud/cloud_node.h"
 #include "lcm_io/channels.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-cloud",

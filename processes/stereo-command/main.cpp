@@ -8,6 +8,7 @@
 
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "widestereo/command_t.hpp"
 
 int main(int argc, char** argv) {

@@ -7,6 +7,7 @@
 
 #include "detect/corner_stage.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-detect",

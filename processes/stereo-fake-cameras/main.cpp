@@ -10,6 +10,7 @@
 #include "capture/fake_stereo_cameras.h"
 #include "capture/gige_address.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 
 namespace {
 

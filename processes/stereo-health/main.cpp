@@ -7,6 +7,7 @@
 #include "health/health_node.h"
 #include "rectify/rectify_options.h"
 #include "runtime/output_folder.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-health",

@@ -11,6 +11,7 @@
 #include "detect/board_spec.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 #include "widestereo/stereo_corners_t.hpp"
 
 int main(int argc, char** argv) {

@@ -6,6 +6,7 @@
 #include "lcm_io/channels.h"
 #include "match/match_node.h"
 #include "rectify/rectify_options.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-match",

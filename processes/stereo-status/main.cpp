@@ -7,6 +7,7 @@
 #include "lcm_io/channels.h"
 #include "monitor/status_board.h"
 #include "runtime/process.h"
+#include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-status",
