@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "calib/quality.h"
 #include "calib/ray_pose.h"
 
 namespace ws::calib {
@@ -47,8 +48,7 @@ Fit Evaluate(const Prepared& p, double f, const Eigen::Vector2d& c, int min_view
     rms.push_back(std::sqrt(sum / view.size()));
   }
   if (static_cast<int>(rms.size()) < min_views) return fit;
-  std::nth_element(rms.begin(), rms.begin() + rms.size() / 2, rms.end());
-  fit.score = rms[rms.size() / 2];
+  fit.score = Median(rms);
   return fit;
 }
 

@@ -7,6 +7,8 @@
 #include <map>
 #include <utility>
 
+#include "calib/quality.h"
+
 namespace ws::calib {
 namespace {
 
@@ -74,9 +76,9 @@ std::vector<int> MakeHalfTurnsConsistent(const BoardExtent& board,
         if (b != a)
           nearest.push_back(std::min(Angle(relative[a][k], relative[b][0]),
                                      Angle(relative[a][k], relative[b][1])));
-      std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-      if (nearest[nearest.size() / 2] < best) {
-        best = nearest[nearest.size() / 2];
+      const double median = Median(nearest);
+      if (median < best) {
+        best = median;
         rig = relative[a][k];
       }
     }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calib/quality.h"
+
 namespace ws::calib {
 namespace {
 
@@ -44,8 +46,7 @@ PairConsistency CheckPairs(const Problem& through_rig, const MonoState (&mono)[2
   for (int v = 0; v < n; ++v)
     if (is_stereo[v]) rises.push_back(out.rise[v]);
   if (rises.empty()) return out;
-  std::nth_element(rises.begin(), rises.begin() + rises.size() / 2, rises.end());
-  out.inflation = std::max(1.0, rises[rises.size() / 2] / kChiSquare6Median);
+  out.inflation = std::max(1.0, Median(rises) / kChiSquare6Median);
   for (int v = 0; v < n; ++v)
     if (is_stereo[v] && out.rise[v] > out.inflation * kChiSquare6Quantile)
       out.inconsistent.push_back(v);

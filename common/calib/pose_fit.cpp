@@ -5,6 +5,7 @@
 #include <limits>
 #include <opencv2/calib3d.hpp>
 
+#include "calib/quality.h"
 #include "calib/ray_pose.h"
 #include "calib/stage_log.h"
 
@@ -110,10 +111,9 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
     if (r >= 0 && std::isfinite(r)) fitted.push_back(r);
   std::vector<bool> good(n, true);
   if (fitted.empty()) return good;
-  std::nth_element(fitted.begin(), fitted.begin() + fitted.size() / 2, fitted.end());
   // Corners just outside the disc the camera was fitted on misfit by a few
   // pixels; a wrong pose by tens.
-  const double bad = std::max(10 * fitted[fitted.size() / 2], 2.0);
+  const double bad = std::max(10 * Median(fitted), 2.0);
   for (int v = 0; v < n; ++v) {
     if (!(rms[v] > bad)) continue;
     std::vector<Pose> starts = PlanarPoseCandidates(camera, p.views[v], mask[v]);

@@ -327,7 +327,9 @@ Linearisation Linearise(Problem& problem, const std::string& what) {
     const Observation& o = problem.observations[built.data_observation[b]];
     const double* pose = built.arena[o.pose->data.data()];
     const int index = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
-    Linearisation::Block block{built.data_observation[b], index};
+    Linearisation::Block block;
+    block.observation = built.data_observation[b];
+    block.pose = index;
     block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
     rows(row, count, 6 * index, &block.J_free, &block.J_pose);
     out.blocks.push_back(std::move(block));

@@ -7,6 +7,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "calib/quality.h"
+
 namespace ws::calib {
 namespace {
 
@@ -112,8 +114,7 @@ ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_ra
   if (!compared.empty()) {
     out.rms_px = std::sqrt(sum / compared.size());
     out.max_px = *std::max_element(compared.begin(), compared.end());
-    std::nth_element(compared.begin(), compared.begin() + compared.size() / 2, compared.end());
-    out.median_px = compared[compared.size() / 2];
+    out.median_px = Median(compared);
   }
   return out;
 }

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calib/quality.h"
+
 namespace ws::calib {
 namespace {
 
@@ -36,13 +38,6 @@ std::optional<Eigen::MatrixXd> ProjectionJacobian(const CameraBlock& camera,
     J(1, k) = pixel[1].v[0];
   }
   return J;
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return -1;
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  return values[mid];
 }
 
 }  // namespace

@@ -71,14 +71,19 @@ ResidualGrid MakeResidualGrid(const std::vector<CornerResidual>& residuals, int 
   return grid;
 }
 
+double Median(std::vector<double> values) {
+  if (values.empty()) return -1;
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + mid, values.end());
+  return values[mid];
+}
+
 double RobustSigma(const std::vector<CornerResidual>& residuals) {
   std::vector<double> norms;
   for (const auto& r : residuals)
     if (!r.outlier) norms.push_back(r.residual.norm());
   if (norms.empty()) return 0;
-  const size_t mid = norms.size() / 2;
-  std::nth_element(norms.begin(), norms.begin() + mid, norms.end());
-  return norms[mid] / std::sqrt(2.0 * std::log(2.0));
+  return Median(std::move(norms)) / std::sqrt(2.0 * std::log(2.0));
 }
 
 int MarkOutliers(std::vector<CornerResidual>& residuals, double sigma_factor, double min_px) {

@@ -38,6 +38,9 @@ struct ResidualGrid {
 ResidualGrid MakeResidualGrid(const std::vector<CornerResidual>& residuals, int image_width,
                               int image_height, int rows, int cols);
 
+// The median of `values` (the upper one of an even count); -1 when empty.
+double Median(std::vector<double> values);
+
 // Robust noise level: the per-coordinate sigma of Gaussian noise whose 2-D
 // residual norms have the inliers' median (median |e| = 1.1774 sigma).
 double RobustSigma(const std::vector<CornerResidual>& residuals);
