@@ -10,30 +10,22 @@
 //
 //   build/bench/bench_calib [--repeats N] [--auto-only]
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <opencv2/calib3d.hpp>
 #include <vector>
 
+#include "bench_support.h"
 #include "calib/calibrate.h"
 #include "calib/synthetic_rig.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // The median wall time of `repeats` runs of `run`.
 double MedianSeconds(int repeats, const std::function<void()>& run) {
   std::vector<double> seconds;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = Clock::now();
-    run();
-    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  std::nth_element(seconds.begin(), seconds.begin() + repeats / 2, seconds.end());
-  return seconds[repeats / 2];
+  for (int i = 0; i < repeats; ++i) seconds.push_back(ws::bench::Milliseconds(run) / 1000);
+  return ws::bench::Median(seconds);
 }
 
 // A 1280 x 960 camera with fx = 900 and moderate barrel distortion (about

@@ -24,12 +24,15 @@
 #include <opencv2/core.hpp>
 #include <pcl/filters/statistical_outlier_removal.h>
 
+#include "bench_support.h"
 #include "cloud/cloud_filter.h"
 #include "cloud/cloud_stages.h"
 #include "cloud/outlier_removal.h"
 #include "cloud/pcl_cloud.h"
 
 namespace {
+
+using ws::bench::Median;
 
 struct Camera {
   int width, height;
@@ -77,11 +80,6 @@ widestereo::point_cloud_t StereoWallCloud(const Camera& camera, unsigned seed) {
     }
   msg.npoints = msg.nintensity = int32_t(msg.xyz.size());
   return msg;
-}
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
 }
 
 double MillisecondsSince(std::chrono::steady_clock::time_point start) {

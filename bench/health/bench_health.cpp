@@ -26,6 +26,7 @@
 #include "health/frame_checker.h"
 #include "sim/simulator.h"
 #include "bench_support.h"
+#include "sim/truth_calibration.h"
 
 using ws::bench::Median;
 
@@ -104,7 +105,7 @@ int main(int argc, char** argv) {
   }
   const ws::SimConfig sim = ws::DefaultSimConfig();
   const ws::Simulator simulator(sim);
-  const ws::StereoRig truth = ws::bench::TrueRig(sim);
+  const ws::StereoRig truth = ws::TrueStereoRig(sim);
   const int first_wall = int(sim.board->poses);
   Pairs wall;
   for (int f = first_wall; f < first_wall + 3; ++f) wall.push_back(simulator.Render(f));

@@ -22,6 +22,7 @@
 #include "match/match_node.h"
 #include "sim/simulator.h"
 #include "bench_support.h"
+#include "sim/truth_calibration.h"
 
 using ws::bench::Median;
 using ws::bench::Milliseconds;
@@ -34,7 +35,7 @@ void Compare(const char* name, const ws::SimConfig& sim, int runs) {
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(left, 0);
   frame.right = ws::MatToImage(right, 0);
-  const ws::StereoRig rig = ws::bench::TrueRig(sim);
+  const ws::StereoRig rig = ws::TrueStereoRig(sim);
   ws::RectifyOptions options[2];
   options[0].mode = ws::RectificationMode::kLatLon;
   options[1].mode = ws::RectificationMode::kPinhole;

@@ -1,16 +1,15 @@
 #include "sim/truth_calibration.h"
 
-#include <opencv2/core/eigen.hpp>
-
 namespace ws {
 
 calib::CalibrationFile TrueCalibration(const SimTruth& truth) {
+  const StereoRig rig = TrueStereoRig(truth);
   calib::CalibrationFile file;
-  file.model = truth.left.distortion.kind;
-  file.left = truth.left;
-  file.right = truth.right;
-  cv::cv2eigen(cv::Mat(truth.R), file.R);
-  cv::cv2eigen(cv::Mat(truth.T), file.T);
+  file.model = rig.left.distortion.kind;
+  file.left = rig.left;
+  file.right = rig.right;
+  file.R = rig.R;
+  file.T = rig.T;
   return file;
 }
 

@@ -16,6 +16,7 @@
 #include "lcm_io/channels.h"
 #include "match_fixtures.h"
 #include "sim/ground_truth.h"
+#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "widestereo/process_status_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -57,7 +58,7 @@ struct Bus {
 TEST(HealthLive, RefineCommandRepairsTheCalibrationAndStereoMatchRebuildsItsMaps) {
   const std::string dir = TempDir("health-live");
   RenderScene("config/sim/wall.yaml", 3, dir, "wall");
-  const ws::StereoRig truth = RigFromTruth(ws::LoadSimTruth(dir + "/wall.truth.yaml"));
+  const ws::StereoRig truth = TrueStereoRig(ws::LoadSimTruth(dir + "/wall.truth.yaml"));
   const std::string calib = dir + "/pitched.yaml";
   WriteCalibrationFile(calib, RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 0.2));
   const auto frames = Messages<widestereo::stereo_frame_t>(ReadLog(dir + "/wall.lcmlog"), ws::channel::kStereoImages);

@@ -37,15 +37,6 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
   return calib;
 }
 
-StereoRig RigFromTruth(const SimTruth& truth) {
-  StereoRig rig;
-  rig.left = truth.left;
-  rig.right = truth.right;
-  for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = truth.R.val[i];
-  for (int i = 0; i < 3; ++i) rig.T(i) = truth.T[i];
-  return rig;
-}
-
 StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
   const SimConfig theia = ParseSimConfig(
       "rig: {baseline: 0.3, left: {lens: theia, fit: " + kind + "}}\nscene: {wall: {frames: 1}}\n",

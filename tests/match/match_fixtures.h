@@ -14,9 +14,6 @@ namespace ws::test {
 widestereo::stereo_calibration_t IdentityCalibration(int width, int height, double f,
                                                      double baseline);
 
-// The simulator's true rig (both camera models, R, T).
-StereoRig RigFromTruth(const SimTruth& truth);
-
 // The rig with both lenses described as `kind` ("poly6", "poly12") instead:
 // the simulator's camera for `lens: theia, fit: KIND` (sim_config.h), i.e.
 // the Theia-like design table fitted by least squares on its heights

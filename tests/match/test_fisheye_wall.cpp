@@ -10,6 +10,7 @@
 
 #include "match_fixtures.h"
 #include "rectify/rectification.h"
+#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "wall_analysis.h"
 #include "wall_chain.h"
@@ -26,7 +27,7 @@ using namespace ws::test;
 TEST(FisheyeWall, BsplineThetaCalibrationGivesTheWallAtTwoMetres) {
   const std::string dir = TempDir("fisheye-wall");
   const ws::SimTruth truth = CaptureWall(dir, FisheyeSceneConfig(dir, "wall"), 1);
-  const ws::StereoRig rig = RigFromTruth(truth);
+  const ws::StereoRig rig = TrueStereoRig(truth);
   ASSERT_EQ(rig.left.distortion.kind, "bspline_theta");
   const double z = truth.frames.front().wall_distance;
   struct Mode {

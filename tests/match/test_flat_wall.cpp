@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "match_fixtures.h"
+#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "wall_chain.h"
 
@@ -53,7 +54,7 @@ std::string* FlatWall::dir_ = nullptr;
 ws::SimTruth* FlatWall::truth_ = nullptr;
 
 TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
-  const ws::StereoRig rig = RigFromTruth(*truth_);
+  const ws::StereoRig rig = TrueStereoRig(*truth_);
   const WallRun bspline = Run(rig, "bspline");
   const WallRun poly6 = Run(RigFittedAs(rig, "poly6"), "poly6");
   ASSERT_EQ(bspline.wall.size(), size_t(kFrames));
@@ -103,7 +104,7 @@ TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
 // The accuracy cost of the fast matcher modes (README "Matcher modes"): the
 // same wall, the exact calibration, each mode against full SGBM.
 TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
-  const ws::StereoRig rig = RigFromTruth(*truth_);
+  const ws::StereoRig rig = TrueStereoRig(*truth_);
   const double z = truth_->frames.front().wall_distance;
   struct Mode {
     std::string name;

@@ -17,6 +17,7 @@
 #include "match_fixtures.h"
 #include "rectify/rectification.h"
 #include "sim/simulator.h"
+#include "sim/truth_calibration.h"
 
 namespace {
 
@@ -161,7 +162,7 @@ ws::Simulator* RectificationQuality::simulator_ = nullptr;
 ws::SimTruth* RectificationQuality::truth_ = nullptr;
 
 TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
-  const ws::StereoRig rig = RigFromTruth(*truth_);
+  const ws::StereoRig rig = TrueStereoRig(*truth_);
   const RowErrors bspline = TrueCornerRows(rig);
   bspline.Print("true corners, bspline (the rig's own model)");
   EXPECT_GT(bspline.count(), 1000);
@@ -176,7 +177,7 @@ TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
 }
 
 TEST_F(RectificationQuality, DetectedCornersShareARowAcrossTheWholeField) {
-  const ws::StereoRig rig = RigFromTruth(*truth_);
+  const ws::StereoRig rig = TrueStereoRig(*truth_);
   const ws::Rectification rect = ws::BuildRectification(rig);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(*simulator_, *truth_, rig, rect, &frames, &boards);
@@ -208,7 +209,7 @@ const ws::RectifyOptions kLatLon{1.0, {}, ws::RectificationMode::kLatLon};
 
 TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
   const ws::SimTruth truth = FisheyeSimulator().Truth();
-  const ws::StereoRig rig = RigFromTruth(truth);
+  const ws::StereoRig rig = TrueStereoRig(truth);
   const cv::Vec2d field = ws::CommonField(rig);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   std::printf("[ rectify ] fisheye rig: common field %.1f x %.1f degrees, lat-lon image %d x %d at "
@@ -243,7 +244,7 @@ TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
 // it reaches past the lenses' field (the model's last knot): those pixels
 // are marked invalid and hold no image.
 TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
-  const ws::StereoRig rig = RigFromTruth(FisheyeSimulator().Truth());
+  const ws::StereoRig rig = TrueStereoRig(FisheyeSimulator().Truth());
   const ws::Rectification fitted = ws::BuildRectification(rig, kLatLon);
   ws::RectifyOptions larger = kLatLon;
   larger.size = cv::Size(fitted.size.width * 3 / 2, fitted.size.height * 3 / 2);
@@ -272,7 +273,7 @@ TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
 TEST(LatLonRectification, DetectedCornersShareARow) {
   const ws::Simulator& simulator = FisheyeSimulator();
   const ws::SimTruth truth = simulator.Truth();
-  const ws::StereoRig rig = RigFromTruth(truth);
+  const ws::StereoRig rig = TrueStereoRig(truth);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(simulator, truth, rig, rect, &frames, &boards);
@@ -294,8 +295,8 @@ TEST(LatLonRectification, DetectedCornersShareARow) {
 }
 
 TEST(LatLonRectification, CommonFieldOfTheDemoRigAndTheFisheyeRig) {
-  const cv::Vec2d demo = ws::CommonField(RigFromTruth(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth()));
-  const cv::Vec2d fisheye = ws::CommonField(RigFromTruth(FisheyeSimulator().Truth()));
+  const cv::Vec2d demo = ws::CommonField(TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth()));
+  const cv::Vec2d fisheye = ws::CommonField(TrueStereoRig(FisheyeSimulator().Truth()));
   std::printf("[ rectify ] common field: demo rig %.1f x %.1f degrees, fisheye rig %.1f x %.1f degrees\n",
               demo[0] * 180 / M_PI, demo[1] * 180 / M_PI, fisheye[0] * 180 / M_PI, fisheye[1] * 180 / M_PI);
   EXPECT_GT(fisheye[0], demo[0]);
