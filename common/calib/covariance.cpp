@@ -8,6 +8,14 @@
 
 namespace ws::calib {
 
+std::optional<Eigen::Matrix<double, 6, 6>> PoseBlockInverse(const Eigen::Matrix<double, 6, 6>& H) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(H);
+  const auto& values = eig.eigenvalues();
+  if (!(values(0) > 1e-12 * std::max(1.0, values(5)))) return std::nullopt;
+  return Eigen::Matrix<double, 6, 6>(eig.eigenvectors() * values.cwiseInverse().asDiagonal() *
+                                     eig.eigenvectors().transpose());
+}
+
 std::optional<Eigen::MatrixXd> CameraCovariance(ceres::Problem& problem,
                                                 const std::vector<double*>& blocks,
                                                 const std::vector<double*>& poses, double sigma2) {
@@ -33,14 +41,10 @@ std::optional<Eigen::MatrixXd> CameraCovariance(ceres::Problem& problem,
   Eigen::MatrixXd Hff = Eigen::MatrixXd(H.bottomRightCorner(nf, nf));
   const Eigen::MatrixXd Hfe = Eigen::MatrixXd(H.block(ne, 0, nf, ne));
   for (int j = 0; j < ne; j += 6) {
-    const Eigen::Matrix<double, 6, 6> Hjj = Eigen::MatrixXd(H.block(j, j, 6, 6));
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(Hjj);
-    if (!(eig.eigenvalues()(0) > 1e-12 * std::max(1.0, eig.eigenvalues()(5)))) return std::nullopt;
-    const Eigen::Matrix<double, 6, 6> inv = eig.eigenvectors() *
-                                            eig.eigenvalues().cwiseInverse().asDiagonal() *
-                                            eig.eigenvectors().transpose();
+    const auto inv = PoseBlockInverse(Eigen::MatrixXd(H.block(j, j, 6, 6)));
+    if (!inv) return std::nullopt;
     const auto Hfj = Hfe.middleCols(j, 6);
-    Hff.noalias() -= Hfj * inv * Hfj.transpose();
+    Hff.noalias() -= Hfj * *inv * Hfj.transpose();
   }
   Hff = 0.5 * (Hff + Hff.transpose());
   // Scale to unit diagonal before the eigen decomposition: the parameters'

@@ -19,6 +19,11 @@
 
 namespace ws::calib {
 
+// The inverse of a board pose's 6 x 6 block of J^T J (by its eigen
+// decomposition); none unless it is positive definite, its smallest
+// eigenvalue above 1e-12 of the largest (or of 1): the pose's corners fix it.
+std::optional<Eigen::Matrix<double, 6, 6>> PoseBlockInverse(const Eigen::Matrix<double, 6, 6>& H);
+
 // Covariance of the concatenated `blocks` (their sizes in the problem),
 // eliminating `poses` (blocks of 6). Every non-constant parameter block of
 // the problem must be in one of the two lists. nullopt if S is not positive

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <algorithm>
 #include <limits>
-#include <map>
 #include <numeric>
 
 #include <Eigen/Dense>
 #include <optional>
 
+#include "calib/covariance.h"
 #include "calib/pose_fit.h"
 
 namespace ws::calib {
@@ -54,8 +54,9 @@ namespace {
 struct PoseTerms {
   int view = -1;
   std::vector<int> blocks;  // into Linearisation::blocks
-  Eigen::Matrix<double, 6, 6> App_inverse;
-  bool posed = false;       // A_pp is positive definite
+  // A_pp^-1; none where A_pp is not positive definite (its corners cannot
+  // fix the pose: it adds nothing)
+  std::optional<Eigen::Matrix<double, 6, 6>> App_inverse;
   Eigen::MatrixXd S;
   Eigen::VectorXd b;
 };
@@ -83,14 +84,10 @@ std::vector<PoseTerms> PosesOf(const Problem& problem, const Linearisation& lin)
       pose.S.noalias() += block.J_free.transpose() * block.J_free;
       pose.b.noalias() += block.J_free.transpose() * block.r;
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(App);
-    const auto& values = eig.eigenvalues();
-    pose.posed = values(0) > 1e-12 * std::max(1.0, values(5));
-    if (!pose.posed) continue;  // its corners cannot fix it: it adds nothing
-    pose.App_inverse =
-        eig.eigenvectors() * values.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
-    pose.S.noalias() -= Afp * pose.App_inverse * Afp.transpose();
-    pose.b.noalias() -= Afp * pose.App_inverse * gp;
+    pose.App_inverse = PoseBlockInverse(App);
+    if (!pose.App_inverse) continue;
+    pose.S.noalias() -= Afp * *pose.App_inverse * Afp.transpose();
+    pose.b.noalias() -= Afp * *pose.App_inverse * gp;
   }
   return poses;
 }
@@ -131,7 +128,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
   Eigen::MatrixXd S_all = lin.prior_J.transpose() * lin.prior_J;
   Eigen::VectorXd b_all = lin.prior_J.transpose() * lin.prior_r;
   for (const PoseTerms& pose : poses)
-    if (pose.posed) {
+    if (pose.App_inverse) {
       S_all += pose.S;
       b_all += pose.b;
     }
@@ -148,7 +145,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
     Eigen::MatrixXd S = S_all;
     Eigen::VectorXd b = b_all;
     for (const PoseTerms& pose : poses)
-      if (pose.posed && is_held(pose)) {
+      if (pose.App_inverse && is_held(pose)) {
         S -= pose.S;
         b -= pose.b;
       }
@@ -158,7 +155,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
     std::vector<double> fold_sum(n_cameras, 0.0);
     std::vector<int> fold_count(n_cameras, 0);
     for (const PoseTerms& pose : poses) {
-      if (!pose.posed || !is_held(pose)) continue;
+      if (!pose.App_inverse || !is_held(pose)) continue;
       std::vector<Eigen::VectorXd> e;
       Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
       for (int index : pose.blocks) {
@@ -166,7 +163,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
         e.push_back(block.r + block.J_free * *step);
         gp += block.J_pose.transpose() * e.back();
       }
-      const Eigen::Matrix<double, 6, 1> pose_step = -pose.App_inverse * gp;
+      const Eigen::Matrix<double, 6, 1> pose_step = -*pose.App_inverse * gp;
       for (size_t i = 0; i < pose.blocks.size(); ++i) {
         const Linearisation::Block& block = lin.blocks[pose.blocks[i]];
         const int camera = problem.observations[block.observation].camera;
