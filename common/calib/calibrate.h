@@ -51,6 +51,7 @@ struct CameraCalibration {
   // solve, overall and per fold; negative / empty when not computed.
   double heldout_rms_px = -1;
   std::vector<double> heldout_fold_rms_px;
+  int heldout_extrapolated = 0;           // held-out corners past the training views' field, left out
   std::vector<KnotTrial> knot_curve;      // --knots auto: every count tried, in order
   int views = 0;                          // views used
   int points = 0;                         // inlier corners used

@@ -63,6 +63,7 @@ void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out) {
   if (cv.folds == 0) return;
   out->heldout_rms_px = cv.rms_px[camera];
   out->heldout_fold_rms_px = cv.fold_rms_px[camera];
+  out->heldout_extrapolated = cv.extrapolated[camera];
 }
 
 }  // namespace ws::calib

@@ -132,9 +132,24 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       S_all += pose.S;
       b_all += pose.b;
     }
+  // Each residual pair's corner: its distance from its camera's principal
+  // point (blocks follow their observation's inlier corners in order).
+  std::vector<std::vector<double>> radius(lin.blocks.size());
+  std::vector<int> next(problem.observations.size(), 0);
+  for (size_t b = 0; b < lin.blocks.size(); ++b) {
+    const Observation& o = problem.observations[lin.blocks[b].observation];
+    const double* in = problem.cameras[o.camera].intrinsics.data();
+    int& i = next[lin.blocks[b].observation];
+    while (int(radius[b].size()) < lin.blocks[b].r.size() / 2) {
+      while (!(*o.inliers)[i]) ++i;
+      const Eigen::Vector2d& u = o.corners->image[i++];
+      radius[b].push_back(std::hypot(u.x() - in[kCx], u.y() - in[kCy]));
+    }
+  }
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);
   cv.fold_rms_px.assign(n_cameras, {});
+  cv.extrapolated.assign(n_cameras, 0);
   for (int k = 0; k < folds; ++k) {
     std::vector<int> held;  // dealt round-robin in view order
     for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
@@ -151,6 +166,14 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       }
     const std::optional<Eigen::VectorXd> step = Step(S, b);
     if (!step) continue;  // the other folds do not determine the camera
+    // How far from the centre the training views reach, per camera.
+    std::vector<double> field(n_cameras, 0.0);
+    for (const PoseTerms& pose : poses)
+      if (!is_held(pose))
+        for (int index : pose.blocks) {
+          const int camera = problem.observations[lin.blocks[index].observation].camera;
+          for (double r : radius[index]) field[camera] = std::max(field[camera], r);
+        }
     // Testing: each held-out pose refitted to its corners under the step.
     std::vector<double> fold_sum(n_cameras, 0.0);
     std::vector<int> fold_count(n_cameras, 0);
@@ -167,8 +190,15 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       for (size_t i = 0; i < pose.blocks.size(); ++i) {
         const Linearisation::Block& block = lin.blocks[pose.blocks[i]];
         const int camera = problem.observations[block.observation].camera;
-        fold_sum[camera] += (e[i] + block.J_pose * pose_step).squaredNorm();
-        fold_count[camera] += int(block.r.size()) / 2;
+        const Eigen::VectorXd held_out = e[i] + block.J_pose * pose_step;
+        for (int j = 0; j < held_out.size() / 2; ++j) {
+          if (radius[pose.blocks[i]][j] > field[camera]) {
+            ++cv.extrapolated[camera];
+            continue;
+          }
+          fold_sum[camera] += held_out.segment<2>(2 * j).squaredNorm();
+          ++fold_count[camera];
+        }
       }
     }
     for (int c = 0; c < n_cameras; ++c) {

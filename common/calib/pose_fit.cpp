@@ -56,6 +56,40 @@ bool StartPose(const CameraBlock& camera, const Init& init, const Prepared& p, i
   return from_rays.has_value();
 }
 
+// The distance from the principal point of the farthest corner in mask of
+// a view that fits (rms within `bad`): how far the camera is known.
+double SupportedRadius(const CameraBlock& camera, const Prepared& p, const Inliers& mask,
+                       const std::vector<double>& rms, double bad) {
+  const Eigen::Vector2d centre(camera.intrinsics[kCx], camera.intrinsics[kCy]);
+  double radius = 0;
+  for (size_t v = 0; v < p.views.size(); ++v)
+    for (int i = 0; i < p.views[v].size() && rms[v] >= 0 && rms[v] <= bad; ++i)
+      if (mask[v][i]) radius = std::max(radius, (p.views[v].image[i] - centre).norm());
+  return radius;
+}
+
+// The outermost boards of a wide lens reach past the field the other views
+// support, where the camera as it stands extrapolates and misfits them by
+// pixels however right their pose: such a view's pose is fitted on its
+// corners within `supported` alone, from *pose, and kept (true) when those
+// fit within `bad`; the solve that follows then carries the camera out to
+// its other corners.
+bool FitsInsideSupportedField(const CameraBlock& camera, const BoardView& view,
+                              const std::vector<char>& mask, double supported, int min_points,
+                              double bad, Pose* pose) {
+  const Eigen::Vector2d centre(camera.intrinsics[kCx], camera.intrinsics[kCy]);
+  std::vector<char> inside = mask;
+  for (int i = 0; i < view.size(); ++i)
+    inside[i] = mask[i] && (view.image[i] - centre).norm() <= supported;
+  if (std::count(inside.begin(), inside.end(), 1) < min_points ||
+      std::count(inside.begin(), inside.end(), 1) == std::count(mask.begin(), mask.end(), 1))
+    return false;
+  Pose fitted = *pose;
+  if (!(RefinePose(camera, view, inside, &fitted) <= bad)) return false;
+  *pose = fitted;
+  return true;
+}
+
 }  // namespace
 
 std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
@@ -114,6 +148,7 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
   // Corners just outside the disc the camera was fitted on misfit by a few
   // pixels; a wrong pose by tens.
   const double bad = std::max(10 * Median(fitted), 2.0);
+  const double supported = SupportedRadius(camera, p, mask, rms, bad);
   for (int v = 0; v < n; ++v) {
     if (!(rms[v] > bad)) continue;
     std::vector<Pose> starts = PlanarPoseCandidates(camera, p.views[v], mask[v]);
@@ -127,7 +162,9 @@ std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& p, const
         (*poses)[v] = pose;
       }
     }
-    good[v] = rms[v] <= bad;
+    good[v] = rms[v] <= bad || FitsInsideSupportedField(camera, p.views[v], mask[v], supported,
+                                                         options.min_points_per_view, bad,
+                                                         &(*poses)[v]);
     if (!good[v])
       Say(options, what + ": view " + std::to_string(v) + " fits badly (rms " + Fixed(rms[v], 2) +
                        " px), left out of this stage");

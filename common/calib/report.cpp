@@ -107,6 +107,7 @@ Json CameraReport(const CameraCalibration& c) {
   grid["rms"] = Numbers(g.rms);
   j["residual_grid"] = grid;
   j["heldout_fold_rms_px"] = Numbers(c.heldout_fold_rms_px);
+  j["heldout_extrapolated_corners"] = c.heldout_extrapolated;
   if (!c.uncertainty.empty()) j["projection_uncertainty"] = UncertaintyReport(c.uncertainty);
   Json curve = Json::array();
   for (const KnotTrial& t : c.knot_curve)

@@ -17,7 +17,8 @@
 // and the top level "flow" ("joint" or "paper").
 // Each camera also has "heldout_rms_px" (the K-fold cross-validated RMS,
 // heldout.h; null when not computed) beside "rms_px",
-// "heldout_fold_rms_px" (per fold) and "knot_curve" (--knots auto: per
+// "heldout_fold_rms_px" (per fold), "heldout_extrapolated_corners" (held-out
+// corners farther out than every training corner, left out) and "knot_curve" (--knots auto: per
 // count tried {"knots", "rms_px", "heldout_rms_px", "fold_rms_px"}; empty
 // otherwise).
 // With several models: {"models": [one object as above per model],

@@ -29,11 +29,12 @@ class CornerDetector {
 
 // The two OpenCV chessboard detectors.
 enum class ChessboardMethod {
-  sb,       // cv::findChessboardCornersSB (localized Radon transform, sub-pixel by itself)
-  classic,  // cv::findChessboardCorners + cv::cornerSubPix
+  sb,       // cv::findChessboardCornersSB (localized Radon transform), then the saddle points
+  classic,  // cv::findChessboardCorners + cv::cornerSubPix, then the saddle points
 };
-// The more accurate of the two on rendered boards with exact ground truth
-// (tests/detect/test_detector_accuracy.cpp measures both and checks this choice).
+// Both refine their corners to the same saddle points (saddle_point.h;
+// tests/detect/test_detector_accuracy.cpp measures them against exact
+// ground truth); classic is the default.
 inline constexpr ChessboardMethod kDefaultChessboardMethod = ChessboardMethod::classic;
 
 // "sb" or "classic"; throws std::invalid_argument otherwise.

@@ -313,9 +313,9 @@ TEST(SimRender, DetectedCornersAreWhereTheModelProjectsThem) {
     RecordProperty(std::string(ChessboardMethodName(methods[m])) + "_found", std::to_string(found));
   }
   std::printf("[ corners ] rendering and detection of %zu views: %.1f s\n", views.size(), seconds);
-  // stereo-detect's default detector finds every board and is the more accurate.
-  const int best = rms[0] <= rms[1] ? 0 : 1;
-  EXPECT_EQ(methods[best], kDefaultChessboardMethod);
+  // Both detectors end at the corners' saddle points (saddle_point.h):
+  // measured 0.026 px RMS each (the classic one with cornerSubPix alone: 0.043 px).
+  for (int m = 0; m < 2; ++m) EXPECT_LT(rms[m], 0.035) << ChessboardMethodName(methods[m]);
   for (size_t v = 0; v < views.size(); ++v)
     for (int m = 0; m < 2; ++m)
       if (!results[v * 2 + m].found) {
@@ -323,7 +323,6 @@ TEST(SimRender, DetectedCornersAreWhereTheModelProjectsThem) {
                     views[v].camera);
         EXPECT_NE(methods[m], kDefaultChessboardMethod) << "the default detector missed a board";
       }
-  EXPECT_LT(rms[best], 0.05);
 }
 
 TEST(SimRender, WallHasTextureWhereverItIsSeen) {
