@@ -51,8 +51,11 @@ TEST(CalibSynthetic, MustacheTableIIPolynomialsCannotFollow) {
   const auto results =
       CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6", "poly12"}).solved;
   std::vector<TableRow> rows = TableRows(results);
-  rows.push_back(
-      {"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  TableRow truth_row;
+  truth_row.model = "truth (true model, poses)";
+  truth_row.left_rms = TruthRms(truth, rig, 0);
+  truth_row.right_rms = TruthRms(truth, rig, 1);
+  rows.push_back(truth_row);
   std::printf("%s", FormatTableII(rows, "Table II, synthetic mustache rig [px]").c_str());
   const StereoCalibration& bspline = results[0];
   const StereoCalibration& poly6 = results[1];
@@ -66,8 +69,11 @@ TEST(CalibSynthetic, BarrelLensBothModelsReachTheNoiseFloor) {
   const auto results =
       CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6"}).solved;
   std::vector<TableRow> rows = TableRows(results);
-  rows.push_back(
-      {"truth (true model, poses)", TruthRms(truth, rig, 0), TruthRms(truth, rig, 1), -1});
+  TableRow truth_row;
+  truth_row.model = "truth (true model, poses)";
+  truth_row.left_rms = TruthRms(truth, rig, 0);
+  truth_row.right_rms = TruthRms(truth, rig, 1);
+  rows.push_back(truth_row);
   std::printf("%s", FormatTableII(rows, "Table II, synthetic barrel rig [px]").c_str());
   for (const StereoCalibration& result : results) {
     for (int c = 0; c < 2; ++c) {

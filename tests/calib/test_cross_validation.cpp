@@ -37,6 +37,48 @@ TEST(CrossValidation, AnOverfittingSplineShowsItAndTheChosenOneDoesNot) {
   EXPECT_FALSE(chosen.knot_curve.empty());
 }
 
+// Every view but one keeps only its corners within 300 px of the image
+// centre: held out, that one view's outer corners lie past every training
+// corner, where the fold's curve only extrapolates; they are left out of
+// the held-out RMS and counted.
+TEST(CrossValidation, CornersPastTheTrainingFieldAreLeftOutAndCounted) {
+  const SyntheticRig rig = MakeSyntheticRig(MustacheRig());
+  CameraData data = rig.data.left;
+  const Eigen::Vector2d centre(0.5 * (data.image_width - 1), 0.5 * (data.image_height - 1));
+  constexpr double kField = 300;
+  size_t lone = data.views.size(), outer = 0;
+  for (size_t v = 0; v < data.views.size(); ++v) {
+    BoardView& view = data.views[v];
+    int beyond = 0;
+    for (const Eigen::Vector2d& u : view.image) beyond += (u - centre).norm() > kField + 50;
+    if (lone == data.views.size() && beyond >= 10) {
+      lone = v;
+      outer = beyond;
+      continue;
+    }
+    BoardView inner;
+    for (int i = 0; i < view.size(); ++i)
+      if ((view.image[i] - centre).norm() <= kField) {
+        inner.ids.push_back(view.ids[i]);
+        inner.object.push_back(view.object[i]);
+        inner.image.push_back(view.image[i]);
+      }
+    view = inner;
+  }
+  ASSERT_LT(lone, data.views.size()) << "no view reaches past the field";
+  CalibrationOptions options;
+  options.knots = 13;
+  options.covariance = false;
+  const CameraCalibration result = CalibrateCamera(data, options);
+  std::printf("view %zu alone reaches past %.0f px (%zu corners 50 px past it): %d held-out "
+              "corners left out; rms %.4f px, held-out %.4f px\n",
+              lone, kField, outer, result.heldout_extrapolated, result.rms_px, result.heldout_rms_px);
+  EXPECT_GE(result.heldout_extrapolated, int(outer));
+  // The whole rig covers its field: nothing is left out.
+  const CameraCalibration whole = CalibrateCamera(rig.data.left, options);
+  EXPECT_LT(whole.heldout_extrapolated, 10);
+}
+
 TEST(CrossValidation, ChoosesTheFewestWithinTheFoldNoise) {
   // Per fold: a clearly worse first candidate, a second within the noise
   // of the best third, a fourth worse again.

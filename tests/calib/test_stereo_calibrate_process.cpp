@@ -81,12 +81,23 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
       EXPECT_EQ(model["stereo"]["views"], 13);
     }
   }
-  // The file holds the model chosen by held-out error (issue #14): on this
-  // ordinary lens the simplest, poly6, predicts held-out views as well as
-  // any; STEREO_CALIBRATION says the same.
+  // The file holds the model chosen by held-out error (issue #14), one
+  // that predicts held-out views as well as the best (on this ordinary lens
+  // poly6, poly12 and bspline do so within 0.4 % of each other: which one
+  // is chosen follows the folds' small, consistent differences);
+  // STEREO_CALIBRATION says the same.
   const CalibrationFile file = ReadCalibrationFile(dir + "/paper.yaml");
-  EXPECT_EQ(report["chosen"], "poly6");
-  EXPECT_EQ(file.model, "poly6");
+  double lowest = INFINITY, chosen = INFINITY;
+  for (const auto& row : report["table_ii"]) {
+    const double heldout = 0.5 * (row["left_heldout_rms_px"].get<double>() +
+                                  row["right_heldout_rms_px"].get<double>());
+    lowest = std::min(lowest, heldout);
+    if (row["chosen"].get<bool>()) chosen = heldout;
+  }
+  std::printf("chosen %s: held-out %.4f px (lowest %.4f px)\n",
+              report["chosen"].get<std::string>().c_str(), chosen, lowest);
+  EXPECT_LE(chosen, 1.005 * lowest);
+  EXPECT_EQ(file.model, report["chosen"]);
   const auto published = ws::test::Messages<widestereo::stereo_calibration_t>(
       ws::test::ReadLog(dir + "/paper.lcmlog"), channel::kStereoCalibration);
   ASSERT_EQ(published.size(), 1u);
