@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <vector>
 #include <opencv2/imgproc.hpp>
 
 namespace ws {
@@ -10,40 +11,49 @@ cv::Point2f SaddlePoint(const cv::Mat& gray, cv::Point2f start, double sigma) {
   constexpr int kMaxIterations = 10;
   constexpr double kMaxMovePx = 1.0, kConvergedPx = 1e-3;
   const int h = std::max(1, static_cast<int>(std::lround(2 * sigma)));
-  // The window, the Gaussian's support (3 sigma) around it, and the pixel
-  // the point may move before the patch is cut again.
-  const int margin = h + static_cast<int>(std::ceil(3 * sigma)) + 2;
-  const cv::Rect image(0, 0, gray.cols, gray.rows);
+  // The smoothed patch, cut once: the window, one pixel for the bilinear
+  // samples and kMaxMovePx for the point's moves, and the Gaussian's support
+  // (3 sigma) around them, so that the patch's border does not reach them.
+  const int margin = h + 2 + static_cast<int>(std::ceil(kMaxMovePx + 3 * sigma));
+  const cv::Point origin(static_cast<int>(std::lround(start.x)), static_cast<int>(std::lround(start.y)));
+  const cv::Rect patch(origin.x - margin, origin.y - margin, 2 * margin + 1, 2 * margin + 1);
+  if ((patch & cv::Rect(0, 0, gray.cols, gray.rows)) != patch) return start;
+  cv::Mat smooth;
+  gray(patch).convertTo(smooth, CV_64F);
+  cv::GaussianBlur(smooth, smooth, cv::Size(), sigma);
+  // The weighted least squares for (a, b, c, d, e, f) over whole-pixel
+  // offsets x, y from the point: the same normal matrix at every step.
+  using Vector6d = Eigen::Matrix<double, 6, 1>;
+  std::vector<Vector6d> rows;
+  std::vector<double> weights;
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  for (int y = -h; y <= h; ++y)
+    for (int x = -h; x <= h; ++x) {
+      rows.push_back((Vector6d() << x * x, x * y, y * y, x, y, 1).finished());
+      weights.push_back(std::exp(-double(x * x + y * y) / (h * h)));
+      normal.noalias() += weights.back() * rows.back() * rows.back().transpose();
+    }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(normal);
   cv::Point2f p = start;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const cv::Point centre(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)));
-    const cv::Rect patch(centre.x - margin, centre.y - margin, 2 * margin + 1, 2 * margin + 1);
-    if ((patch & image) != patch) return start;
-    cv::Mat smooth;
-    gray(patch).convertTo(smooth, CV_64F);
-    cv::GaussianBlur(smooth, smooth, cv::Size(), sigma);
-    // Weighted least squares for (a, b, c, d, e, f) on the smoothed image
-    // sampled (bilinearly) at whole-pixel offsets x, y from p itself: a
-    // window centred on the corner is point-symmetric about it, so the
-    // corner is where the iteration stops.
-    const double ox = margin + p.x - centre.x, oy = margin + p.y - centre.y;
+    // The smoothed image sampled (bilinearly) at those offsets from p
+    // itself: a window centred on the corner is point-symmetric about it,
+    // so the corner is where the iteration stops.
+    const double ox = margin + p.x - origin.x, oy = margin + p.y - origin.y;
     const int ix = static_cast<int>(std::floor(ox)), iy = static_cast<int>(std::floor(oy));
     const double fx = ox - ix, fy = oy - iy;
-    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    for (int y = -h; y <= h; ++y)
-      for (int x = -h; x <= h; ++x) {
-        const double* row0 = smooth.ptr<double>(iy + y);
-        const double* row1 = smooth.ptr<double>(iy + y + 1);
+    Vector6d rhs = Vector6d::Zero();
+    size_t k = 0;
+    for (int y = -h; y <= h; ++y) {
+      const double* row0 = smooth.ptr<double>(iy + y);
+      const double* row1 = smooth.ptr<double>(iy + y + 1);
+      for (int x = -h; x <= h; ++x, ++k) {
         const double value = (1 - fy) * ((1 - fx) * row0[ix + x] + fx * row0[ix + x + 1]) +
                              fy * ((1 - fx) * row1[ix + x] + fx * row1[ix + x + 1]);
-        const double w = std::exp(-double(x * x + y * y) / (h * h));
-        Eigen::Matrix<double, 6, 1> row;
-        row << x * x, x * y, y * y, x, y, 1;
-        normal.noalias() += w * row * row.transpose();
-        rhs += w * value * row;
+        rhs += weights[k] * value * rows[k];
       }
-    const Eigen::Matrix<double, 6, 1> q = normal.ldlt().solve(rhs);
+    }
+    const Vector6d q = solver.solve(rhs);
     Eigen::Matrix2d hessian;
     hessian << 2 * q(0), q(1), q(1), 2 * q(2);
     if (!(hessian.determinant() < 0)) return start;  // no saddle here
