@@ -1,6 +1,7 @@
 #include "calib/camera_result.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "calib/stage_log.h"
 
@@ -29,11 +30,20 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
           std::max(out.max_observed_radius, IdealRadius(camera, pose * o.corners->object[i]));
     }
   }
-  if (const auto fold = FoldRadius(camera, out.max_observed_radius))
+  if (const auto fold = FoldRadius(camera, out.max_observed_radius)) {
+    // A pinhole radius r = tan(theta) runs to infinity at 90 degrees: a
+    // curve in r that must flatten towards it folds first.
+    const std::string fisheye =
+        IsAngleModel(camera.model)
+            ? ""
+            : "; the fold is " + Fixed(std::atan(*fold) * 180 / M_PI, 0) +
+                  " degrees off axis, and a pinhole-radius model cannot follow a lens whose "
+                  "views reach towards 90 degrees: bspline_theta or kb4 can";
     throw CalibrationError(p.name + " camera (" + Kind(camera) +
                            "): the solved distortion curve folds back at r = " + Fixed(*fold, 3) +
                            ", inside the observed field; the views do not constrain the model "
-                           "(more views, fewer knots or a stronger smoothness prior)");
+                           "(more views, fewer knots or a stronger smoothness prior" + fisheye + ")");
+  }
   if (out.views < options.min_views)
     throw CalibrationError(p.name + " camera: only " + std::to_string(out.views) +
                            " views fit the solved camera, at least " +

@@ -72,8 +72,10 @@ double SupportedRadius(const CameraBlock& camera, const Prepared& p, const Inlie
 // support, where the camera as it stands extrapolates and misfits them by
 // pixels however right their pose: such a view's pose is fitted on its
 // corners within `supported` alone, from *pose, and kept (true) when those
-// fit within `bad`; the solve that follows then carries the camera out to
-// its other corners.
+// fit within `bad` and the model can take its other corners (their ideal
+// radius finite and within the camera's max_radius: a pinhole radius ends
+// at 90 degrees); the solve that follows then carries the camera out to
+// them.
 bool FitsInsideSupportedField(const CameraBlock& camera, const BoardView& view,
                               const std::vector<char>& mask, double supported, int min_points,
                               double bad, Pose* pose) {
@@ -86,6 +88,8 @@ bool FitsInsideSupportedField(const CameraBlock& camera, const BoardView& view,
     return false;
   Pose fitted = *pose;
   if (!(RefinePose(camera, view, inside, &fitted) <= bad)) return false;
+  for (int i = 0; i < view.size(); ++i)
+    if (mask[i] && !(IdealRadius(camera, fitted * view.object[i]) <= camera.max_radius)) return false;
   *pose = fitted;
   return true;
 }
