@@ -31,8 +31,11 @@ std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardVie
 // local fit can fall into, and a pose fitted to part of a board can put its
 // other corners behind the camera: views fitting ten times worse than the
 // median (and above 2 px) start again from both IPPE solutions and their
-// homography, keeping the best. Returns, per view, false for those that
-// still fit that badly.
+// homography, keeping the best. A view that still fits that badly but
+// reaches past the field the fitting views cover is kept with the pose of
+// its corners inside that field, when those fit and the model can take the
+// rest (the outermost board of a wide lens, which the camera only
+// extrapolates to). Returns, per view, false for the others.
 std::vector<bool> RefitPoses(const CameraBlock& camera, const Prepared& prepared, const Init& init,
                              const Inliers& mask, bool from_homography,
                              const CalibrationOptions& options, const std::string& what,
