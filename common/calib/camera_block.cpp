@@ -158,6 +158,10 @@ double RadialDistortion(const CameraBlock& camera, double r) {
                     camera.model);
 }
 
+double PixelRadius(const CameraBlock& camera, const Eigen::Vector2d& pixel) {
+  return std::hypot(pixel.x() - camera.intrinsics[kCx], pixel.y() - camera.intrinsics[kCy]);
+}
+
 double IdealRadius(const CameraBlock& camera, const Eigen::Vector3d& X) {
   return std::visit(
       [&](const auto& m) { return ws::IdealRadius<typename std::decay_t<decltype(m)>::Coordinate>(X.data()); },

@@ -63,6 +63,8 @@ std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen
 std::optional<Eigen::Vector3d> PixelRay(const CameraBlock& camera, const Eigen::Vector2d& pixel);
 // D(r).
 double RadialDistortion(const CameraBlock& camera, double r);
+// How far a pixel is from the camera's principal point, pixels.
+double PixelRadius(const CameraBlock& camera, const Eigen::Vector2d& pixel);
 // The ideal radius r of a camera-frame point (tan(theta), or theta for an
 // angle model: models/radial_coordinate.h); infinity where it has none.
 double IdealRadius(const CameraBlock& camera, const Eigen::Vector3d& X);

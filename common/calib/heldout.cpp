@@ -133,18 +133,13 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       b_all += pose.b;
     }
   // Each residual pair's corner: its distance from its camera's principal
-  // point (blocks follow their observation's inlier corners in order).
+  // point (a block holds its observation's inlier corners in order).
   std::vector<std::vector<double>> radius(lin.blocks.size());
-  std::vector<int> next(problem.observations.size(), 0);
   for (size_t b = 0; b < lin.blocks.size(); ++b) {
     const Observation& o = problem.observations[lin.blocks[b].observation];
-    const double* in = problem.cameras[o.camera].intrinsics.data();
-    int& i = next[lin.blocks[b].observation];
-    while (int(radius[b].size()) < lin.blocks[b].r.size() / 2) {
-      while (!(*o.inliers)[i]) ++i;
-      const Eigen::Vector2d& u = o.corners->image[i++];
-      radius[b].push_back(std::hypot(u.x() - in[kCx], u.y() - in[kCy]));
-    }
+    for (int i = 0; i < o.corners->size(); ++i)
+      if ((*o.inliers)[i])
+        radius[b].push_back(PixelRadius(problem.cameras[o.camera], o.corners->image[i]));
   }
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);

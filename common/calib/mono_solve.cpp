@@ -17,7 +17,6 @@ namespace {
 // holds every corner.
 int MarkDisc(const CameraBlock& camera, const Prepared& p, double fraction, int min_points,
              Inliers* disc, bool* everything) {
-  const double* in = camera.intrinsics.data();
   const double radius = fraction * 0.5 * std::hypot(p.width, p.height);
   int views = 0;
   *everything = true;
@@ -26,8 +25,7 @@ int MarkDisc(const CameraBlock& camera, const Prepared& p, double fraction, int 
     if (!p.usable[v]) continue;
     int inside = 0;
     for (int i = 0; i < p.views[v].size(); ++i) {
-      const Eigen::Vector2d& u = p.views[v].image[i];
-      const bool in_disc = std::hypot(u.x() - in[kCx], u.y() - in[kCy]) < radius;
+      const bool in_disc = PixelRadius(camera, p.views[v].image[i]) < radius;
       inside += (*disc)[v][i] = in_disc;
       *everything = *everything && in_disc;
     }

@@ -60,11 +60,10 @@ bool StartPose(const CameraBlock& camera, const Init& init, const Prepared& p, i
 // a view that fits (rms within `bad`): how far the camera is known.
 double SupportedRadius(const CameraBlock& camera, const Prepared& p, const Inliers& mask,
                        const std::vector<double>& rms, double bad) {
-  const Eigen::Vector2d centre(camera.intrinsics[kCx], camera.intrinsics[kCy]);
   double radius = 0;
   for (size_t v = 0; v < p.views.size(); ++v)
     for (int i = 0; i < p.views[v].size() && rms[v] >= 0 && rms[v] <= bad; ++i)
-      if (mask[v][i]) radius = std::max(radius, (p.views[v].image[i] - centre).norm());
+      if (mask[v][i]) radius = std::max(radius, PixelRadius(camera, p.views[v].image[i]));
   return radius;
 }
 
@@ -79,13 +78,11 @@ double SupportedRadius(const CameraBlock& camera, const Prepared& p, const Inlie
 bool FitsInsideSupportedField(const CameraBlock& camera, const BoardView& view,
                               const std::vector<char>& mask, double supported, int min_points,
                               double bad, Pose* pose) {
-  const Eigen::Vector2d centre(camera.intrinsics[kCx], camera.intrinsics[kCy]);
   std::vector<char> inside = mask;
   for (int i = 0; i < view.size(); ++i)
-    inside[i] = mask[i] && (view.image[i] - centre).norm() <= supported;
-  if (std::count(inside.begin(), inside.end(), 1) < min_points ||
-      std::count(inside.begin(), inside.end(), 1) == std::count(mask.begin(), mask.end(), 1))
-    return false;
+    inside[i] = mask[i] && PixelRadius(camera, view.image[i]) <= supported;
+  const auto count = std::count(inside.begin(), inside.end(), 1);
+  if (count < min_points || count == std::count(mask.begin(), mask.end(), 1)) return false;
   Pose fitted = *pose;
   if (!(RefinePose(camera, view, inside, &fitted) <= bad)) return false;
   for (int i = 0; i < view.size(); ++i)
