@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "calib/corner_noise.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
 
@@ -108,18 +109,19 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
     return Outcome::kRejected;
   }
   const BoardView left = ToBoardView(msg.left), right = ToBoardView(msg.right);
-  auto threshold = [&](const CameraData& camera) {
-    if (options_.duplicate_px > 0) return options_.duplicate_px;
-    return 0.015 * std::hypot(camera.image_width, camera.image_height);
+  // A board held still moves its corners by about their noise (corner_noise.h).
+  auto threshold = [&](const BoardView& view) {
+    return options_.duplicate_px > 0 ? options_.duplicate_px : kStillBoard * CornerNoise(view);
   };
+  const double left_px = threshold(left), right_px = threshold(right);
   // A view adds nothing when each camera's corners are absent or a near
   // duplicate of that camera's corners in one view already accepted.
   auto covered = [](const BoardView& view, const BoardView& old, double px) {
     return view.empty() || (!old.empty() && NearDuplicate(view, old, px));
   };
   for (int v = 0; v < data_.size(); ++v) {
-    if (covered(left, data_.left.views[v], threshold(probe.left)) &&
-        covered(right, data_.right.views[v], threshold(probe.right))) {
+    if (covered(left, data_.left.views[v], left_px) &&
+        covered(right, data_.right.views[v], right_px)) {
       ++duplicates_;
       return Outcome::kDuplicate;
     }

@@ -34,9 +34,17 @@ class LogFile;
 
 namespace ws::calib {
 
+// A view is a near duplicate of an accepted one when its corners moved on
+// average less than this many times their noise (corner_noise.h): a board
+// held still moves them by about 1.8 noise levels (the mean distance of two
+// noisy detections), a view someone chose by many pixels. So a replayed log
+// or imported corners keep every distinct view, and a live stream does not
+// count one still board many times.
+inline constexpr double kStillBoard = 4.0;
+
 struct SessionOptions {
-  // Near-duplicate threshold: mean corner distance in pixels; 0 = 1.5 % of
-  // the image diagonal.
+  // Near-duplicate threshold: mean corner distance in pixels; 0 =
+  // kStillBoard times the view's corner noise.
   double duplicate_px = 0;
   int grid_rows = 6, grid_cols = 8;
   int min_views = 3;

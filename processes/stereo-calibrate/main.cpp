@@ -64,7 +64,8 @@ int main(int argc, char** argv) {
   app.add_option(
          "--duplicate-px", node.session.duplicate_px,
          "A view whose corners are on average this close to a kept view's is a near duplicate "
-         "(0: 1.5 % of the image diagonal)")
+         "(0: 4 times the noise of its corners, measured from the board's rows and columns: a "
+         "board held still)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--once", node.once,
