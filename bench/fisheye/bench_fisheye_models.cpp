@@ -90,8 +90,9 @@ void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_s
       options.model = kind;
       options.knots = knots;
       if (s == 1) {
+        options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;
-        options.board_warp = true;
+        options.board_warp = WarpRule::kEstimated;
       }
       std::printf("%-52s", (kind + (s ? ", outlier rejection + board warp" : "")).c_str());
       for (int c = 0; c < (mono ? 1 : 2); ++c) {
@@ -165,8 +166,9 @@ int main(int argc, char** argv) {
       CalibrationOptions options;
       options.knots = knots;
       if (s == 1) {
+        options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;
-        options.board_warp = true;
+        options.board_warp = WarpRule::kEstimated;
       }
       settings[s] = CalibrateStereoAllModels(data, options, kinds);
       const std::string suffix =

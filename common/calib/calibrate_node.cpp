@@ -251,6 +251,8 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right}) {
         if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
+        for (const std::string& line : {OutlierLine(*camera), WarpChoiceLine(*camera)})
+          if (!line.empty()) process_.log().Info(r.model + " " + line);
         if (camera->uncertainty.median_px >= 0)
           process_.log().Info(r.model + " " + UncertaintyLine(*camera));
       }

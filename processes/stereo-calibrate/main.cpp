@@ -19,13 +19,16 @@ int main(int argc, char** argv) {
                      "log), STEREO_CALIBRATION; writes the calibration file and report.");
   ws::calib::NodeOptions node;
   ws::calib::CalibrationOptions& calib = node.calibration;
-  std::string model = "bspline", flow = "joint", loss = "none", state, knots = "auto";
+  std::string model = "all", flow = "joint", loss = "none", state, knots = "auto";
+  std::string outliers = "auto", warp = "auto", nonradial = "auto";
   auto& app = cli.app();
   std::vector<std::string> models = ws::ModelKinds();
   models.push_back("all");
   app.add_option("--model", model,
                  "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "
-                 "fisheye lenses beyond 180 degrees) or all (Table II; the first solved is published)")
+                 "fisheye lenses beyond 180 degrees) or all: every model solved (Table II), the "
+                 "one with the lowest held-out RMS published (the fewest parameters within the "
+                 "fold-to-fold noise of it); a model that cannot follow the lens is reported")
       ->check(CLI::IsMember(models))
       ->capture_default_str();
   app.add_option("--knots", knots,
@@ -50,14 +53,22 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--robust-scale", calib.robust_scale_px, "Robust loss scale, pixels")
       ->capture_default_str();
-  app.add_option(
-         "--outlier-sigma", calib.outlier_sigma,
-         "Leave out corners farther than this many sigma from their projection (0: keep all)")
-      ->check(CLI::NonNegativeNumber)
+  app.add_option("--outlier-sigma", outliers,
+                 "Corners left out as outliers: auto (farther from their projection than "
+                 "sigma sqrt(2 ln 2N), Chauvenet's criterion for N corners of robust noise "
+                 "sigma), K (farther than K sigma, at least 0.25 px) or off")
       ->capture_default_str();
-  app.add_flag("--board-warp", calib.board_warp,
-               "Estimate the board's bow (mrcal's calobject_warp paraboloid; reported in mm) "
-               "with everything else");
+  app.add_option("--board-warp", warp,
+                 "The board's bow (mrcal's calobject_warp paraboloid; reported in mm): auto "
+                 "(estimated, kept where it lowers the held-out RMS beyond the fold-to-fold "
+                 "noise), on or off")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
+      ->capture_default_str();
+  app.add_option("--nonradial", nonradial,
+                 "The lens model's non-radial part, a smooth 2-D field over the image: auto "
+                 "(grids of 4 to 16 control points across tried, the simplest with the lowest "
+                 "held-out RMS kept, none included), none, or COLSxROWS")
+      ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
       ->capture_default_str();
@@ -91,6 +102,11 @@ int main(int argc, char** argv) {
     node.models = ws::calib::ParseModelList(model);
     calib.model = node.models.front();
     calib.knots = ws::calib::ParseKnots(knots);
+    calib.outliers = ws::calib::ParseOutlierRule(outliers, &calib.outlier_sigma);
+    ws::calib::ParseFieldRule(nonradial, &calib);
+    calib.board_warp = warp == "on"    ? ws::calib::WarpRule::kEstimated
+                       : warp == "off" ? ws::calib::WarpRule::kFlat
+                                       : ws::calib::WarpRule::kAuto;
     calib.flow = flow == "paper" ? ws::calib::StereoFlow::kPaper : ws::calib::StereoFlow::kJoint;
     calib.robust_loss = loss == "huber"    ? ws::calib::RobustLoss::kHuber
                         : loss == "cauchy" ? ws::calib::RobustLoss::kCauchy

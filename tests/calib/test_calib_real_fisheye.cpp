@@ -130,8 +130,8 @@ TEST(RealBabelCalib, TrainTestProtocolBsplineThetaNoWorseThanKb4) {
     for (int m = 0; m < 2; ++m) {
       CalibrationOptions options;
       options.model = models[m];
-      options.outlier_sigma = robust ? 6 : 0;
-      options.board_warp = robust;
+      options.outliers = robust ? OutlierRule::kSigma : OutlierRule::kOff;
+      options.board_warp = robust ? WarpRule::kEstimated : WarpRule::kFlat;
       const CameraCalibration calibration = CalibrateCamera(train, options);
       const HeldOutFit held_out = FitHeldOutViews(calibration.model, test, 6, calibration.board_warp);
       std::printf("%-14s%-28s train %.4f px (%d, %d)   test %.4f px (%d)\n", models[m],
