@@ -21,12 +21,14 @@ SETS=${*:-ros babelcalib sim}
 OUT=$(mktemp -d /tmp/bench-fisheye-XXXX)
 url() { echo "file://$1?$2"; }
 
-# DIR/corners.lcmlog as DIR/corners-{left,right}.vnl; sets GRID_SIZE, GRID_SPACING.
+# DIR/corners.lcmlog as DIR/corners.vnl and one file a camera,
+# DIR/corners-{left,right}.vnl; sets GRID_SIZE, GRID_SPACING.
 export_vnl() {
   local grid
   grid=$($BENCH/export_corners_vnl --in-url "$(url "$1/corners.lcmlog" speed=0)" \
-    --prefix "$1/${2:-corners}" --log-dir "$1" --quiet | tail -1)
+    --out "$1/corners.vnl" --log-dir "$1" --quiet | tail -1)
   read -r _ GRID_SIZE _ GRID_SPACING <<<"$grid"
+  for camera in left right; do grep -E "^(#|$camera-)" "$1/corners.vnl" > "$1/corners-$camera.vnl" || true; done
 }
 
 # mrcal-calibrate-cameras on VNL into OUTDIR: WIDTH HEIGHT FOV_X_DEG FOCAL_PX CAMERA
