@@ -47,7 +47,13 @@ BoardWarp WarpFromReport(const std::string& path, size_t index, const StereoData
   if (path.empty()) return warp;
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
-  const nlohmann::json report = nlohmann::json::parse(in);
+  nlohmann::json report = nlohmann::json::parse(in);
+  if (report.contains("models")) {  // several models solved: the file is the chosen one's
+    nlohmann::json chosen;
+    for (const auto& model : report["models"])
+      if (model.value("model", "") == report.value("chosen", "")) chosen = model;
+    report = chosen;
+  }
   const auto& cameras = report.at("cameras");
   if (index >= cameras.size() || !cameras[index].contains("board_warp")) return warp;
   const auto& bow = cameras[index]["board_warp"];
@@ -88,7 +94,8 @@ int main(int argc, char** argv) {
     for (int c = 0; c < (train.right.image_width == 0 ? 1 : 2); ++c) {
       const auto fit = ws::bench::FitOpenCvFisheye(*trains[c]);
       if (fit.failed) {
-        std::printf("%s cv::fisheye failed on %d views: %s\n", trains[c]->name.c_str(), fit.views, fit.error.c_str());
+        std::printf("%s cv::fisheye failed on %d views: %s\n", trains[c]->name.c_str(), fit.views,
+                    fit.error.substr(0, fit.error.find('\n')).c_str());
         continue;
       }
       std::printf("%s cv::fisheye RMS %.4f px over %d views (%d corners)\n", trains[c]->name.c_str(), fit.rms_px,

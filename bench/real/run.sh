@@ -42,7 +42,8 @@ ws_solve() {
   local start
   start=$(date +%s.%N)
   $BIN/stereo-calibrate --once "${DEFAULTS[@]}" --in-url "$(url "$2" speed=0)" --out "$3.yaml" \
-    --report "$3.json" --out-url "$(url "$3.lcmlog" mode=w)" --log-dir "$(dirname "$3")" --quiet
+    --report "$3.json" --out-url "$(url "$3.lcmlog" mode=w)" --log-dir "$(dirname "$3")" --quiet 2> "$3.err" ||
+    { cat "$3.err"; return 1; }
   /usr/bin/python3 bench/real/report_rows.py "$3.json" "$1"
   echo "$1 solve $(since "$start") s"
 }

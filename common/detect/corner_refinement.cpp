@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kLargestScaleOfSpacing = 0.15;
 constexpr double kLargestScalePx = 16;
-constexpr double kAgreementErrors = 2;  // Lepski's threshold, in standard errors
+constexpr double kAgreementErrors = 3;  // Lepski's threshold, in standard errors
 constexpr double kPoorFit = 0.75;       // share of the window's variance explained
 
 // Scales 1, sqrt 2, 2, ... 16 px: the fit's windows, made once.

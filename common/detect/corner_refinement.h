@@ -12,10 +12,15 @@
 //     corner, so that the window, two scales, covers less than a third of
 //     the way there; 16 px at most), each with its standard error from the
 //     image's noise (saddle_point.h);
-//   - going up, a scale is taken while its point lies within two standard
+//   - going up, a scale is taken while its point lies within three standard
 //     errors of the point at every smaller scale: the larger window then
 //     adds no bias the noise does not already hide. The first scale that
-//     disagrees, or fits poorly, ends the climb.
+//     disagrees, or fits poorly, ends the climb. Three, not fewer: a bias
+//     that varies smoothly over the image the lens model absorbs, the noise
+//     it cannot (on the simulator's sharp-knee rig the calibration's error
+//     against the truth was 0.087 / 0.086 px with one standard error,
+//     0.069 / 0.071 with two, 0.038 / 0.046 with three; the real sets'
+//     kb4 RMS moved by under 0.003 px).
 // A fit is poor where the quadratic explains less than three quarters of
 // its window's variance (an ideal junction explains 0.85 or more:
 // saddle_point.h), where it finds no saddle, or where its point wanders
