@@ -29,7 +29,8 @@
 #include "bench_support.h"
 #include "calib/calibrate.h"
 #include "calib/corner_import.h"
-#include "detect/corner_detector.h"
+#include "detect/stereo_corner_finder.h"
+#include "lcm_io/image_codec.h"
 #include "detect/corner_refinement.h"
 #include "detect/saddle_point.h"
 
@@ -37,6 +38,7 @@ namespace {
 
 using ws::calib::BoardView;
 using ws::calib::CameraData;
+using ws::calib::ToBoardView;
 
 double Seconds(const std::function<void()>& run) { return 1e-3 * ws::bench::Milliseconds(run); }
 
@@ -56,14 +58,9 @@ void PrintFit(const std::string& name, const CameraData& data) {
   }
 }
 
-BoardView ToView(const ws::BoardSpec& board, const ws::BoardCorners& corners) {
-  BoardView view;
-  for (size_t i = 0; i < corners.ids.size(); ++i) {
-    const cv::Point3d X = board.ObjectPoint(corners.ids[i]);
-    view.ids.push_back(corners.ids[i]);
-    view.object.emplace_back(X.x, X.y, X.z);
-    view.image.emplace_back(corners.points[i].x, corners.points[i].y);
-  }
+// `view` with its corners at `points`.
+BoardView WithPoints(BoardView view, const std::vector<cv::Point2f>& points) {
+  for (size_t i = 0; i < points.size(); ++i) view.image[i] = {points[i].x, points[i].y};
   return view;
 }
 
@@ -82,9 +79,8 @@ void Images(const ws::BoardSpec& board, const std::string& pattern) {
   std::vector<cv::String> files;
   cv::glob(pattern, files);
   if (files.empty()) throw std::runtime_error("no image matches " + pattern);
-  const auto opencv = ws::MakeCornerDetector(board, ws::ChessboardMethod::opencv);
-  const auto classic = ws::MakeCornerDetector(board, ws::ChessboardMethod::classic);
-  const auto sb = ws::MakeCornerDetector(board, ws::ChessboardMethod::sb);
+  const ws::StereoCornerFinder opencv(board, ws::ChessboardMethod::opencv),
+      classic(board, ws::ChessboardMethod::classic), sb(board, ws::ChessboardMethod::sb);
   int found[5] = {}, both = 0;
   double seconds[5] = {};
   CameraData ours, theirs, fixed, chosen;
@@ -95,31 +91,32 @@ void Images(const ws::BoardSpec& board, const std::string& pattern) {
       data->image_width = gray.cols;
       data->image_height = gray.rows;
     }
-    ws::BoardCorners corners[3];
+    const widestereo::image_t image = ws::MatToImage(gray, 0);
+    BoardView views[3];
     std::vector<cv::Point2f> sb_points;
-    seconds[0] += Seconds([&] { corners[0] = opencv->Detect(gray); });
+    seconds[0] += Seconds([&] { views[0] = ToBoardView(opencv.FindInImage(image)); });
     seconds[1] += Seconds([&] { found[1] += cv::findChessboardCornersSB(gray, board.pattern_size(), sb_points); });
     seconds[2] += Seconds([&] {
       found[2] += cv::findChessboardCornersSB(gray, board.pattern_size(), sb_points,
                                               cv::CALIB_CB_EXHAUSTIVE | cv::CALIB_CB_NORMALIZE_IMAGE);
     });
-    seconds[3] += Seconds([&] { corners[1] = classic->Detect(gray); });
-    seconds[4] += Seconds([&] { corners[2] = sb->Detect(gray); });
-    found[0] += !corners[0].empty();
-    found[3] += !corners[1].empty();
-    found[4] += !corners[2].empty();
-    if (!corners[0].empty() && !corners[1].empty()) {
-      ++both;
-      theirs.views.push_back(ToView(board, corners[0]));
-      ours.views.push_back(ToView(board, corners[1]));
-      const std::vector<double> spacing = ws::calib::NeighbourSpacing(theirs.views.back());
-      ws::BoardCorners moved = corners[0];
-      moved.points = FixedScaleSaddles(gray, spacing, moved.points);
-      fixed.views.push_back(ToView(board, moved));
-      moved.points = corners[0].points;
-      ws::RefineCorners(gray, moved.points, spacing, corners[0].points);
-      chosen.views.push_back(ToView(board, moved));
-    }
+    seconds[3] += Seconds([&] { views[1] = ToBoardView(classic.FindInImage(image)); });
+    seconds[4] += Seconds([&] { views[2] = ToBoardView(sb.FindInImage(image)); });
+    found[0] += !views[0].empty();
+    found[3] += !views[1].empty();
+    found[4] += !views[2].empty();
+    if (views[0].empty() || views[1].empty()) continue;
+    ++both;
+    theirs.views.push_back(views[0]);
+    ours.views.push_back(views[1]);
+    const std::vector<double> spacing = ws::calib::NeighbourSpacing(views[0]);
+    std::vector<cv::Point2f> start;
+    for (const auto& p : views[0].image) start.emplace_back(float(p.x()), float(p.y()));
+    std::vector<cv::Point2f> moved = FixedScaleSaddles(gray, spacing, start);
+    fixed.views.push_back(WithPoints(views[0], moved));
+    moved = start;
+    ws::RefineCorners(gray, moved, spacing, start);
+    chosen.views.push_back(WithPoints(views[0], moved));
   }
   std::printf("%s: %zu images, boards found (seconds):\n", pattern.c_str(), files.size());
   const char* names[5] = {"OpenCV findChessboardCorners (adaptive + normalise) + cornerSubPix",
@@ -135,30 +132,31 @@ void Images(const ws::BoardSpec& board, const std::string& pattern) {
 
 void BabelCalib(const std::string& dsc, const std::vector<std::string>& orpc) {
   const CameraData given = ws::calib::ReadBabelCalibViews(dsc, orpc);
-  CameraData subpix = given, saddle = given, direct = given;
-  int kept = 0, corners = 0;
+  CameraData subpix = given, from_subpix = given, saddle = given;
+  int fell_back = 0, corners = 0;
   for (size_t v = 0; v < orpc.size(); ++v) {
     const std::string image = orpc[v].substr(0, orpc[v].rfind('.')) + ".png";
     const cv::Mat gray = cv::imread(image, cv::IMREAD_GRAYSCALE);
     if (gray.empty()) throw std::runtime_error("cannot read " + image);
     const std::vector<double> spacing = ws::calib::NeighbourSpacing(given.views[v]);
-    std::vector<cv::Point2f> points;
-    for (const auto& p : given.views[v].image) points.emplace_back(float(p.x()), float(p.y()));
-    std::vector<cv::Point2f> subpix_points = points, start = points;
-    ws::CornerSubPix(gray, subpix_points, spacing);
-    for (size_t i = 0; i < points.size(); ++i) subpix.views[v].image[i] = {subpix_points[i].x, subpix_points[i].y};
-    kept += ws::RefineCorners(gray, points, spacing, subpix_points);
-    ws::RefineCorners(gray, start = subpix_points, spacing, subpix_points);
-    for (size_t i = 0; i < points.size(); ++i) direct.views[v].image[i] = {start[i].x, start[i].y};
-    corners += int(points.size());
-    for (size_t i = 0; i < points.size(); ++i) saddle.views[v].image[i] = {points[i].x, points[i].y};
+    std::vector<cv::Point2f> start;
+    for (const auto& p : given.views[v].image) start.emplace_back(float(p.x()), float(p.y()));
+    std::vector<cv::Point2f> refined = start, fallback = start;
+    ws::CornerSubPix(gray, fallback, spacing);
+    subpix.views[v] = WithPoints(given.views[v], fallback);
+    fell_back += ws::RefineCorners(gray, refined, spacing, fallback);
+    saddle.views[v] = WithPoints(given.views[v], refined);
+    refined = fallback;
+    ws::RefineCorners(gray, refined, spacing, fallback);
+    from_subpix.views[v] = WithPoints(given.views[v], refined);
+    corners += int(start.size());
   }
   std::printf("%s: %zu views\n", dsc.c_str(), orpc.size());
   PrintFit("the given corners", given);
   PrintFit("cornerSubPix from there", subpix);
-  PrintFit("saddle points from cornerSubPix's", direct);
+  PrintFit("saddle points from cornerSubPix's", from_subpix);
   PrintFit("saddle points from the given (else cornerSubPix)", saddle);
-  std::printf("  (the saddle points fell back to cornerSubPix at %d of %d corners)\n", kept, corners);
+  std::printf("  (the saddle points fell back to cornerSubPix at %d of %d corners)\n", fell_back, corners);
 }
 
 }  // namespace

@@ -19,8 +19,9 @@
 #include "calib/corner_import.h"
 #include "calib/heldout.h"
 #include "calib_process_support.h"
-#include "detect/corner_detector.h"
 #include "detect/corner_refinement.h"
+#include "detect/stereo_corner_finder.h"
+#include "lcm_io/image_codec.h"
 
 namespace {
 
@@ -117,17 +118,6 @@ CameraCalibration FitKb4(const CameraData& data) {
   return CalibrateCamera(data, options);
 }
 
-BoardView ToView(const BoardSpec& board, const BoardCorners& corners) {
-  BoardView view;
-  for (size_t i = 0; i < corners.ids.size(); ++i) {
-    const cv::Point3d X = board.ObjectPoint(corners.ids[i]);
-    view.ids.push_back(corners.ids[i]);
-    view.object.emplace_back(X.x, X.y, X.z);
-    view.image.emplace_back(corners.points[i].x, corners.points[i].y);
-  }
-  return view;
-}
-
 // stereo-detect's chessboard detector against OpenCV's own
 // (findChessboardCorners with adaptive threshold and normalisation, then
 // cornerSubPix) on every image: at least the boards OpenCV finds, every one
@@ -135,8 +125,7 @@ BoardView ToView(const BoardSpec& board, const BoardCorners& corners) {
 // the views both found.
 TEST_F(RealFisheyeStereo, StereoDetectFindsOpenCvsBoardsAndItsCornersFitNoWorse) {
   const BoardSpec board = ParseBoardSpec("chessboard:8x6:0.04");
-  const auto ours = MakeCornerDetector(board, ChessboardMethod::classic);
-  const auto opencv = MakeCornerDetector(board, ChessboardMethod::opencv);
+  const StereoCornerFinder ours(board, ChessboardMethod::classic), opencv(board, ChessboardMethod::opencv);
   const int opencv_boards_in_readme[2] = {46, 45};
   int c = 0;
   for (const std::string camera : {"left", "right"}) {
@@ -152,12 +141,13 @@ TEST_F(RealFisheyeStereo, StereoDetectFindsOpenCvsBoardsAndItsCornersFitNoWorse)
         data->image_width = gray.cols;
         data->image_height = gray.rows;
       }
-      const BoardCorners mine = ours->Detect(gray), theirs = opencv->Detect(gray);
+      const widestereo::image_t image = MatToImage(gray, 0);
+      const BoardView mine = ToBoardView(ours.FindInImage(image)), theirs = ToBoardView(opencv.FindInImage(image));
       opencv_boards += !theirs.empty();
-      if (!mine.empty()) all.views.push_back(ToView(board, mine));
+      if (!mine.empty()) all.views.push_back(mine);
       if (!mine.empty() && !theirs.empty()) {
-        both_ours.views.push_back(ToView(board, mine));
-        both_opencv.views.push_back(ToView(board, theirs));
+        both_ours.views.push_back(mine);
+        both_opencv.views.push_back(theirs);
       }
     }
     const CameraCalibration every = FitKb4(all), mine = FitKb4(both_ours), theirs = FitKb4(both_opencv);
