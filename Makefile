@@ -14,14 +14,15 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# Every Debian package the project uses (build, tests, demo, lcm-spy, plots).
+# Every Debian package the project uses (build, tests, demo, lcm-spy, plots,
+# and the benchmarks against mrcal: bench/real, bench/fisheye).
 DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java \
   libopencv-dev libopencv-contrib-dev opencv-doc \
   libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml time \
-  libsodium-dev
+  libsodium-dev mrcal python3-mrcal python3-opencv
 
 .PHONY: deps build test test-asan fuzz demo spy clean
 
