@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -60,15 +61,23 @@ Process::Process(const ProcessOptions& options)
   if (!options.key_file.empty())
     auth_.emplace(auth::RigKey::FromFile(options.key_file),
                   file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
-  out_ = OpenLcm(options.out_url, "output");
+  if (file_input_ && options_.out_url.empty()) {
+    const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
+                                                       : options_.batch_out;
+    options_.out_url = "file://" + std::filesystem::absolute(log).lexically_normal().string() + "?mode=w";
+    log_.Info("batch run: output to " + log + ", nothing on the live bus (--out-url URL publishes)");
+  }
+  out_ = OpenLcm(options_.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
-            (options.out_url.empty() ? "LCM default" : options.out_url) +
+            (options_.out_url.empty() ? "LCM default" : options_.out_url) +
             (options.config_file.empty() ? "" : ", config " + options.config_file) + ", log " +
             log_.path() + ")");
   if (auth_)
     log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
               "): commands and calibrations are signed, and refused unless signed with it");
+  else if (file_input_)  // a batch run obeys no peer: only the log file needs to say it
+    log_.Detail("no --key-file: commands and calibrations are unauthenticated");
   else
     log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
 }

@@ -6,6 +6,18 @@
 #include "runtime/yaml_config.h"
 
 namespace ws {
+namespace {
+
+// Whether `option` ("--rate") is among the arguments, alone or as --rate=X.
+bool OnCommandLine(const std::string& option, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == option || arg.rfind(option + "=", 0) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 ProcessCli::ProcessCli(std::string name, std::string description)
     : app_(std::move(description), name) {
@@ -31,12 +43,15 @@ std::optional<int> ProcessCli::Parse(int argc, char** argv) {
     app_.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app_.exit(e);  // --help
-    // Name the config file and say "unknown option" where CLI11 says "INI".
+    // Name the config file where the error is in it, and say "unknown
+    // option" where CLI11 says "INI".
     std::string why = e.what();
     const std::string ini = "INI was not able to parse ";
     if (why.rfind(ini, 0) == 0) why = "unknown option '" + why.substr(ini.size()) + "'";
     const CLI::Option* config = app_.get_config_ptr();
-    const std::string file = config && config->count() ? config->as<std::string>() + ": " : "";
+    const bool in_config = dynamic_cast<const CLI::ConfigError*>(&e) != nullptr ||
+                           (why.rfind("--", 0) == 0 && !OnCommandLine(why.substr(0, why.find_first_of(": ")), argc, argv));
+    const std::string file = in_config && config && config->count() ? config->as<std::string>() + ": " : "";
     std::cerr << options_.name << ": " << file << why << "\nRun with --help for more information.\n";
     return e.get_exit_code();
   }

@@ -13,7 +13,10 @@ struct ProcessOptions {
   std::string name;
   std::string config_file;
   std::string in_url;   // "" = LCM's default (LCM_DEFAULT_URL or udpm multicast)
-  std::string out_url;
+  std::string out_url;  // "" with a file:// input: a log file (batch_out), never the live bus
+  // Where a batch run (file:// input) without --out-url writes its output:
+  // an LCM log file; "" = <log_dir>/<name>.lcmlog.
+  std::string batch_out;
   std::string log_dir = "logs";
   std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
   bool quiet = false;
