@@ -1,5 +1,6 @@
 #include "calib/folder_corners.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -52,9 +53,12 @@ std::string NoBoardAdvice(const ImageFolder& folder, const BoardSpec& board) {
                   "a board of 10x7 squares is 9x6) and that the images show the whole board";
 }
 
+// The names, the first kShown of them and how many more.
 std::string List(const std::vector<std::string>& names) {
+  constexpr size_t kShown = 20;
   std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  for (size_t i = 0; i < std::min(names.size(), kShown); ++i) text += (i ? ", " : "") + names[i];
+  if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
   return text;
 }
 

@@ -34,7 +34,7 @@ ProcessCli::ProcessCli(std::string name, std::string description)
       ->capture_default_str();
   app_.add_option("--key-file", options_.key_file,
                   "The rig key (a secret only its owner may read): commands and calibrations are then "
-                  "signed, and refused unless signed with it (README, Security)");
+                  "signed, and refused unless signed with it (docs/security.md)");
   app_.add_flag("--quiet", options_.quiet, "Only errors on the terminal (the log file gets all)");
 }
 
