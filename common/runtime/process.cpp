@@ -159,7 +159,7 @@ int Process::Run() {
 int Process::Finish() {
   for (auto& fn : at_exit_) fn();
   at_exit_.clear();
-  PublishStatus();
+  PublishStatus(exit_code_ ? "failed" : "exited");  // the last heartbeat says it ends
   log_.Detail("final: " + ProgressLine());
   ShowProgress();
   log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
@@ -253,7 +253,7 @@ void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t
   }
 }
 
-void Process::PublishStatus() {
+void Process::PublishStatus(const char* state) {
   widestereo::process_status_t status;
   status.utime = Now();
   status.name = options_.name;
@@ -262,7 +262,7 @@ void Process::PublishStatus() {
   status.uptime_s = (WallMicros() - start_wall_us_) * 1e-6;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    status.state = state_;
+    status.state = state ? state : state_;
     status.last_error = last_error_;
     for (const auto& [name, c] : counters_) {
       widestereo::channel_counters_t cc;
@@ -270,6 +270,7 @@ void Process::PublishStatus() {
       cc.received = c->received;
       cc.published = c->published;
       cc.dropped = c->dropped;
+      cc.skipped = c->skipped;
       cc.rejected = c->rejected;
       status.channels.push_back(cc);
     }
@@ -288,6 +289,7 @@ std::string Process::ProgressLine() {
     for (const auto& [name, c] : counters_) {
       line << " | " << name << " in " << c->received << " out " << c->published;
       if (c->dropped) line << " dropped " << c->dropped;
+      if (c->skipped) line << " skipped " << c->skipped;
       if (c->rejected) line << " rejected " << c->rejected;
     }
   }

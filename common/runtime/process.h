@@ -42,7 +42,8 @@ namespace ws {
 struct ChannelCounters {
   std::atomic<int64_t> received{0};
   std::atomic<int64_t> published{0};
-  std::atomic<int64_t> dropped{0};
+  std::atomic<int64_t> dropped{0};  // lost
+  std::atomic<int64_t> skipped{0};  // replaced by a newer frame, by design
   std::atomic<int64_t> rejected{0};
 };
 
@@ -121,7 +122,8 @@ class Process {
   template <class Msg>
   void PublishEncoded(const std::string& channel, const Msg& msg);
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
-  void PublishStatus();
+  // The heartbeat, with `state` instead of the process's own if given.
+  void PublishStatus(const char* state = nullptr);
   void ShowProgress();
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();
