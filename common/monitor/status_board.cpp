@@ -108,8 +108,7 @@ std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condense
     const bool gone = silent_us > kGoneAfterUs;
     const bool ended = s.state == "exited" || s.state == "failed";
     const std::string state = gone && !ended ? "gone" : s.state;
-    const std::string uptime = gone || ended ? Format("gone %llds", (long long)(silent_us / 1000000))
-                                             : Format("%.0fs", s.uptime_s);
+    const std::string uptime = gone ? Format("gone %llds", (long long)(silent_us / 1000000)) : Format("%.0fs", s.uptime_s);
     std::string line = Format("%-*s %-14.14s %7d %8s", w, Who(s).c_str(), state.c_str(), s.pid, uptime.c_str());
     if (condensed) {
       int64_t in = 0, out = 0, lost = 0, skipped = 0, rejected = 0;

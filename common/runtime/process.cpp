@@ -61,7 +61,7 @@ Process::Process(const ProcessOptions& options)
   if (!options.key_file.empty())
     auth_.emplace(auth::RigKey::FromFile(options.key_file),
                   file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
-  if (file_input_ && options_.out_url.empty()) {
+  if ((file_input_ || options_.batch) && options_.out_url.empty()) {
     const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
                                                        : options_.batch_out;
     options_.out_url = "file://" + std::filesystem::absolute(log).lexically_normal().string() + "?mode=w";

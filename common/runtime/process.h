@@ -9,9 +9,10 @@
 // Subscribe (auth/message_auth.h): one that fails is rejected with the reason.
 // Without a key they go unsigned and unchecked, and the log says so at start.
 //
-// Batch runs. With a file:// input and no --out-url, the output goes to a
-// log file (ProcessOptions::batch_out), never to the LCM default: a replay
-// on a robot's network must not reach the live rig.
+// Batch runs. With a file:// input (or files the process reads itself,
+// ProcessOptions::batch) and no --out-url, the output goes to a log file
+// (ProcessOptions::batch_out), never to the LCM default: a replay on a
+// robot's network must not reach the live rig.
 //
 // Clock. Live, the process clock is the wall clock. With a file:// input it is
 // the utime of the newest input message, so that timers and heartbeats fall at

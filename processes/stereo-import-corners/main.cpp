@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-import-corners",
                      "Publishes board corners detected by another tool on STEREO_CORNERS (one "
                      "message a view, as the left camera of a one-camera rig): BabelCalib's target "
-                     ".dsc and per-image .orpc files, or mrcal's corners.vnl.");
+                     ".dsc and per-image .orpc files, or mrcal's corners.vnl. Without --out-url they go "
+                     "to a log file (LOG_DIR/stereo-import-corners.lcmlog), never to the live bus.");
   std::string dsc, vnl, board, image_size;
   std::vector<std::string> orpc;
   auto& app = cli.app();
@@ -45,7 +46,9 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--image-size must be WIDTHxHEIGHT, not '" + image_size + "'");
       data = ws::calib::ReadMrcalCorners(vnl, spec.cols, spec.rows, spec.square, width, height);
     }
-    ws::Process process(cli.options());
+    ws::ProcessOptions options = cli.options();
+    options.batch = true;  // files in: without --out-url, a log file out
+    ws::Process process(options);
     for (size_t v = 0; v < data.views.size(); ++v) {
       widestereo::stereo_corners_t msg;
       msg.frame_id = static_cast<int64_t>(v);

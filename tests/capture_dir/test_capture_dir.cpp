@@ -52,6 +52,7 @@ TEST(ImageFolder, SubfoldersPairByNameAndAFolderOfPlainImagesIsOneCamera) {
   for (const char* cam : {"cam0/data", "cam1/data"}) std::filesystem::create_directories(dir + "/cam/" + cam);
   WriteImage(dir + "/cam/cam0/data/17.png", 1);
   WriteImage(dir + "/cam/cam1/data/17.png", 2);
+  std::filesystem::create_directories(dir + "/one");
   WriteImage(dir + "/one/a.png", 1);
   WriteImage(dir + "/one/b.png", 2);
 
