@@ -15,10 +15,11 @@ namespace {
 using namespace ws::test;
 using namespace std::chrono_literals;
 
-// A tmux server of this test alone, with one window of `cols` x `rows`.
+// A tmux server of this test alone (its socket in the test's folder), with
+// one window of `cols` x `rows`.
 class Tmux {
  public:
-  Tmux(const std::string& command, int cols, int rows) : socket_("ws-status-" + std::to_string(getpid())) {
+  Tmux(const std::string& command, int cols, int rows) : socket_(TempDir("tmux") + "/socket") {
     const auto r = Run({"new-session", "-d", "-x", std::to_string(cols), "-y", std::to_string(rows), command});
     EXPECT_EQ(r.exit_code, 0) << r.output;
   }
@@ -40,7 +41,7 @@ class Tmux {
 
  private:
   CommandResult Run(std::vector<std::string> args) {
-    args.insert(args.begin(), {"/usr/bin/tmux", "-L", socket_});
+    args.insert(args.begin(), {"/usr/bin/tmux", "-S", socket_});
     return RunCommand(args, 30);
   }
   std::string socket_;
