@@ -8,6 +8,16 @@
 namespace ws {
 namespace {
 
+// The first option a CLI11 message names ("--rate" of "Could not convert:
+// --rate = fast"), or "".
+std::string OptionNamed(const std::string& message) {
+  const size_t at = message.find("--");
+  if (at == std::string::npos) return "";
+  const size_t end = message.find_first_not_of(
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_", at + 2);
+  return message.substr(at, end == std::string::npos ? std::string::npos : end - at);
+}
+
 // Whether `option` ("--rate") is among the arguments, alone or as --rate=X.
 bool OnCommandLine(const std::string& option, int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
@@ -49,8 +59,9 @@ std::optional<int> ProcessCli::Parse(int argc, char** argv) {
     const std::string ini = "INI was not able to parse ";
     if (why.rfind(ini, 0) == 0) why = "unknown option '" + why.substr(ini.size()) + "'";
     const CLI::Option* config = app_.get_config_ptr();
+    const std::string option = OptionNamed(why);
     const bool in_config = dynamic_cast<const CLI::ConfigError*>(&e) != nullptr ||
-                           (why.rfind("--", 0) == 0 && !OnCommandLine(why.substr(0, why.find_first_of(": ")), argc, argv));
+                           (!option.empty() && !OnCommandLine(option, argc, argv));
     const std::string file = in_config && config && config->count() ? config->as<std::string>() + ": " : "";
     std::cerr << options_.name << ": " << file << why << "\nRun with --help for more information.\n";
     return e.get_exit_code();
