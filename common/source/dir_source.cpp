@@ -1,6 +1,5 @@
 #include "source/dir_source.h"
 
-#include <filesystem>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
@@ -9,7 +8,6 @@
 namespace ws {
 namespace {
 
-namespace fs = std::filesystem;
 
 cv::Mat ReadImage(const std::string& path) {
   cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
