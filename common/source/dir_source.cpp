@@ -8,7 +8,6 @@
 namespace ws {
 namespace {
 
-
 cv::Mat ReadImage(const std::string& path) {
   cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
   if (image.empty()) return image;
