@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <opencv2/core.hpp>
 
 #include "models/model_registry.h"
@@ -13,7 +14,7 @@ namespace ws::calib {
 namespace {
 
 const char* kHeader[] = {
-    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point "
+    "widestereo stereo calibration (docs/models.md). Pixel of a camera-frame point "
     "(X,Y,Z):",
     "  bspline, poly6, poly12: x = X/Z, y = Y/Z (Z > 0);",
     "  kb4, bspline_theta: x = theta X/rho, y = theta Y/rho, rho = sqrt(X^2 + Y^2),",
@@ -58,10 +59,13 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
 // file and the field.
 class Reader {
  public:
-  explicit Reader(std::string path) : path_(std::move(path)) {}
+  explicit Reader(std::string path) : path_(std::move(path)), cut_short_(EndsMidLine(path_)) {}
 
   [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
-    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
+    throw CalibrationFileError(path_ + ": " + field + ": " + reason +
+                               (cut_short_ ? " (the file ends mid-line: it was cut short; write it again, "
+                                             "e.g. with stereo-calibrate --out)"
+                                           : ""));
   }
   cv::FileNode Required(const cv::FileNode& parent, const std::string& key,
                         const std::string& field) const {
@@ -128,7 +132,16 @@ class Reader {
     return value;
   }
 
+  // A file OpenCV wrote ends with a newline; one that does not was cut short.
+  static bool EndsMidLine(const std::string& path) {
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    if (!file || file.tellg() <= 0) return false;
+    file.seekg(-1, std::ios::end);
+    return file.get() != '\n';
+  }
+
   std::string path_;
+  bool cut_short_;
 };
 
 // A camera's non-radial field: its grid (4 to 64 control points a side),

@@ -37,8 +37,12 @@ void CheckOptions(const CalibrationOptions& options) {
 int ParseKnots(const std::string& value) {
   if (value == "auto") return kAutoKnots;
   size_t used = 0;
-  const int knots = std::stoi(value, &used);
-  if (used != value.size() || knots < 2 || knots > 64)
+  int knots = 0;
+  try {
+    knots = std::stoi(value, &used);
+  } catch (const std::exception&) {  // std::stoi says only "stoi"
+  }
+  if (used == 0 || used != value.size() || knots < 2 || knots > 64)
     throw std::invalid_argument("knots must be 'auto' or a count from 2 to 64, not '" + value + "'");
   return knots;
 }

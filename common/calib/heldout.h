@@ -56,7 +56,7 @@ HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, i
 // whole cross-validation then costs one Jacobian of the solved problem and
 // one small dense solve per fold, not K solves. Measured against the folds
 // it replaces (five Levenberg-Marquardt steps each, then the held-out poses
-// solved) in README "Calibration": equal to 1e-4 px near the chosen count;
+// solved) in docs/calibration.md: equal to 1e-4 px near the chosen count;
 // a model far from the lens or not determined by its views reads higher,
 // since the step is not damped.
 struct CrossValidation {

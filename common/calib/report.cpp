@@ -29,7 +29,7 @@ Json UncertaintyReport(const ProjectionUncertainty& u) {
   Json out;
   out["definition"] =
       "worst-direction 1-sigma of projecting a fixed camera-frame ray, from the solve's "
-      "covariance with the board poses marginalised (README: Projection uncertainty)";
+      "covariance with the board poses marginalised (docs/calibration.md: Projection uncertainty)";
   out.update(ImageGridJson(u.grid, "sigma_px", u.sigma_px));
   out["observed"] = std::vector<int>(u.observed.begin(), u.observed.end());
   out["median_px"] = u.median_px;

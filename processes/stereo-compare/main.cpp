@@ -81,8 +81,9 @@ int main(int argc, char** argv) {
       diffs.emplace_back(side == 0 ? "left" : "right",
                          CompareProjection(Camera(ma), Camera(mb), radius, o.cols, o.rows));
     }
-    std::printf("%s (%s) against %s (%s)\n", o.b.c_str(), b.model.c_str(), o.a.c_str(),
-                a.model.c_str());
+    const std::string what = "difference of " + o.b + " (" + b.model + ") from " + o.a + " (" + a.model + "): " +
+                             o.a + "'s pixel rays projected through " + o.b;
+    std::printf("%s\n", what.c_str());
     for (const auto& [name, d] : diffs)
       std::printf("%-5s: rms %.4f px, median %.4f px, max %.4f px over %d grid points; rotation "
                   "%.4f deg fitted to %d points\n",
@@ -99,7 +100,7 @@ int main(int argc, char** argv) {
       if (!out) throw std::runtime_error("cannot write the report " + o.report);
     }
     if (!o.plot.empty())
-      WriteProjectionDiffPng(diffs, o.b + " (" + b.model + ") against " + o.a + " (" + a.model + ")",
+      WriteProjectionDiffPng(diffs, "difference of " + o.b + " (" + b.model + ") from " + o.a + " (" + a.model + ")",
                              o.plot);
   } catch (const std::exception& error) {
     std::cerr << "stereo-compare: " << error.what() << "\n";

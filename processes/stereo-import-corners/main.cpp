@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
                      "Publishes board corners detected by another tool on STEREO_CORNERS (one "
                      "message a view, as the left camera of a one-camera rig; with --pairs one "
                      "message a stereo frame): BabelCalib's target .dsc and per-image .orpc files, "
-                     "or mrcal's corners.vnl.");
+                     "or mrcal's corners.vnl. Without --out-url they go to a log file "
+                     "(LOG_DIR/stereo-import-corners.lcmlog), never to the live bus.");
   std::string dsc, vnl, board, image_size;
   std::vector<std::string> orpc, pairs;
   auto& app = cli.app();
@@ -77,7 +78,9 @@ int main(int argc, char** argv) {
                                       " right images of " + vnl);
       }
     }
-    ws::Process process(cli.options());
+    ws::ProcessOptions options = cli.options();
+    options.batch = true;  // files in: without --out-url, a log file out
+    ws::Process process(options);
     for (int v = 0; v < data.size(); ++v) {
       widestereo::stereo_corners_t msg;
       msg.frame_id = v;

@@ -202,7 +202,7 @@ process_status_t StatusMessage() {
   status.uptime_s = 12.5;
   status.state = "running";
   for (const char* channel : {ws::channel::kStereoImages, ws::channel::kStereoCorners})
-    status.channels.push_back({channel, 120, 118, 1, 1});
+    status.channels.push_back({channel, 120, 118, 1, 2, 1});
   status.nchannels = 2;
   status.last_error = "STEREO_IMAGES: image_t: bad image size 0x0";
   return status;

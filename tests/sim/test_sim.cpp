@@ -119,7 +119,7 @@ TEST(SimConfig, BadConfigIsAClearErrorNamingFileAndField) {
       {rig + "scene: {board: {spec: chessboard:9x6}}\n", {"scene.board.spec", "chessboard takes 3"}},
       {rig + "scene: {board: {spec: chessboard:9x6:0.05, depth: [1.0, 0.5]}}\n", {"scene.board.depth", "MIN <= MAX"}},
       {rig + "scene: {board: {spec: chessboard:9x6:0.05, poses: 0}}\n", {"scene.board.poses", "from 1"}},
-      {rig + "scene: {board: {spec: chessboard:9x6:2.0, depth: [0.5, 0.6]}}\n", {"scene.board", "does not fit"}},
+      {rig + "scene: {board: {spec: chessboard:9x6:0.5, depth: [0.5, 0.6]}}\n", {"scene.board", "does not fit"}},
       {"rig: {left: {lens: theia}}\n" + scene, {"rig.baseline: is required"}},
       {"rig: {baseline: -0.3, left: {lens: theia}}\n" + scene, {"rig.baseline", "greater than 0", "-0.3"}},
       {"rig: {baseline: 0.3, T: [-0.3, 0, 0], left: {lens: theia}}\n" + scene, {"rig.T", "either baseline or T"}},
