@@ -3,12 +3,12 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 
 #include "models/model_registry.h"
 #include "runtime/opencv_yaml.h"
+#include "runtime/atomic_file.h"
 
 namespace ws::calib {
 namespace {
@@ -241,10 +241,9 @@ CalibrationFile ToCalibrationFile(const StereoCalibration& c) {
 }
 
 void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) {
-  const std::string tmp = path + ".tmp";
+  std::string text;
   {
-    cv::FileStorage fs(tmp, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
-    if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
+    cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     for (const char* line : kHeader) fs.writeComment(line);
     if (!file.note.empty()) fs.writeComment(file.note);
     fs << "model" << file.model;
@@ -261,11 +260,9 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
          << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
          << file.views << "}";
     }
-    fs.release();
+    text = fs.releaseAndGetString();
   }
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
+  WriteFileAtomically(path, text);
 }
 
 CalibrationFile ReadCalibrationFile(const std::string& path) {

@@ -7,7 +7,6 @@
 //   stereo-compare old.yaml new.yaml --plot diff.png --report diff.json
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -19,6 +18,7 @@
 #include "calib/calib_plots.h"
 #include "calib/projection_diff.h"
 #include "calib/report.h"
+#include "runtime/atomic_file.h"
 
 namespace {
 
@@ -95,9 +95,7 @@ int main(int argc, char** argv) {
       Json cameras = Json::array();
       for (const auto& [name, d] : diffs) cameras.push_back(DiffJson(name, d));
       const Json report{{"a", o.a}, {"b", o.b}, {"cameras", cameras}};
-      std::ofstream out(o.report);
-      out << report.dump(2) << "\n";
-      if (!out) throw std::runtime_error("cannot write the report " + o.report);
+      WriteFileAtomically(o.report, report.dump(2) + "\n");
     }
     if (!o.plot.empty())
       WriteProjectionDiffPng(diffs, "difference of " + o.b + " (" + b.model + ") from " + o.a + " (" + a.model + ")",
