@@ -60,7 +60,8 @@ Process::Process(const ProcessOptions& options)
   // Live, nothing signed before the start is accepted: an earlier run may have obeyed it.
   if (!options.key_file.empty())
     auth_.emplace(auth::RigKey::FromFile(options.key_file),
-                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
+                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_,
+                  int64_t(options.max_clock_skew_s * 1e6));
   if ((file_input_ || options_.batch) && options_.out_url.empty()) {
     const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
                                                        : options_.batch_out;
