@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detect/board_spec.h"
 #include "lcm_io/image_codec.h"
 #include "models/distortion_function.h"
 #include "models/nonradial_field.h"
+#include "runtime/escaped.h"
 
 namespace ws {
 namespace {
@@ -52,13 +54,24 @@ void Validate(const widestereo::camera_corners_t& msg) {
   Require(msg.n >= 0, t, "negative corner count");
   if (msg.n == 0) return;
   Require(msg.image_width > 0 && msg.image_height > 0, t, "corners without an image size");
+  // At most one point per corner of the board it names, each id on it: a
+  // flood of points is no board (and would cost every solve).
+  int corners = 0;
+  try {
+    corners = ParseBoardSpec(msg.board_id).corner_count();
+  } catch (const std::invalid_argument& e) {
+    Reject(t, "board_id " + Quoted(msg.board_id.substr(0, 64)) + ": " + e.what());
+  }
+  Require(msg.n <= corners, t,
+          std::to_string(msg.n) + " corners on a board of " + std::to_string(corners));
   for (int i = 0; i < msg.n; ++i) {
     const auto& p = msg.image_points[i];
     const auto& o = msg.object_points[i];
     Require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(o[0]) &&
                 std::isfinite(o[1]) && std::isfinite(o[2]),
             t, "corner " + std::to_string(i) + " is not finite");
-    Require(msg.ids[i] >= 0, t, "corner " + std::to_string(i) + " has a negative id");
+    Require(msg.ids[i] >= 0 && msg.ids[i] < corners, t,
+            "corner " + std::to_string(i) + " has id " + std::to_string(msg.ids[i]) + ", not on the board");
   }
   // Views are paired and compared corner by corner through the ids.
   std::vector<int32_t> ids(msg.ids.begin(), msg.ids.begin() + msg.n);
