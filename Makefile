@@ -21,7 +21,8 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml time \
-  libsodium-dev
+  libsodium-dev pybind11-dev python3-pybind11 python3-numpy python3-opencv python3-pytest \
+  mrcal python3-mrcal
 
 .PHONY: deps build test test-asan fuzz demo spy clean
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "calib/image_grid.h"
-#include "models/camera_model.h"
+#include "interop/camera_projection.h"
 
 namespace ws::calib {
 
@@ -36,11 +36,12 @@ struct ProjectionDiff {
 };
 
 // The default fit radius: a sixth of the smaller image side.
-double DefaultFitRadius(const CameraModel& camera);
+double DefaultFitRadius(const CameraProjection& camera);
 
-// Compares camera B against camera A (A's image is the grid's). Throws
+// Compares camera B against camera A (A's image is the grid's); either may
+// be another tool's model (interop/any_rig.h). Throws
 // std::invalid_argument when the two cameras' image sizes differ.
-ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_radius,
+ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjection& b, double fit_radius,
                                  int cols = 64, int rows = 48);
 
 }  // namespace ws::calib

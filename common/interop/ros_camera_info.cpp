@@ -1,0 +1,37 @@
+#include "interop/ros_camera_info.h"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace ws {
+namespace {
+
+std::string Matrix(int rows, int cols, const double* data) {
+  std::string out = "\n  rows: " + std::to_string(rows) + "\n  cols: " + std::to_string(cols) +
+                    "\n  data: [";
+  char number[32];
+  for (int i = 0; i < rows * cols; ++i) {
+    std::snprintf(number, sizeof number, "%s%.17g", i ? ", " : "", data[i]);
+    out += number;
+  }
+  return out + "]";
+}
+
+}  // namespace
+
+void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
+                        const std::vector<std::string>& comments) {
+  std::ofstream out(path);
+  for (const std::string& line : comments) out << "# " << line << "\n";
+  out << "image_width: " << info.width << "\nimage_height: " << info.height
+      << "\ncamera_name: " << info.name << "\ncamera_matrix:" << Matrix(3, 3, info.K.val)
+      << "\ndistortion_model: " << info.distortion_model
+      << "\ndistortion_coefficients:" << Matrix(1, int(info.D.size()), info.D.data())
+      << "\nrectification_matrix:" << Matrix(3, 3, info.R.val)
+      << "\nprojection_matrix:" << Matrix(3, 4, info.P.val) << "\n";
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace ws
