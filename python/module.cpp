@@ -62,13 +62,12 @@ struct PyCamera {
       return camera->Unproject(q);
     });
   }
-  // Camera::InField per row (another tool's model: its whole image).
+  // CameraProjection::InField per row.
   py::array_t<bool> InField(const Points& rays) const {
     if (rays.ndim() != 2 || rays.shape(1) != 3) throw std::invalid_argument("rays must be an N x 3 array");
     py::array_t<bool> out(rays.shape(0));
-    const Camera* own = camera->AsCamera();
     for (py::ssize_t i = 0; i < rays.shape(0); ++i)
-      out.mutable_data()[i] = !own || own->InField(Eigen::Map<const Eigen::Vector3d>(rays.data() + 3 * i));
+      out.mutable_data()[i] = camera->InField(Eigen::Map<const Eigen::Vector3d>(rays.data() + 3 * i));
     return out;
   }
   // widestereo's parameters (the calibration file's fields), or None.

@@ -1,5 +1,6 @@
 #include "numpy_mat.h"
 
+#include <cstring>
 #include <stdexcept>
 
 namespace py = pybind11;
@@ -23,7 +24,7 @@ py::dtype DtypeOf(int depth) {
 int DepthOf(const py::dtype& dtype) {
   for (int depth : {CV_8U, CV_8S, CV_16U, CV_16S, CV_32S, CV_32F, CV_64F})
     if (dtype.is(DtypeOf(depth))) return depth;
-  throw std::invalid_argument("an array of dtype " + std::string(py::str(dtype)) +
+  throw std::invalid_argument("an array of dtype " + py::str(static_cast<const py::handle&>(dtype)).cast<std::string>() +
                               " (uint8, int8, uint16, int16, int32, float32 or float64)");
 }
 

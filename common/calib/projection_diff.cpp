@@ -27,7 +27,9 @@ Eigen::Matrix3d Rotation(const Eigen::Vector3d& angle_axis) {
 // project_B(R v) - q, or nullopt where B has no pixel inside its image.
 std::optional<Eigen::Vector2d> Difference(const CameraProjection& b, const Eigen::Matrix3d& R,
                                           const GridRay& g) {
-  const auto pixel = b.Project(R * g.ray);
+  const Eigen::Vector3d ray = R * g.ray;
+  if (!b.InField(ray)) return std::nullopt;
+  const auto pixel = b.Project(ray);
   if (!pixel || !pixel->allFinite()) return std::nullopt;
   if (pixel->x() < -0.5 || pixel->y() < -0.5 || pixel->x() > b.image_width() - 0.5 ||
       pixel->y() > b.image_height() - 0.5)
@@ -91,7 +93,7 @@ ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjecti
     for (int i = 0; i < cols; ++i) {
       const Eigen::Vector2d q = out.grid.Pixel(i, j);
       const auto ray = a.Unproject(q);
-      if (!ray) continue;
+      if (!ray || !a.InField(*ray)) continue;
       all.push_back({j * cols + i, q, *ray});
       if ((q - centre).norm() <= fit_radius) central.push_back(all.back());
     }

@@ -13,8 +13,9 @@
 // within `fit_radius` pixels of the image centre (mrcal's default: a sixth
 // of the smaller image side; the centre is where both are best observed),
 // by Gauss-Newton on its angle-axis; fit_radius <= 0: R = I (no fit).
-// Grid points that either camera cannot carry (no ray, no pixel, or a pixel
-// outside B's image) are NaN and left out of every statistic.
+// Grid points that either camera cannot carry (no ray, no pixel, a pixel
+// outside B's image, or a ray outside either model's calibrated field,
+// CameraProjection::InField) are NaN and left out of every statistic.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,6 @@
 #include "interop/any_rig.h"
 
+#include <Eigen/LU>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -69,6 +70,10 @@ StereoRig AnyRig::AsStereoRig() const {
   rig.R = R;
   rig.T = T;
   return rig;
+}
+
+bool IsRotation(const Eigen::Matrix3d& R) {
+  return (R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) && R.determinant() > 0;
 }
 
 AnyRig LoadAnyRig(const std::string& path) {

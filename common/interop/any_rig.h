@@ -41,6 +41,10 @@ struct AnyRig {
   StereoRig AsStereoRig() const;
 };
 
+// Whether R is a rotation (R^T R = I to 1e-6, det R > 0): what the readers
+// require of a file's R.
+bool IsRotation(const Eigen::Matrix3d& R);
+
 // Reads any of the formats above. Throws calib::CalibrationFileError
 // "FILE: FIELD: REASON".
 AnyRig LoadAnyRig(const std::string& path);

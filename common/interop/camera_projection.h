@@ -28,6 +28,9 @@ class CameraProjection {
   virtual std::optional<Eigen::Vector2d> Project(const Eigen::Vector3d& point) const = 0;
   // The unit ray seen at a pixel; nullopt where the model cannot be inverted.
   virtual std::optional<Eigen::Vector3d> Unproject(const Eigen::Vector2d& pixel) const = 0;
+  // Whether a direction lies in the field the model was calibrated over
+  // (Camera::InField); another tool's model: every direction it projects.
+  virtual bool InField(const Eigen::Vector3d&) const { return true; }
   // The camera as widestereo's own model when it is one (then it can be
   // rectified, exported, ...); nullptr for another tool's model.
   virtual const Camera* AsCamera() const { return nullptr; }
@@ -47,6 +50,7 @@ class WidestereoProjection final : public CameraProjection {
   std::optional<Eigen::Vector3d> Unproject(const Eigen::Vector2d& pixel) const override {
     return camera_.Unproject(pixel);
   }
+  bool InField(const Eigen::Vector3d& direction) const override { return camera_.InField(direction); }
   const Camera* AsCamera() const override { return &camera_; }
 
  private:

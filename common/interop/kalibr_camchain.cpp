@@ -117,8 +117,7 @@ AnyRig ReadKalibrCamchain(const std::string& path) {
   }
   rig.R = M.topLeftCorner<3, 3>();
   rig.T = M.topRightCorner<3, 1>();
-  if (!(rig.R.transpose() * rig.R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) || !(rig.R.determinant() > 0) ||
-      M.row(3) != Eigen::RowVector4d(0, 0, 0, 1))
+  if (!IsRotation(rig.R) || M.row(3) != Eigen::RowVector4d(0, 0, 0, 1))
     in.Fail("cam1.T_cn_cnm1", "not a rigid transform [R T; 0 0 0 1]");
   return rig;
 }

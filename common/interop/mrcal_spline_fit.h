@@ -4,13 +4,15 @@
 //
 // fx, fy, cx, cy are the camera's own; with them fixed the projection is
 // linear in the spline's control points, so they are the least-squares fit
-// of delta(u) = (q - c) / f - u over the camera's observed field
-// (field_samples.h, 200 samples across), x and y apart, with a light penalty on the
-// control points' second differences that settles those no sample reaches.
-// The knots span the field's stereographic extent (fov_x_deg the smallest
-// whole degree that holds it, Ny as many knots as its height needs at the
-// same spacing); Nx grows from 16 until the worst difference, measured on a
-// grid twice as dense as the fit's samples, is below the target.
+// of delta(u) = (q - c) / f - u, x and y apart, to the rays of a grid in u
+// (four to a knot spacing) that the camera projects into its observed field
+// (field_samples.h: its image where its rays lie within its calibrated
+// field), with a faint penalty on the control points' second differences
+// that settles those no sample reaches. The knots span the field's
+// stereographic extent (fov_x_deg the smallest whole degree that holds it,
+// Ny as many knots as its height needs at the same spacing); Nx grows from
+// 16 until the worst difference over every pixel of the field is below the
+// target.
 #pragma once
 
 #include "interop/field_samples.h"

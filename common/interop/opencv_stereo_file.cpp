@@ -164,7 +164,7 @@ AnyRig ReadOpenCvCalibration(const std::string& path) {
   rig.right = ReadCamera(in, root, k + "2", "D2", fisheye, width, height);
   cv::cv2eigen(in.Matrix(root, "R", 3, 3), rig.R);
   cv::cv2eigen(in.Matrix(root, "T", 3, 1), rig.T);
-  if (!(rig.R.transpose() * rig.R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) || !(rig.R.determinant() > 0))
+  if (!IsRotation(rig.R))
     in.Fail("R", "not a rotation");
   return rig;
 }
