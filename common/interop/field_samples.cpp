@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace ws {
 
@@ -27,16 +26,14 @@ std::vector<FieldSample> FieldSamples(const Camera& camera, double step, double 
 
 FitError ProjectionError(const CameraProjection& model, const std::vector<FieldSample>& samples) {
   FitError error;
-  double sum = 0;
+  error.points = int(samples.size());
   for (const FieldSample& s : samples) {
     const auto pixel = model.Project(s.ray);
-    const double d =
-        pixel ? (*pixel - s.pixel).norm() : std::numeric_limits<double>::infinity();
-    error.max_px = std::max(error.max_px, std::isnan(d) ? INFINITY : d);
-    sum += d * d;
+    const double d = pixel && pixel->allFinite() ? (*pixel - s.pixel).norm() : INFINITY;
+    error.max_px = std::max(error.max_px, d);
+    error.rms_px += d * d;  // the sum of squares until the end
   }
-  error.points = int(samples.size());
-  if (!samples.empty()) error.rms_px = std::sqrt(sum / samples.size());
+  if (error.points > 0) error.rms_px = std::sqrt(error.rms_px / error.points);
   return error;
 }
 

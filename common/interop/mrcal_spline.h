@@ -23,17 +23,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
+#include "models/radial_coordinate.h"
 #include "models/scalar_part.h"
 
 namespace ws {
 
 // The stereographic coordinate u of a direction, and back.
 struct Stereographic {
+  // |u| grows without bound towards straight back; a coordinate for wide
+  // fields, like the angle.
+  static constexpr double kMaxRadius = TanTheta::kMaxRadius;
   static constexpr bool kAngle = true;
-  static constexpr double kMaxRadius = std::numeric_limits<double>::infinity();
   // False for the zero vector and straight back (|p| + Z = 0).
   template <typename T>
   static bool Ideal(const T* ray, T* ideal) {

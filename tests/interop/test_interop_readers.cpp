@@ -129,7 +129,7 @@ TEST(OpenCvCalibration, ReadsOneCameraAndRefusesWhatItCannotHold) {
   EXPECT_EQ(eight.left->Name(), "opencv 8-coefficient");
   const std::pair<std::string, std::string> cases[] = {
       {header + K + D("0, 0, 0, 0", 4), "image_width: missing"},
-      {header + size + K + D("0, 0, 0", 3), "D: 3 coefficients"},
+      {header + size + K + D("0, 0, 0", 3), "distortion_coefficients: 3 coefficients"},
       {header + size + "distortion_model: kannala\n" + K + D("0, 0, 0, 0", 4), "distortion_model: 'kannala'"},
       {header + size + K, "distortion_coefficients: missing"},
   };
