@@ -129,7 +129,7 @@ struct PyRig {
 
   py::array_t<double> Triangulate(const Points& left, const Points& right) const {
     const StereoRig stereo = rig.AsStereoRig();
-    if (left.ndim() != right.ndim() || left.shape(0) != right.shape(0))
+    if (left.ndim() != right.ndim() || left.size() != right.size())
       throw std::invalid_argument("left and right pixels must be arrays of the same shape");
     const Points r = right;
     const Camera cl(stereo.left), cr(stereo.right);

@@ -2,7 +2,7 @@
 // its image size and its projection both ways. widestereo's own models
 // (models/camera_model.h) and the models of other tools that ours cannot
 // hold exactly (mrcal's splined stereographic, OpenCV's rational model:
-// foreign_models.h) are both one.
+// foreign_camera.h) are both one.
 #pragma once
 
 #include <memory>

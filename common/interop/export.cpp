@@ -1,5 +1,7 @@
 #include "interop/export.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <Eigen/Geometry>

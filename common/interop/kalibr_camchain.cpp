@@ -1,13 +1,14 @@
 #include "interop/kalibr_camchain.h"
 
 #include <cmath>
-#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
 #include "calib/calib_file.h"
+#include "interop/number_text.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
@@ -76,24 +77,17 @@ CameraModel ReadCamera(const Reader& in, const YAML::Node& cam, const std::strin
   return m;
 }
 
-std::string List(const double* values, int count) {
-  std::string out = "[";
-  char number[32];
-  for (int i = 0; i < count; ++i) {
-    std::snprintf(number, sizeof number, "%s%.17g", i ? ", " : "", values[i]);
-    out += number;
-  }
-  return out + "]";
-}
+std::string List(const double* values, int count) { return "[" + NumberList(values, count) + "]"; }
 
 }  // namespace
 
 AnyRig ReadKalibrCamchain(const std::string& path) {
   const Reader in(path);
   std::ifstream file(path);
+  if (!file) in.Fail("(file)", "cannot be read");
+  if (std::filesystem::file_size(path) > (1 << 20)) in.Fail("(file)", "larger than 1 MB, not a camchain");
   std::stringstream text;
   text << file.rdbuf();
-  if (!file) in.Fail("(file)", "cannot be read");
   YAML::Node root;
   try {
     CheckOpenCvYamlLayout(text.str());  // no nesting deep enough to exhaust the stack

@@ -1,7 +1,7 @@
 #include "interop/mrcal_cameramodel.h"
 
 #include <cmath>
-#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -10,6 +10,7 @@
 #include "calib/calib_file.h"
 #include "interop/foreign_camera.h"
 #include "interop/mrcal_spline.h"
+#include "interop/number_text.h"
 #include "interop/opencv_lens.h"
 #include "interop/python_literal.h"
 
@@ -17,6 +18,9 @@ namespace ws {
 namespace {
 
 using calib::CalibrationFileError;
+
+// mrcal's own files, optimization_inputs and all, are about a megabyte.
+constexpr uintmax_t kMaxFileBytes = 64 << 20;
 
 std::vector<double> Numbers(const std::string& path, const PyLiteral& dict, const std::string& key) {
   const auto found = dict.entries.find(key);
@@ -43,6 +47,8 @@ Eigen::Matrix3d RotationOf(const double* r) {
 MrcalCameraModel ReadMrcalCameraModel(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw CalibrationFileError(path + ": (file): cannot be read");
+  if (std::filesystem::file_size(path) > kMaxFileBytes)
+    throw CalibrationFileError(path + ": (file): larger than 64 MB, not a camera model");
   std::stringstream text;
   text << in.rdbuf();
   PyLiteral dict;
@@ -80,15 +86,7 @@ MrcalCameraModel ReadMrcalCameraModel(const std::string& path) {
 void WriteMrcalCameraModel(const std::string& path, const MrcalCameraModel& m,
                            const std::vector<std::string>& comments) {
   std::ofstream out(path);
-  auto list = [&](const auto& values) {
-    out << "[";
-    char number[32];
-    for (double v : values) {
-      std::snprintf(number, sizeof number, " %.17g,", v);
-      out << number;
-    }
-    out << " ]";
-  };
+  auto list = [&](const auto& values) { out << "[ " << NumberList(values.data(), int(values.size())) << " ]"; };
   for (const std::string& line : comments) out << "# " << line << "\n";
   out << "{\n    'lensmodel': '" << m.lensmodel << "',\n    # fx, fy, cx, cy, distortion...\n"
       << "    'intrinsics': ";

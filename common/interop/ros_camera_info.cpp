@@ -1,21 +1,16 @@
 #include "interop/ros_camera_info.h"
 
-#include <cstdio>
 #include <fstream>
 #include <stdexcept>
+
+#include "interop/number_text.h"
 
 namespace ws {
 namespace {
 
 std::string Matrix(int rows, int cols, const double* data) {
-  std::string out = "\n  rows: " + std::to_string(rows) + "\n  cols: " + std::to_string(cols) +
-                    "\n  data: [";
-  char number[32];
-  for (int i = 0; i < rows * cols; ++i) {
-    std::snprintf(number, sizeof number, "%s%.17g", i ? ", " : "", data[i]);
-    out += number;
-  }
-  return out + "]";
+  return "\n  rows: " + std::to_string(rows) + "\n  cols: " + std::to_string(cols) + "\n  data: [" +
+         NumberList(data, rows * cols) + "]";
 }
 
 }  // namespace
