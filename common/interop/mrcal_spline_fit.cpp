@@ -130,7 +130,7 @@ MrcalSplineFit FitMrcalSpline(const Camera& camera, double target_px) {
     if (Stereographic::Ideal(f.ray.data(), u.data())) u_max = u_max.cwiseMax(u.cwiseAbs());
   }
   MrcalSplineFit best;
-  for (int nx : {16, 24, 32, 48, 64, 96}) {
+  for (int nx : {16, 24, 32, 48, 64, 96, 128, 160}) {
     const MrcalSpline spline(Layout(u_max, nx));
     const std::vector<double> control = Solve(spline, Samples(camera, spline.config()));
     const ForeignCamera<MrcalSpline> fitted("mrcal", m.image_width, m.image_height, spline,
