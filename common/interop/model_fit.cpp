@@ -51,8 +51,9 @@ ModelFit Fit(const Camera& camera, const Model& model, const std::vector<int>& f
   options.parameter_tolerance = 1e-12;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
-  ModelFit fit;
-  fit.model = source;
+  ModelFit fit;  // the image size and the fitted parameters only: nothing else of the source's
+  fit.model.image_width = source.image_width;
+  fit.model.image_height = source.image_height;
   fit.model.fx = intrinsics[kFx], fit.model.fy = intrinsics[kFy];
   fit.model.cx = intrinsics[kCx], fit.model.cy = intrinsics[kCy];
   fit.model.p1 = intrinsics[kP1], fit.model.p2 = intrinsics[kP2];
