@@ -63,8 +63,11 @@ inline std::vector<TestCamera> TestCameras() {
 
 // A Kannala-Brandt camera of a 200-degree lens.
 inline CameraModel Kb4Camera() {
-  return CameraModel{1280, 960, 301.3, 299.2, 641.7, 477.4, 0, 0,
-                     Distortion{"kb4", 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}}};
+  CameraModel camera;
+  camera.image_width = 1280, camera.image_height = 960;
+  camera.fx = 301.3, camera.fy = 299.2, camera.cx = 641.7, camera.cy = 477.4;
+  camera.distortion = Distortion{"kb4", 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}};
+  return camera;
 }
 
 // One camera of every model kind, in ModelKinds()'s order.
