@@ -14,17 +14,18 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# Every Debian package the project uses (build, tests, demo, lcm-spy, plots).
+# Every Debian package the project uses (build, tests, demo, lcm-spy, plots,
+# and the benchmarks against mrcal: bench/real, bench/fisheye).
 DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java \
   libopencv-dev libopencv-contrib-dev opencv-doc \
   libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
-  gnuplot-nox iproute2 xvfb clang libclang-rt-14-dev python3 python3-yaml time \
-  libsodium-dev pybind11-dev python3-pybind11 python3-numpy python3-opencv python3-pytest \
-  mrcal python3-mrcal
+  gnuplot-nox iproute2 tmux xvfb clang libclang-rt-14-dev python3 python3-yaml time \
+  libsodium-dev mrcal python3-mrcal python3-opencv pybind11-dev python3-pybind11 python3-numpy \
+  python3-pytest
 
-.PHONY: deps build test test-asan fuzz demo spy clean
+.PHONY: deps build built test test-asan fuzz demo spy clean
 
 deps:
 	@missing=$$(for p in $(DEB_PACKAGES); do \
@@ -39,6 +40,13 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS)
 
+# What demo and spy need: CMake's configure only when there is no build yet
+# (cmake --build configures again by itself when a CMakeLists.txt changed),
+# and of the build's output only what it does, not the targets up to date.
+built: deps
+	@[ -f $(BUILD)/CMakeCache.txt ] || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	@set -o pipefail; cmake --build $(BUILD) -j$(JOBS) | { grep -v -e 'Built target' -e 'Consolidate compiler' -e 'ing directory' || true; }
+
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
 
@@ -49,7 +57,7 @@ test: build
 # ASAN_OPT: -O1 -g1 (line tables for the reports), not RelWithDebInfo's
 # -O2 -g: calib/problem.cpp, the heaviest file, took 363 s of CPU so against
 # more than 407 s (stopped unfinished); and that file is compiled without the
-# sanitizers (common/calib/CMakeLists.txt). README "Reliability" has the
+# sanitizers (common/calib/CMakeLists.txt). docs/reliability.md has the
 # figures: about 13 min to build and 3 to test on two idle cores.
 test-asan: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWS_SANITIZE=ON -DWS_BUILD_BENCH=OFF \
@@ -65,12 +73,12 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) -j$(JOBS)
 	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
-demo: build
+demo: built
 	scripts/demo.sh
 
 # lcm-spy with our types decoded. Debian's /usr/bin/lcm-spy passes -Xincgc,
 # which Java 17 refuses, so start the Spy class directly.
-spy: build
+spy: built
 	java -cp /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:$(BUILD)/share/java/lcmtypes_widestereo.jar \
 	  lcm.spy.Spy $(if $(LCM_URL),--lcm-url=$(LCM_URL))
 

@@ -82,6 +82,13 @@ struct PyCamera {
     d["degree"] = m.distortion.degree;
     d["knots"] = m.distortion.knots;
     d["coeffs"] = m.distortion.coeffs;
+    if (!m.nonradial.empty()) {
+      py::dict field;
+      field["cols"] = m.nonradial.cols, field["rows"] = m.nonradial.rows;
+      field["domain"] = m.nonradial.domain;
+      field["coeffs"] = m.nonradial.coeffs;
+      d["nonradial"] = field;
+    }
     return d;
   }
 };

@@ -14,7 +14,7 @@ URL=${DEMO_LCM_URL:-udpm://239.255.76.67:7670?ttl=0&recv_buf_size=16777216}
 BOARD=chessboard:9x6:0.05
 MODELS=(bspline poly6 poly12)
 mkdir -p "$OUT"
-echo "demo: no rig key (--key-file): commands and calibrations on the demo's bus are unauthenticated (README, Security)"
+echo "demo: no rig key (--key-file): commands and calibrations on the demo's bus are unauthenticated (docs/security.md)"
 say() { printf '\n== %s\n' "$*"; }
 file_url() { echo "file://$PWD/$1"; }
 root() { [[ $(id -u) == 0 ]]; }
@@ -35,7 +35,7 @@ if (( $(sysctl -n net.core.rmem_max) < 16777216 )); then
     echo "demo: raised net.core.rmem_max to 16 MB for image messages (config/systemd/60-widestereo-lcm.conf keeps it)"
   else
     LAUNCH_EXTRA=(--append stereo-capture=--compression=jpeg)
-    echo "demo: net.core.rmem_max is small (see README, Receive buffers): images go JPEG-compressed"
+    echo "demo: net.core.rmem_max is small (see docs/launch.md, Receive buffers): images go JPEG-compressed"
   fi
 fi
 
@@ -73,6 +73,8 @@ for model in "${MODELS[@]}"; do
 done
 
 say "5/5 Done. In $OUT:"
-echo "    demo.lcmlog (the recorded session: replay it with lcm-logplayer), calibration.yaml,"
+echo "    demo.lcmlog (the recording: replay it with lcm-logplayer), calibration.yaml,"
 echo "    calibration.<model>.yaml, report.json, distortion_curves.png, residual_map.png,"
 echo "    <model>/cloud_*.pcd, every process's log"
+echo "    The demo left $(du -sh "$OUT" | cut -f1) there; remove it with: rm -r $OUT"
+echo "    (every demo: rm -r logs/demo-*)"

@@ -1,4 +1,4 @@
-// What the rig key costs per message (README "Security on the robot
+// What the rig key costs per message (docs/security.md, "Security on the robot
 // network"): for a command and a calibration as the processes send them,
 // the time to encode the message (what every publish pays) and to decode
 // and validate it (what every receiver pays), the baselines, beside the time

@@ -13,11 +13,11 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <opencv2/calib3d.hpp>
 
 #include "calib/calibrate.h"
 #include "calib/heldout.h"
 #include "lcm_io/channels.h"
+#include "opencv_fisheye_fit.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"
 #include "widestereo/stereo_corners_t.hpp"
@@ -40,40 +40,20 @@ struct Row {
 // cv::fisheye::calibrate on the views of `data` whose corners all lie below
 // max_theta under `camera` (every view when camera is null).
 Row OpenCvFisheye(const CameraData& data, const CameraModel* camera, double max_theta, int c, Row row) {
-  std::vector<std::vector<cv::Point3d>> object;
-  std::vector<std::vector<cv::Point2d>> image;
   const std::optional<Camera> model = camera ? std::optional<Camera>(*camera) : std::nullopt;
-  for (const BoardView& view : data.views) {
-    if (view.empty()) continue;
-    bool inside = true;
-    if (model) {
-      for (const auto& u : view.image) {
-        const auto ray = model->Unproject(u);
-        inside = inside && ray && std::atan2(ray->head<2>().norm(), ray->z()) < max_theta;
-      }
+  const auto fit = ws::bench::FitOpenCvFisheye(data, [&](const BoardView& view) {
+    if (!model) return true;
+    for (const auto& u : view.image) {
+      const auto ray = model->Unproject(u);
+      if (!ray || !(std::atan2(ray->head<2>().norm(), ray->z()) < max_theta)) return false;
     }
-    if (!inside) continue;
-    object.emplace_back();
-    image.emplace_back();
-    for (int i = 0; i < view.size(); ++i) {
-      object.back().emplace_back(view.object[i].x(), view.object[i].y(), view.object[i].z());
-      image.back().emplace_back(view.image[i].x(), view.image[i].y());
-    }
-    row.corners[c] += view.size();
-  }
-  cv::Matx33d K;
-  cv::Vec4d D;
-  std::vector<cv::Vec3d> rvecs, tvecs;
-  try {
-    row.rms[c] = cv::fisheye::calibrate(
-        object, image, cv::Size(data.image_width, data.image_height), K, D, rvecs, tvecs,
-        cv::fisheye::CALIB_RECOMPUTE_EXTRINSIC | cv::fisheye::CALIB_FIX_SKEW,
-        cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 100, 1e-10));
-  } catch (const cv::Exception& e) {
-    row.camera_failed[c] = true;
-    std::fprintf(stderr, "cv::fisheye::calibrate, camera %d: %s\n", c, e.what());
-  }
-  row.views[c] = static_cast<int>(object.size());
+    return true;
+  });
+  row.rms[c] = fit.rms_px;
+  row.corners[c] = fit.corners;
+  row.views[c] = fit.views;
+  row.camera_failed[c] = fit.failed;
+  if (fit.failed) std::fprintf(stderr, "cv::fisheye::calibrate, camera %d: %s\n", c, fit.error.c_str());
   return row;
 }
 
@@ -90,8 +70,9 @@ void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_s
       options.model = kind;
       options.knots = knots;
       if (s == 1) {
+        options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;
-        options.board_warp = true;
+        options.board_warp = WarpRule::kEstimated;
       }
       std::printf("%-52s", (kind + (s ? ", outlier rejection + board warp" : "")).c_str());
       for (int c = 0; c < (mono ? 1 : 2); ++c) {
@@ -165,8 +146,9 @@ int main(int argc, char** argv) {
       CalibrationOptions options;
       options.knots = knots;
       if (s == 1) {
+        options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;
-        options.board_warp = true;
+        options.board_warp = WarpRule::kEstimated;
       }
       settings[s] = CalibrateStereoAllModels(data, options, kinds);
       const std::string suffix =

@@ -20,41 +20,21 @@ DATA=../shared/data
 SETS=${*:-ros babelcalib sim}
 OUT=$(mktemp -d /tmp/bench-fisheye-XXXX)
 url() { echo "file://$1?$2"; }
-
-# DIR/corners.lcmlog as DIR/corners-{left,right}.vnl; sets GRID_SIZE, GRID_SPACING.
-export_vnl() {
-  local grid
-  grid=$($BENCH/export_corners_vnl --in-url "$(url "$1/corners.lcmlog" speed=0)" \
-    --prefix "$1/${2:-corners}" --log-dir "$1" --quiet | tail -1)
-  read -r _ GRID_SIZE _ GRID_SPACING <<<"$grid"
-}
-
-# mrcal-calibrate-cameras on VNL into OUTDIR: WIDTH HEIGHT FOV_X_DEG FOCAL_PX CAMERA
-mrcal_solve() {
-  local vnl=$1 outdir=$2 width=$3 height=$4 fov=$5 focal=$6 camera=$7
-  mkdir -p "$outdir"
-  mrcal-calibrate-cameras --corners-cache "$vnl" \
-    --lensmodel "LENSMODEL_SPLINED_STEREOGRAPHIC_order=3_Nx=16_Ny=12_fov_x_deg=$fov" \
-    --focal "$focal" --imagersize "$width" "$height" --object-spacing "$GRID_SPACING" \
-    --object-width-n "${GRID_SIZE%x*}" --object-height-n "${GRID_SIZE#*x}" --outdir "$outdir" \
-    "$camera-*.png" > "$outdir/mrcal.out" 2>&1 || { echo "mrcal $camera: failed ($(tail -1 "$outdir/mrcal.out"))"; return 1; }
-}
+source bench/mrcal/mrcal.sh
 
 # mrcal on every view of DIR's corners, then trained on TRAIN.vnl and tested
 # on TEST.vnl: DIR WIDTH HEIGHT FOV FOCAL CAMERA TRAIN TEST
 mrcal_fit() {
-  local dir=$1 camera=$6
-  mrcal_solve "$dir/corners-$camera.vnl" "$dir/mrcal-$camera" "${@:2:4}" "$camera" &&
-    /usr/bin/python3 bench/fisheye/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera" &&
+  local dir=$1 camera=$6 model
+  model=$(splined "$4")
+  mrcal_solve "$dir/corners-$camera.vnl" "$dir/mrcal-$camera" "$2" "$3" "$5" "$model" "$camera-*.png" &&
+    /usr/bin/python3 bench/mrcal/mrcal_rms.py "$dir/mrcal-$camera/camera-0.cameramodel" "$camera" &&
     /usr/bin/python3 bench/fisheye/mrcal_uncertainty.py "$dir/mrcal-$camera/camera-0.cameramodel" \
       "$dir/corners-$camera.vnl" "$camera"
-  mrcal_solve "$7" "$dir/mrcal-train-$camera" "${@:2:4}" "$camera" &&
-    /usr/bin/python3 bench/fisheye/mrcal_heldout.py "$dir/mrcal-train-$camera/camera-0.cameramodel" "$8" \
+  mrcal_solve "$7" "$dir/mrcal-train-$camera" "$2" "$3" "$5" "$model" "$camera-*.png" &&
+    /usr/bin/python3 bench/mrcal/mrcal_heldout.py "$dir/mrcal-train-$camera/camera-0.cameramodel" "$8" \
       "${GRID_SIZE%x*}" "${GRID_SIZE#*x}" "$GRID_SPACING" "$camera"
 }
-
-# VNL's views of even (0) or odd (1) frame ids.
-every_other() { awk -v odd="$2" 'NR == 1 || (substr($1, length($1) - 4, 1) % 2 == odd)' "$1"; }
 
 # A stereo set's table (with held-out), then mrcal on each camera, trained
 # on the even views and tested on the odd ones: DIR WIDTH HEIGHT FOV FOCAL

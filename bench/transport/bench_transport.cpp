@@ -90,9 +90,10 @@ int main(int argc, char** argv) {
               (long long)pairs, (long long)(due - pairs));
   for (const auto& [name, s] : status)
     for (const auto& c : s.channels)
-      if (c.received || c.dropped || c.rejected)
-        std::printf("  %-16s %-22s received %6lld dropped %6lld rejected %lld\n", name.c_str(), c.channel.c_str(),
-                    (long long)c.received, (long long)c.dropped, (long long)c.rejected);
+      if (c.received || c.dropped || c.skipped || c.rejected)
+        std::printf("  %-16s %-22s received %6lld skipped %6lld dropped %6lld rejected %lld\n", name.c_str(),
+                    c.channel.c_str(), (long long)c.received, (long long)c.skipped, (long long)c.dropped,
+                    (long long)c.rejected);
   std::printf("stage rates (published, between each process's first and last heartbeat of the run):\n");
   for (const auto& [name, last] : last_status) {
     const auto& [first, first_us] = first_status.at(name);

@@ -3,7 +3,7 @@
 # on this host, through stereo-match and stereo-cloud, for DURATION seconds
 # (default 60): frames lost in transit and latency from capture to
 # STEREO_CLOUD_FILTERED. Uses the receive-buffer size the launch files ask
-# for; the kernel grants at most net.core.rmem_max (see README).
+# for; the kernel grants at most net.core.rmem_max (see docs/launch.md).
 #   bench/transport/run.sh [DURATION]
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -1,6 +1,6 @@
 // Authentication of the messages that act on a process: commands
 // (STEREO_COMMAND) and calibrations (STEREO_CALIBRATION), the message types
-// that carry an auth_t (README "Security on the robot network").
+// that carry an auth_t (docs/security.md).
 //
 // A sender with the rig key fills auth_t (sender, time, a random nonce, the
 // key's id) and the MAC: HMAC-SHA512-256 (libsodium's crypto_auth) over the

@@ -36,6 +36,17 @@ struct BoardWarp {
   double Centre() const { return data[0] + data[1]; }
 };
 
+// How --board-warp auto decided for one camera (options.h, WarpRule::kAuto):
+// the held-out RMS with the board flat and with its bow estimated, the bow
+// that solve estimated with its standard deviations, and whether it was kept.
+struct WarpChoice {
+  bool made = false;  // false: not asked for, or too few views to cross-validate
+  double flat_heldout_px = -1, warped_heldout_px = -1;
+  std::array<double, 2> estimated{};  // x2, y2 (metres)
+  std::vector<double> stddev;         // x2, y2; empty without covariance
+  bool kept = false;
+};
+
 // The bounding box of the corners of every view of `cameras`.
 BoardExtent ExtentOf(const std::vector<const CameraData*>& cameras);
 

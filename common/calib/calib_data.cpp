@@ -132,4 +132,21 @@ BoardView CleanView(const BoardView& view, int* dropped) {
   return clean;
 }
 
+std::vector<double> NeighbourSpacing(const BoardView& view) {
+  double step = INFINITY;
+  for (int i = 0; i < view.size(); ++i)
+    for (int j = i + 1; j < view.size(); ++j) {
+      const double d = (view.object[i] - view.object[j]).norm();
+      if (d > 0) step = std::min(step, d);
+    }
+  std::vector<double> spacing(view.size(), INFINITY);
+  for (int i = 0; i < view.size(); ++i)
+    for (int j = 0; j < view.size(); ++j)
+      if (i != j && (view.object[i] - view.object[j]).norm() < 1.01 * step)
+        spacing[i] = std::min(spacing[i], (view.image[i] - view.image[j]).norm());
+  for (double& s : spacing)
+    if (!std::isfinite(s)) s = 0;
+  return spacing;
+}
+
 }  // namespace ws::calib

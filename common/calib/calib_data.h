@@ -73,6 +73,11 @@ void AddStereoCorners(StereoData& data, const widestereo::stereo_corners_t& msg)
 // reason: CleanView drops them first.
 std::string ViewProblem(const BoardView& view, int min_points = 6);
 
+// Each corner's distance in the image (pixels) to its nearest neighbour on
+// the board: the other corners of the view at the smallest board distance
+// any two of them have (a grid's spacing); 0 for a corner with none there.
+std::vector<double> NeighbourSpacing(const BoardView& view);
+
 // The view without its non-finite corners (image or object point); the
 // number dropped goes to *dropped.
 BoardView CleanView(const BoardView& view, int* dropped);

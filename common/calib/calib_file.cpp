@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <opencv2/core.hpp>
 
 #include "models/model_registry.h"
@@ -13,7 +14,7 @@ namespace ws::calib {
 namespace {
 
 const char* kHeader[] = {
-    "widestereo stereo calibration (README: The camera model). Pixel of a camera-frame point "
+    "widestereo stereo calibration (docs/models.md). Pixel of a camera-frame point "
     "(X,Y,Z):",
     "  bspline, poly6, poly12: x = X/Z, y = Y/Z (Z > 0);",
     "  kb4, bspline_theta: x = theta X/rho, y = theta Y/rho, rho = sqrt(X^2 + Y^2),",
@@ -21,12 +22,16 @@ const char* kHeader[] = {
     "  r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
-    "  u = fx xd + cx,  v = fy yd + cy   (pixel centres at integer coordinates, as in OpenCV)",
+    "  (xf, yf) = (xd, yd) + F(xd, yd), F = 0 without 'nonradial'",
+    "  u = fx xf + cx,  v = fy yf + cy   (pixel centres at integer coordinates, as in OpenCV)",
     "D(r): bspline: sum_i alpha_i N_{i,degree}(r), the de Boor-Cox B-spline basis on 'knots'",
     "      (clamped; beyond the last knot the last polynomial piece continues);",
     "      poly6: k1 r^2 + k2 r^4 + k3 r^6; poly12: k1 r^2 + ... + k6 r^12;",
     "      bspline_theta: as bspline, over theta; kb4: k1 r^2 + ... + k4 r^8 with p1 = p2 = 0,",
     "      cv::fisheye's model: camera_matrix is its K and k its D.",
+    "F(s, t): nonradial: sum_ij c_ij N_i(s) M_j(t), clamped uniform cubic B-splines of 'cols' x",
+    "      'rows' control points over 'domain' [s0 s1 t0 t1] (outside it: its nearest point);",
+    "      'coeffs' the x components c_ij at j cols + i, then the y components (docs/models.md).",
     "Stereo: X_right = R X_left + T (metres)."};
 
 bool IsSpline(const std::string& kind) {
@@ -39,11 +44,14 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
   fs << "model" << m.distortion.kind << "degree" << m.distortion.degree;
-  if (IsSpline(m.distortion.kind))
-    fs << "knots" << m.distortion.knots << "alpha" << m.distortion.coeffs;
-  else
-    fs << "k" << m.distortion.coeffs;
+  if (IsSpline(m.distortion.kind)) fs << "knots" << m.distortion.knots;
+  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
+  if (!m.nonradial.empty()) {
+    const NonRadial& f = m.nonradial;
+    fs << "nonradial" << "{" << "cols" << f.cols << "rows" << f.rows << "domain"
+       << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs << "}";
+  }
   fs << "}";
 }
 
@@ -51,10 +59,13 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
 // file and the field.
 class Reader {
  public:
-  explicit Reader(std::string path) : path_(std::move(path)) {}
+  explicit Reader(std::string path) : path_(std::move(path)), cut_short_(EndsMidLine(path_)) {}
 
   [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
-    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
+    throw CalibrationFileError(path_ + ": " + field + ": " + reason +
+                               (cut_short_ ? " (the file ends mid-line: it was cut short; write it again, "
+                                             "e.g. with stereo-calibrate --out)"
+                                           : ""));
   }
   cv::FileNode Required(const cv::FileNode& parent, const std::string& key,
                         const std::string& field) const {
@@ -121,8 +132,40 @@ class Reader {
     return value;
   }
 
+  // A file OpenCV wrote ends with a newline; one that does not was cut short.
+  static bool EndsMidLine(const std::string& path) {
+    std::ifstream file(path, std::ios::binary | std::ios::ate);
+    if (!file || file.tellg() <= 0) return false;
+    file.seekg(-1, std::ios::end);
+    return file.get() != '\n';
+  }
+
   std::string path_;
+  bool cut_short_;
 };
+
+// A camera's non-radial field: its grid (4 to 64 control points a side),
+// rectangle and 2 cols rows coefficients.
+NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::string& at) {
+  if (!node.isMap()) in.Fail(at.substr(0, at.size() - 1), "not a map of cols, rows, domain, coeffs");
+  NonRadial f;
+  f.cols = in.Int(node, "cols", at + "cols", 4);
+  f.rows = in.Int(node, "rows", at + "rows", 4);
+  if (f.cols > 64 || f.rows > 64) in.Fail(at + "cols", "at most 64 control points a side");
+  const std::vector<double> domain = in.Reals(node, "domain", at + "domain");
+  if (domain.size() != 4) in.Fail(at + "domain", "not the 4 numbers s0 s1 t0 t1");
+  std::copy(domain.begin(), domain.end(), f.domain.begin());
+  f.coeffs = in.Reals(node, "coeffs", at + "coeffs");
+  if (f.coeffs.size() != size_t(2 * f.cols * f.rows))
+    in.Fail(at + "coeffs", std::to_string(f.coeffs.size()) + " numbers, not 2 cols rows = " +
+                               std::to_string(2 * f.cols * f.rows));
+  try {
+    NonRadialField::FromData(f);
+  } catch (const std::exception& e) {
+    in.Fail(at + "domain", e.what());
+  }
+  return f;
+}
 
 CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::string& name,
                        double* rms, int* views) {
@@ -145,9 +188,10 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
   const auto kinds = ModelKinds();
   if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end())
     in.Fail(at + "model", "unknown model '" + d.kind + "' (bspline, poly6 or poly12)");
-  const std::string coeffs_key = IsSpline(d.kind) ? "alpha" : "k";
-  if (!node[IsSpline(d.kind) ? "k" : "alpha"].empty())
-    in.Fail(at + (IsSpline(d.kind) ? "k" : "alpha"), "not a coefficient of a " + d.kind + " model");
+  const std::string coeffs_key = CoefficientKey(d.kind);
+  for (const std::string key : {"alpha", "k"})
+    if (key != coeffs_key && !node[key].empty())
+      in.Fail(at + key, "not a coefficient of a " + d.kind + " model");
   if (IsSpline(d.kind)) {
     d.degree = in.Int(node, "degree", at + "degree", 1);
     d.knots = in.Reals(node, "knots", at + "knots");
@@ -165,6 +209,7 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
   }
   m.p1 = in.Real(node, "p1", at + "p1");
   m.p2 = in.Real(node, "p2", at + "p2");
+  if (!node["nonradial"].empty()) m.nonradial = ReadNonRadial(in, node["nonradial"], at + "nonradial.");
   try {
     const Camera check(m);
   } catch (const std::exception& e) {

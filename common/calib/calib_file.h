@@ -1,6 +1,6 @@
 // The calibration file (stereo-calibrate --out): YAML that OpenCV's
 // cv::FileStorage reads directly, with the camera model defined in the
-// README ("The camera model") and repeated in the file's header comment.
+// docs/models.md and repeated in the file's header comment.
 //
 //   cv::FileStorage fs("calib.yaml", cv::FileStorage::READ);
 //   cv::Mat K, R, T;

@@ -19,9 +19,10 @@ const CameraCalibration& Side(const StereoCalibration& s, int side) {
   return side == 0 ? s.left : s.right;
 }
 
-// Values on a grid of image points as a heat map, clipped at `max`.
+// Values on a grid of image points as a heat map, clipped at `max`; NaN
+// values are `missing`.
 plot::Heatmap ImageGridHeatmap(const ImageGrid& grid, std::vector<double> values,
-                               const std::string& label, double max) {
+                               const std::string& label, double max, const std::string& missing) {
   plot::Heatmap map;
   map.cols = grid.cols;
   map.rows = grid.rows;
@@ -32,6 +33,7 @@ plot::Heatmap ImageGridHeatmap(const ImageGrid& grid, std::vector<double> values
   for (double& v : values) v = std::min(v, max);
   map.values = std::move(values);
   map.label = label;
+  map.missing = missing;
   map.max = max;
   return map;
 }
@@ -222,8 +224,7 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
     panel.image_axes = true;
     panel.legend = "below";
     // The scale of the observed field (the unobserved corners can be far larger).
-    panel.heatmap = ImageGridHeatmap(u.grid, u.sigma_px,
-                                     "1-sigma [px]", 2 * u.worst_px);
+    panel.heatmap = ImageGridHeatmap(u.grid, u.sigma_px, "1-sigma [px]", 2 * u.worst_px, "no ray");
     std::vector<double> x, y;
     for (int j = 0; j < u.grid.rows; ++j)
       for (int i = 0; i < u.grid.cols; ++i)
@@ -253,8 +254,7 @@ void WriteProjectionDiffPng(const std::vector<std::pair<std::string, ProjectionD
     panel.legend = "off";
     // Clipped at 3x the median, so the field's structure shows; NaN: not compared.
     const double top = std::max(d.median_px > 0 ? 3 * d.median_px : d.max_px, 1e-6);
-    panel.heatmap = ImageGridHeatmap(d.grid, d.diff_px,
-                                     "difference [px]", top);
+    panel.heatmap = ImageGridHeatmap(d.grid, d.diff_px, "difference [px]", top, "no ray");
   }
   plot::WritePng(figure, png_path);
 }

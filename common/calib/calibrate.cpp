@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 #include "calib/camera_result.h"
 #include "calib/heldout.h"
 #include "calib/mono_solve.h"
+#include "calib/stage_log.h"
 #include "calib/stereo_solve.h"
 #include "models/model_registry.h"
 
@@ -34,10 +37,49 @@ void CheckOptions(const CalibrationOptions& options) {
 int ParseKnots(const std::string& value) {
   if (value == "auto") return kAutoKnots;
   size_t used = 0;
-  const int knots = std::stoi(value, &used);
-  if (used != value.size() || knots < 2 || knots > 64)
+  int knots = 0;
+  try {
+    knots = std::stoi(value, &used);
+  } catch (const std::exception&) {  // std::stoi says only "stoi"
+  }
+  if (used == 0 || used != value.size() || knots < 2 || knots > 64)
     throw std::invalid_argument("knots must be 'auto' or a count from 2 to 64, not '" + value + "'");
   return knots;
+}
+
+void ParseFieldRule(const std::string& value, CalibrationOptions* options) {
+  options->field_cols = options->field_rows = 0;
+  if (value == "auto" || value == "none") {
+    options->nonradial = value == "auto" ? FieldRule::kAuto : FieldRule::kNone;
+    return;
+  }
+  int cols = 0, rows = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(value.c_str(), "%d%c%d%c", &cols, &x, &rows, &extra) != 3 || x != 'x' ||
+      cols < 4 || rows < 4 || cols > 64 || rows > 64)
+    throw std::invalid_argument("--nonradial must be auto, none or COLSxROWS (4 to 64 each, as 8x6), "
+                                "not '" + value + "'");
+  options->nonradial = FieldRule::kGrid;
+  options->field_cols = cols;
+  options->field_rows = rows;
+}
+
+OutlierRule ParseOutlierRule(const std::string& value, double* sigma) {
+  if (value == "auto") return OutlierRule::kChauvenet;
+  if (value == "off") return OutlierRule::kOff;
+  size_t used = 0;
+  double k = -1;
+  try {
+    k = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || !(k >= 0) || !std::isfinite(k))
+    throw std::invalid_argument("--outlier-sigma must be auto, off or a number of sigmas, not '" +
+                                value + "'");
+  if (k == 0) return OutlierRule::kOff;
+  *sigma = k;
+  return OutlierRule::kSigma;
 }
 
 CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options) {
@@ -47,6 +89,9 @@ CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptio
   CameraCalibration result =
       CameraResult(state.problem, 0, state.prepared, state.outcome, state.init_method, options);
   result.knot_curve = state.knot_curve;
+  result.warp_choice = state.warp_choice;
+  result.field_curve = state.field_curve;
+  result.field_chosen = state.field_chosen;
   SetHeldOut(HeldOut(state, options), 0, &result);
   return result;
 }
@@ -75,28 +120,45 @@ namespace {
 
 // ModelCalibrations::chosen: of the models that use the most views (a held-out
 // RMS over fewer views, e.g. a pinhole model's that cannot reach past 90
-// degrees, is not comparable), ordered by parameter count, each fold's RMS
-// pooled over the cameras, ChooseWithinNoise.
+// degrees, is not comparable) and leave out no more corners as outliers than
+// the fewest any of them does plus its Poisson noise (3 sqrt(n + 1): a model
+// that cannot follow the lens leaves out the corners it misses, and would
+// be compared where it can), ordered by parameter count, each fold's RMS on
+// the corners they all kept (FoldRmsOnCommonCorners) pooled over the
+// cameras, ChooseWithinNoise.
 int ChooseModel(const std::vector<StereoCalibration>& solved) {
   for (const auto& c : solved)
     if (c.left.heldout_fold_rms_px.empty() || (!c.mono && c.right.heldout_fold_rms_px.empty()))
       return 0;
   auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
+  auto outliers = [](const StereoCalibration& c) {
+    return c.left.outliers + (c.mono ? 0 : c.right.outliers);
+  };
   int most = 0;
   for (const auto& c : solved) most = std::max(most, views(c));
+  int fewest = INT_MAX;
+  for (const auto& c : solved)
+    if (views(c) == most) fewest = std::min(fewest, outliers(c));
   std::vector<int> order;
   for (size_t i = 0; i < solved.size(); ++i)
-    if (views(solved[i]) == most) order.push_back(int(i));
+    if (views(solved[i]) == most && outliers(solved[i]) <= fewest + 3 * std::sqrt(fewest + 1.0))
+      order.push_back(int(i));
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return solved[a].left.param_names.size() < solved[b].left.param_names.size();
   });
   std::vector<std::vector<double>> folds;
-  for (int i : order) {
-    const StereoCalibration& c = solved[i];
-    std::vector<double> pooled = c.left.heldout_fold_rms_px;
-    for (size_t k = 0; k < pooled.size() && !c.mono && k < c.right.heldout_fold_rms_px.size(); ++k)
-      pooled[k] = std::hypot(pooled[k], c.right.heldout_fold_rms_px[k]) / std::sqrt(2.0);
-    folds.push_back(pooled);
+  for (const bool right : {false, true}) {
+    if (right && solved.front().mono) break;
+    std::vector<const std::vector<HeldOutCorner>*> corners;
+    for (int i : order) corners.push_back(&(right ? solved[i].right : solved[i].left).heldout_corners);
+    const auto rms = FoldRmsOnCommonCorners(corners, 0);
+    if (!right) {
+      folds = rms;
+      continue;
+    }
+    for (size_t i = 0; i < folds.size(); ++i)
+      for (size_t k = 0; k < folds[i].size() && k < rms[i].size(); ++k)
+        folds[i][k] = std::hypot(folds[i][k], rms[i][k]) / std::sqrt(2.0);
   }
   return order[ChooseWithinNoise(folds)];
 }
@@ -138,6 +200,30 @@ std::string KnotChoiceLine(const CameraCalibration& camera) {
          " coefficients chosen by " + std::to_string(camera.heldout_fold_rms_px.size()) +
          "-fold cross-validation (the fewest within the fold-to-fold noise of the lowest "
          "held-out RMS); held-out RMS per count " + curve + " px";
+}
+
+std::string OutlierLine(const CameraCalibration& camera) {
+  if (camera.outliers == 0) return "";
+  std::map<int, int> per_view;
+  for (const CornerResidual& r : camera.residuals) per_view[r.view] += r.outlier;
+  std::string views;
+  for (const auto& [view, count] : per_view)
+    if (count > 0)
+      views += (views.empty() ? "" : ", ") + std::to_string(view) + " (" + std::to_string(count) + ")";
+  return camera.name + ": " + std::to_string(camera.outliers) +
+         " corners left out as outliers, in views " + views;
+}
+
+std::string WarpChoiceLine(const CameraCalibration& camera) {
+  const WarpChoice& w = camera.warp_choice;
+  if (!w.made) return "";
+  auto mm = [&](int k) {
+    return Fixed(1e3 * w.estimated[k], 3) +
+           (w.stddev.size() == 2 ? " +- " + Fixed(1e3 * w.stddev[k], 3) : "") + " mm";
+  };
+  return camera.name + ": board bow " + (w.kept ? "kept" : "left out") + " (held-out RMS " +
+         Fixed(w.warped_heldout_px) + " px with it, " + Fixed(w.flat_heldout_px) +
+         " px flat), x2 " + mm(0) + ", y2 " + mm(1);
 }
 
 std::string UncertaintyLine(const CameraCalibration& camera) {

@@ -24,6 +24,7 @@
 
 #include "calib/board_warp.h"
 #include "calib/calib_data.h"
+#include "calib/heldout_corner.h"
 #include "calib/options.h"
 #include "calib/pose.h"
 #include "calib/projection_uncertainty.h"
@@ -42,6 +43,14 @@ struct KnotTrial {
   std::vector<double> fold_rms_px;
 };
 
+// One candidate of --nonradial auto (mono_solve.h): the camera with a field
+// of cols x rows control points (0 x 0: none), its fitted and held-out RMS.
+struct FieldTrial {
+  int cols = 0, rows = 0;
+  double rms_px = 0;
+  double heldout_rms_px = -1;
+};
+
 // One camera's calibration and its quality.
 struct CameraCalibration {
   std::string name;
@@ -52,7 +61,10 @@ struct CameraCalibration {
   double heldout_rms_px = -1;
   std::vector<double> heldout_fold_rms_px;
   int heldout_extrapolated = 0;           // held-out corners past the training views' field, left out
+  std::vector<HeldOutCorner> heldout_corners;  // camera 0: this one (FoldRmsOnCommonCorners)
   std::vector<KnotTrial> knot_curve;      // --knots auto: every count tried, in order
+  std::vector<FieldTrial> field_curve;    // --nonradial auto: none, then every grid tried
+  int field_chosen = 0;                   // its index in field_curve
   int views = 0;                          // views used
   int points = 0;                         // inlier corners used
   int outliers = 0;                       // corners rejected as outliers
@@ -68,6 +80,7 @@ struct CameraCalibration {
   std::string init_method;                // ZhangIntrinsics' method
   BoardWarp board_warp;                   // the board the fit assumed (free: estimated)
   std::vector<double> board_warp_stddev;  // x2, y2; empty without covariance
+  WarpChoice warp_choice;                 // --board-warp auto: this camera's views' decision
   double max_observed_radius = 0;         // largest ideal radius of an inlier corner
   std::vector<CornerResidual> residuals;  // every corner, outliers flagged
   ResidualGrid grid;
@@ -127,6 +140,15 @@ const StereoCalibration& Chosen(const ModelCalibrations& calibrations);
 // "left: 16 coefficients chosen by 5-fold cross-validation; held-out RMS per
 // count 7: 0.0513, 9: 0.0434, ... px" (--knots auto).
 std::string KnotChoiceLine(const CameraCalibration& camera);
+
+// "left: 51 corners left out as outliers (Chauvenet's criterion, options.h),
+// in views 3 (2), 7 (5), ..."; "" when none were.
+std::string OutlierLine(const CameraCalibration& camera);
+
+// "left: board bow kept (held-out RMS 0.2781 px with it, 0.2803 px flat),
+// x2 0.34 +- 0.05 mm, y2 -0.99 +- 0.06 mm" (--board-warp auto); "" when no
+// choice was made.
+std::string WarpChoiceLine(const CameraCalibration& camera);
 
 // "left: projection uncertainty (1 sigma, worst direction) median 0.012 px,
 // worst 0.045 px over the 412 observed cells of 32 x 24"

@@ -1,7 +1,10 @@
 #include "calib/calibrate_node.h"
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -63,7 +66,13 @@ void CalibrateNode::Start() {
   process_.Every(1000000, [this] { PublishStatus(); });
   if (options_.once && process_.file_input())
     process_.AtEndOfInput([this] {
-      if (!SolveNow(session_.Data(), options_.models, options_.calibration))
+      if (session_.views() == 0)
+        return process_.Fatal("no board in any frame of " + process_.options().in_url +
+                              ": nothing to calibrate. Does stereo-detect's --board match the board? "
+                              "(COLSxROWS counts inner corners: a board of 10x7 squares is 9x6)");
+      std::vector<int64_t> frames;
+      const StereoData data = session_.Data(&frames);
+      if (!SolveNow(data, frames, options_.models, options_.calibration))
         process_.Fatal("no calibration from the views of the log");
     });
   process_.SetProgress([this] {
@@ -186,14 +195,16 @@ void CalibrateNode::SetState(const std::string& state, double rms, double heldou
 
 void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions options) {
   if (solving_.exchange(true)) return process_.ReportError("solve ignored: a solve is running");
+  std::vector<int64_t> frames;
+  StereoData data = session_.Data(&frames);
   if (process_.file_input()) {
-    SolveNow(session_.Data(), models, options);
+    SolveNow(data, frames, models, options);
     if (options_.once) process_.Stop();
     return;
   }
   if (worker_.joinable()) worker_.join();
-  worker_ = std::thread([this, data = session_.Data(), models, options] {
-    const bool ok = SolveNow(data, models, options);
+  worker_ = std::thread([this, data = std::move(data), frames = std::move(frames), models, options] {
+    const bool ok = SolveNow(data, frames, models, options);
     if (options_.once) ok ? process_.Stop() : process_.Fatal("the solve failed");
   });
 }
@@ -217,8 +228,48 @@ void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::stri
   }
 }
 
-bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::string>& models,
-                             const CalibrationOptions& options) {
+std::string CalibrateNode::ViewName(int view, const std::vector<int64_t>& frames) const {
+  const int64_t frame = view >= 0 && view < int(frames.size()) ? frames[size_t(view)] : -1;
+  const auto name = options_.frame_names.find(frame);
+  return "view " + std::to_string(view) + " (" +
+         (name != options_.frame_names.end() ? name->second : "frame " + std::to_string(frame)) + ")";
+}
+
+void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::vector<int64_t>& frames) {
+  static const std::regex kView("view ([0-9]+)");
+  auto named = [&](const std::string& text) {  // every "view N" of a solver's message, named
+    std::string out;
+    auto at = text.cbegin();
+    for (std::sregex_iterator it(text.begin(), text.end(), kView), end; it != end; ++it) {
+      out.append(at, (*it)[0].first);
+      out += ViewName(std::stoi((*it)[1].str()), frames);
+      at = (*it)[0].second;
+    }
+    return out.append(at, text.cend());
+  };
+  for (const CameraCalibration* camera : {&result.left, &result.right}) {
+    if (camera == &result.right && result.mono) break;
+    for (const auto& skipped : camera->skipped) process_.ReportError("warning: " + camera->name + " camera: " + named(skipped));
+    if (camera->outliers == 0) continue;
+    std::map<int, int> per_view;
+    for (const auto& corner : camera->residuals) per_view[corner.view] += corner.outlier;
+    std::string where;
+    for (const auto& [view, count] : per_view)
+      if (count > 0) where += (where.empty() ? "" : ", ") + ViewName(view, frames) + " " + std::to_string(count);
+    process_.ReportError("warning: " + camera->name + " camera: " + std::to_string(camera->outliers) +
+                         " corners left out as outliers: " + where);
+  }
+  for (int view : result.inconsistent_views)
+    process_.ReportError("warning: " + ViewName(view, frames) +
+                         ": the pair does not fit one rig (the board moved between the two exposures, or "
+                         "the images are not a pair): left out of R, T");
+  for (int view : result.half_turned_views)
+    process_.log().Info(ViewName(view, frames) +
+                        ": the right image numbered the symmetric board from the other end: renumbered");
+}
+
+bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
+                             const std::vector<std::string>& models, const CalibrationOptions& options) {
   solving_ = true;
   SetState("solving", -1);
   PublishStatus();
@@ -228,15 +279,18 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
   bool ok = false;
   double rms = -1, heldout = -1;
   try {
-    CalibrationOptions logged = options;  // every stage in the detail log
-    logged.progress = [this](const std::string& line) { process_.log().Detail(line); };
+    // Every stage in the log file; on the terminal as the progress line, at
+    // most one a second.
+    CalibrationOptions logged = options;
+    logged.progress = [this, shown = std::chrono::steady_clock::time_point()](const std::string& line) mutable {
+      process_.log().Detail(line);
+      const auto now = std::chrono::steady_clock::now();
+      if (now - shown < std::chrono::seconds(1)) return;
+      shown = now;
+      process_.log().Progress("solving: " + line);
+    };
     const ModelCalibrations results = CalibrateStereoAllModels(data, logged, models);
     const StereoCalibration& primary = Chosen(results);
-    if (primary.mono)  // STEREO_CALIBRATION is a rig's message
-      process_.log().Info("one-camera rig: nothing to publish on " +
-                          std::string(channel::kStereoCalibration));
-    else
-      PublishCalibration(process_, ToMessage(primary, process_.Now()));
     for (const auto& failure : results.failed)
       process_.ReportError(failure.model + " failed: " + failure.error);
     for (const auto& r : results.solved) {
@@ -251,6 +305,8 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right}) {
         if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
+        for (const std::string& line : {OutlierLine(*camera), WarpChoiceLine(*camera)})
+          if (!line.empty()) process_.log().Info(r.model + " " + line);
         if (camera->uncertainty.median_px >= 0)
           process_.log().Info(r.model + " " + UncertaintyLine(*camera));
       }
@@ -258,15 +314,19 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<std::stri
         for (const auto& skipped : camera->skipped)
           process_.log().Detail(camera->name + " " + skipped);
     }
-    if (results.solved.size() > 1) {
-      std::istringstream table(FormatTableII(TableRows(results.solved, results.chosen)));
-      for (std::string line; std::getline(table, line);) process_.log().Info(line);
-    }
+    std::istringstream table(FormatTableII(TableRows(results.solved, results.chosen)));
+    for (std::string line; std::getline(table, line);) process_.log().Info(line);
+    ReportLeftOut(primary, frames);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       last_ = results;
     }
-    WriteFiles(results, options_.out_yaml, options_.report_json);
+    WriteFiles(results, options_.out_yaml, options_.report_json);  // throws: nothing is published
+    if (primary.mono)  // STEREO_CALIBRATION is a rig's message
+      process_.log().Info("one-camera rig: nothing to publish on " +
+                          std::string(channel::kStereoCalibration));
+    else
+      PublishCalibration(process_, ToMessage(primary, process_.Now()));
     if (!options_.plot_dir.empty()) {
       try {  // a figure that cannot be drawn (no gnuplot) costs no calibration
         std::filesystem::create_directories(options_.plot_dir);

@@ -14,13 +14,17 @@
 //    when replaying a log): state (collecting, solving, solved, failed),
 //    views per camera, coverage grids, RMS of the last solve (-1: none) and
 //    a hint for the person holding the board.
-//  - After a solve: STEREO_CALIBRATION (the first model asked for), the
-//    calibration file (--out; with several models also one per model,
-//    calib.poly6.yaml), the report (--report), the figures
-//    (--plot-dir: distortion_curves.png, residual_map.png) and, with several
-//    models, Table II on the terminal and in the log.
+//  - After a solve: the calibration file (--out; with several models also
+//    one per model, calib.poly6.yaml), the report (--report), the figures
+//    (--plot-dir: distortion_curves.png, residual_map.png), Table II and
+//    every warning that changes the result (views left out, outliers,
+//    models that failed; named by their images when frame_names has them)
+//    on the terminal and in the log; then, once the calibration file is
+//    written, STEREO_CALIBRATION (the model chosen, calibrate.h's Chosen).
+//    A calibration whose file cannot be written is not published.
 //  - --once: solve when a file:// input ends (or at the first solve command),
-//    then exit; exit code 1 when that solve or writing its files fails.
+//    then exit; exit code 1 when there is no view, or that solve or writing
+//    its files fails.
 //
 // Replaying a log, solves run in the message handler, so the same log gives
 // the same output; live they run on a worker thread so that the status keeps
@@ -28,6 +32,8 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -41,12 +47,15 @@
 namespace ws::calib {
 
 struct NodeOptions {
-  std::vector<std::string> models{"bspline"};  // solved in this order; the first is published
+  std::vector<std::string> models{"bspline"};  // solved in this order
   CalibrationOptions calibration;
   SessionOptions session;
   std::string out_yaml, report_json, plot_dir;
   std::string rig_name;  // in the figures' titles; empty: the --out file's name
   bool once = false;
+  // The images each STEREO_CORNERS frame id came from (--images), to name
+  // views in messages; without a name a view is "view 3 (frame 7)".
+  std::map<int64_t, std::string> frame_names;
 };
 
 // "all" -> every registered kind; else the one kind (checked).
@@ -65,10 +74,16 @@ class CalibrateNode {
   void OnCommand(const widestereo::command_t& msg);
   void PublishStatus();
   void Solve(std::vector<std::string> models, CalibrationOptions options);
-  // Solves and writes every output; false (after reporting why) when the
-  // solve or writing the calibration file or report failed.
-  bool SolveNow(const StereoData& data, const std::vector<std::string>& models,
-                const CalibrationOptions& options);
+  // Solves the views (`frames`: the frame id of each), writes every output
+  // and publishes; false (after reporting why) when the solve or writing the
+  // calibration file or report failed.
+  bool SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
+                const std::vector<std::string>& models, const CalibrationOptions& options);
+  // "view 3 (left04.jpg + right04.jpg)", or "view 3 (frame 7)" without names.
+  std::string ViewName(int view, const std::vector<int64_t>& frames) const;
+  // The warnings of the published calibration that change the result: views
+  // left out (of a camera, of R, T), outliers, renumbered boards.
+  void ReportLeftOut(const StereoCalibration& result, const std::vector<int64_t>& frames);
   // The calibration file and report of `results`; throws when one cannot be written.
   void WriteFiles(const ModelCalibrations& results, const std::string& yaml,
                   const std::string& json);

@@ -219,8 +219,10 @@ std::vector<std::string> CalibrationSession::ArchiveFiles() const {
   return archives;
 }
 
-StereoData CalibrationSession::Data() const {
+StereoData CalibrationSession::Data(std::vector<int64_t>* frame_ids) const {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (frame_ids)
+    for (const auto& msg : accepted_) frame_ids->push_back(msg.frame_id);
   return data_;
 }
 

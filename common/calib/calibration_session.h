@@ -75,7 +75,8 @@ class CalibrationSession {
   // std::runtime_error when there is no archive or a file cannot be moved.
   std::string RestoreLastArchive(int64_t wall_us);
 
-  StereoData Data() const;
+  // The views, and with `frame_ids` the STEREO_CORNERS frame id of each.
+  StereoData Data(std::vector<int64_t>* frame_ids = nullptr) const;
   int views() const;
   int duplicates() const;
   widestereo::calibration_status_t Status(int64_t utime, const std::string& state,

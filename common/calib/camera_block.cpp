@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calib/nonradial_prior.h"
 #include "calib/smoothness_prior.h"
 #include "models/bspline_basis.h"
 
@@ -58,11 +59,33 @@ CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& option
         if constexpr (kIsBspline<Model>) {
           const Model spline = Model::ForCalibration(SetupFor(options, r_max));
           out.coeffs = RefitSpline(camera, spline, r_max);
+          out.coeffs.insert(out.coeffs.end(), camera.coeffs.begin() + model.NumCoeffs(),
+                            camera.coeffs.end());  // the field stays as it was
           out.model = spline;
           out.prior_weight = SmoothnessWeight(options.smoothness, camera.intrinsics[kFx], r_max);
         }
       },
       camera.model);
+  if (!out.field.empty()) out.field_prior = NonRadialPrior(out, options.smoothness);
+  return out;
+}
+
+CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, int width,
+                               int height, double lambda) {
+  CameraBlock out = camera;
+  out.coeffs.resize(NumRadialCoeffs(camera));
+  out.field = NonRadialField();
+  out.field_prior.resize(0, 0);
+  if (cols == 0) return out;
+  const double* in = camera.intrinsics.data();
+  const double margin_u = 0.01 * width, margin_v = 0.01 * height;
+  out.field = NonRadialField(cols, rows,
+                             {(-0.5 - margin_u - in[kCx]) / in[kFx],
+                              (width - 0.5 + margin_u - in[kCx]) / in[kFx],
+                              (-0.5 - margin_v - in[kCy]) / in[kFy],
+                              (height - 0.5 + margin_v - in[kCy]) / in[kFy]});
+  out.coeffs.resize(out.coeffs.size() + out.field.NumCoeffs(), 0.0);
+  out.field_prior = NonRadialPrior(out, lambda);
   return out;
 }
 
@@ -91,7 +114,12 @@ std::vector<std::string> ParamNames(const CameraBlock& camera) {
         for (int i = 0; i < m.NumCoeffs(); ++i) names.push_back(m.CoeffName(i));
       },
       camera.model);
+  for (int k = 0; k < camera.field.NumCoeffs(); ++k) names.push_back(camera.field.CoeffName(k));
   return names;
+}
+
+int NumRadialCoeffs(const CameraBlock& camera) {
+  return std::visit([](const auto& m) { return m.NumCoeffs(); }, camera.model);
 }
 
 CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_height) {
@@ -106,6 +134,7 @@ CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_
   m.p2 = camera.intrinsics[kP2];
   m.distortion = std::visit([&](const auto& model) { return model.ToData(camera.coeffs.data()); },
                             camera.model);
+  m.nonradial = camera.field.ToData(camera.coeffs.data() + NumRadialCoeffs(camera));
   return m;
 }
 
@@ -121,7 +150,8 @@ std::optional<Eigen::Vector2d> ProjectPoint(const CameraBlock& camera, const Eig
   Eigen::Vector2d pixel;
   const bool in_front = std::visit(
       [&](const auto& m) {
-        return Project(m, camera.intrinsics.data(), camera.coeffs.data(), X.data(), pixel.data());
+        return Project(m, camera.field, camera.intrinsics.data(), camera.coeffs.data(), X.data(),
+                       pixel.data());
       },
       camera.model);
   if (!in_front) return std::nullopt;
@@ -129,12 +159,11 @@ std::optional<Eigen::Vector2d> ProjectPoint(const CameraBlock& camera, const Eig
 }
 
 std::optional<Eigen::Vector2d> IdealPoint(const CameraBlock& camera, const Eigen::Vector2d& pixel) {
-  const double* in = camera.intrinsics.data();
-  const double distorted[2] = {(pixel.x() - in[kCx]) / in[kFx], (pixel.y() - in[kCy]) / in[kFy]};
   Eigen::Vector2d ideal;
   const bool ok = std::visit(
       [&](const auto& m) {
-        return Undistort(m, camera.coeffs.data(), in[kP1], in[kP2], distorted, ideal.data());
+        return IdealOfPixel(m, camera.field, camera.intrinsics.data(), camera.coeffs.data(),
+                            pixel.data(), ideal.data());
       },
       camera.model);
   if (!ok) return std::nullopt;
@@ -145,8 +174,8 @@ std::optional<Eigen::Vector3d> PixelRay(const CameraBlock& camera, const Eigen::
   Eigen::Vector3d ray;
   const bool ok = std::visit(
       [&](const auto& m) {
-        return Unproject(m, camera.intrinsics.data(), camera.coeffs.data(), pixel.data(),
-                         ray.data());
+        return Unproject(m, camera.field, camera.intrinsics.data(), camera.coeffs.data(),
+                         pixel.data(), ray.data());
       },
       camera.model);
   if (!ok) return std::nullopt;

@@ -21,8 +21,10 @@ struct CameraBlock {
   explicit CameraBlock(AnyDistortionModel model) : model(std::move(model)) {}
 
   AnyDistortionModel model;
+  NonRadialField field;  // the non-radial part (nonradial_field.h); empty: none
+  Eigen::MatrixXd field_prior;  // its prior (nonradial_prior.h), fixed with the field
   std::array<double, kNumIntrinsics> intrinsics{};
-  std::vector<double> coeffs;  // model's NumCoeffs()
+  std::vector<double> coeffs;  // model's NumCoeffs(), then field's NumCoeffs()
   bool fixed = false;          // intrinsics and coefficients constant
   bool pinhole_only = false;   // coefficients constant, p1 = p2 = 0 held
   int free_coeffs = -1;        // only coeffs[0 .. free_coeffs) free; -1: all
@@ -44,13 +46,24 @@ CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& opti
 // r_max, everything free.
 CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
 
+// The same camera with a non-radial field of cols x rows control points
+// (nonradial_field.h; 0 x 0: none) over its image of width x height pixels
+// as the camera sees it (the distorted normalized rectangle, 1 % wider each
+// side), starting at F = 0, with its prior (nonradial_prior.h) at the
+// camera's parameters and the smoothness weight lambda.
+CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, int width,
+                               int height, double lambda);
+
 std::string Kind(const CameraBlock& camera);
 // A B-spline's field end r_max (its last knot); 0 for the polynomials.
 double FieldEnd(const CameraBlock& camera);
 // Whether the model is a B-spline (bspline, bspline_theta).
 bool IsSpline(const CameraBlock& camera);
-// fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..).
+// fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..),
+// then the field's (field_x_0_0..).
 std::vector<std::string> ParamNames(const CameraBlock& camera);
+// The radial model's estimated coefficients, the first of camera.coeffs.
+int NumRadialCoeffs(const CameraBlock& camera);
 CameraModel ToCameraModel(const CameraBlock& camera, int image_width, int image_height);
 bool AllFinite(const CameraBlock& camera);
 

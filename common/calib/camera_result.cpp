@@ -74,6 +74,12 @@ void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out) {
   out->heldout_rms_px = cv.rms_px[camera];
   out->heldout_fold_rms_px = cv.fold_rms_px[camera];
   out->heldout_extrapolated = cv.extrapolated[camera];
+  out->heldout_corners.clear();
+  for (HeldOutCorner h : cv.corners)
+    if (h.camera == camera) {
+      h.camera = 0;
+      out->heldout_corners.push_back(h);
+    }
 }
 
 }  // namespace ws::calib

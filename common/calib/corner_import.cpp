@@ -1,10 +1,13 @@
 #include "calib/corner_import.h"
 
 #include <cmath>
+#include <optional>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <utility>
+
+#include "calib/glob_captures.h"
 
 namespace ws::calib {
 namespace {
@@ -122,34 +125,31 @@ CameraData ReadBabelCalibViews(const std::string& dsc_path,
   return data;
 }
 
-CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, double square,
-                            int image_width, int image_height, std::vector<std::string>* names) {
-  if (cols < 2 || rows < 2 || !(square > 0) || image_width <= 0 || image_height <= 0)
-    throw CornerImportError(vnl_path + ": the board and image size must be positive");
+std::vector<NamedView> ReadMrcalViews(const std::string& vnl_path, int cols, int rows, double square) {
+  if (cols < 2 || rows < 2 || !(square > 0))
+    throw CornerImportError(vnl_path + ": the board must have at least 2 x 2 corners and a positive square");
   Lines lines(vnl_path);
-  CameraData data;
-  data.name = "left";
-  data.image_width = image_width;
-  data.image_height = image_height;
-  std::string line, current;
+  std::vector<NamedView> views;
+  std::string line;
   int index = 0;           // corner of the current image
   bool no_board = false;   // the current image is one "NAME - - -" line
   auto complete = [&] { return index == cols * rows || (index == 1 && no_board); };
+  auto require_complete = [&] {
+    if (index != 0 && !complete())
+      lines.Fail(views.back().name + " has " + std::to_string(index) + " corners, not " +
+                 std::to_string(cols * rows));
+  };
   while (lines.Next(&line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
     std::string name, x, y, level, extra;
     if (!(fields >> name >> x >> y >> level) || (fields >> extra))
       lines.Fail("four fields expected: filename x y level");
-    if (name != current || index == cols * rows) {
-      if (index != 0 && !complete())
-        lines.Fail(current + " has " + std::to_string(index) + " corners, not " +
-                   std::to_string(cols * rows));
+    if (views.empty() || name != views.back().name || index == cols * rows) {
+      require_complete();
       no_board = x == "-" && y == "-";
-      current = name;
       index = 0;
-      data.views.emplace_back();
-      if (names) names->push_back(name);
+      views.push_back({name, {}});
     }
     const int id = index++;
     if (x == "-" || y == "-" || level == "-") continue;
@@ -157,7 +157,7 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
       size_t ux = 0, uy = 0;
       const Eigen::Vector2d p(std::stod(x, &ux), std::stod(y, &uy));
       if (ux != x.size() || uy != y.size() || !p.allFinite()) throw std::invalid_argument(x);
-      BoardView& view = data.views.back();
+      BoardView& view = views.back().view;
       view.ids.push_back(id);
       view.object.emplace_back((id % cols) * square, (id / cols) * square, 0.0);
       view.image.push_back(p);
@@ -165,10 +165,60 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
       lines.Fail("x and y must be numbers or '-'");
     }
   }
-  if (index != 0 && !complete())
-    lines.Fail(current + " has " + std::to_string(index) + " corners, not " +
-               std::to_string(cols * rows));
+  require_complete();
+  return views;
+}
+
+CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, double square,
+                            int image_width, int image_height, std::vector<std::string>* names) {
+  if (image_width <= 0 || image_height <= 0)
+    throw CornerImportError(vnl_path + ": the image size must be positive");
+  CameraData data;
+  data.name = "left";
+  data.image_width = image_width;
+  data.image_height = image_height;
+  for (NamedView& named : ReadMrcalViews(vnl_path, cols, rows, square)) {
+    if (names) names->push_back(named.name);
+    data.views.push_back(std::move(named.view));
+  }
   return data;
+}
+
+PairedViews PairMrcalViews(const std::vector<NamedView>& views, const std::string& left_glob,
+                           const std::string& right_glob, int image_width, int image_height) {
+  if (image_width <= 0 || image_height <= 0) throw CornerImportError("the image size must be positive");
+  if (GlobStars(left_glob) != GlobStars(right_glob))
+    throw CornerImportError("the globs '" + left_glob + "' and '" + right_glob +
+                            "' must have as many '*' as each other: their matches name the frame");
+  PairedViews paired;
+  std::map<std::vector<std::string>, size_t> frame_of;  // the `*` texts -> frame index
+  for (const NamedView& named : views) {
+    const auto left = GlobCaptures(left_glob, named.name);
+    const auto right = GlobCaptures(right_glob, named.name);
+    if (left && right)
+      throw CornerImportError(named.name + " matches both '" + left_glob + "' and '" + right_glob + "'");
+    if (!left && !right) {
+      ++paired.unmatched;
+      continue;
+    }
+    const auto [at, added] = frame_of.emplace(left ? *left : *right, paired.data.size());
+    if (added) {
+      paired.data.Add({}, {});
+      paired.left_names.emplace_back();
+      paired.right_names.emplace_back();
+    }
+    std::string& slot = (left ? paired.left_names : paired.right_names)[at->second];
+    if (!slot.empty())
+      throw CornerImportError(named.name + " and " + slot + " fall in the same frame of the " +
+                              (left ? "left" : "right") + " camera");
+    slot = named.name;
+    (left ? paired.data.left : paired.data.right).views[at->second] = named.view;
+  }
+  for (CameraData* camera : {&paired.data.left, &paired.data.right}) {
+    camera->image_width = image_width;
+    camera->image_height = image_height;
+  }
+  return paired;
 }
 
 }  // namespace ws::calib

@@ -97,7 +97,7 @@ bool NearDuplicate(const BoardView& candidate, const BoardView& existing, double
   }
   const int most = std::max(candidate.size(), existing.size());
   if (common < 0.8 * most || common == 0) return false;
-  return distance / common < threshold_px;
+  return distance / common <= threshold_px;
 }
 
 }  // namespace ws::calib

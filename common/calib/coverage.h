@@ -39,7 +39,8 @@ std::string CoverageHint(const CoverageStatus& status, int min_views);
 
 // True when `candidate` shows the board where `existing` does: at least 80 %
 // of the corners in common, and their mean image distance below
-// `threshold_px`. Two empty views are duplicates; an empty and a non-empty
+// `threshold_px` (or equal to it: a threshold of 0 takes only the same
+// corners). Two empty views are duplicates; an empty and a non-empty
 // view are not.
 bool NearDuplicate(const BoardView& candidate, const BoardView& existing, double threshold_px);
 

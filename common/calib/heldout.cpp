@@ -6,7 +6,9 @@
 #include <numeric>
 
 #include <Eigen/Dense>
+#include <map>
 #include <optional>
+#include <tuple>
 
 #include "calib/covariance.h"
 #include "calib/pose_fit.h"
@@ -18,6 +20,9 @@ CameraBlock FixedBlock(const CameraModel& model) {
   block.intrinsics = model.Intrinsics();
   block.coeffs = std::visit([&](const auto& m) { return m.EstimatedCoeffs(model.distortion.coeffs); },
                             block.model);
+  block.field = NonRadialField::FromData(model.nonradial);
+  block.coeffs.insert(block.coeffs.end(), model.nonradial.coeffs.begin(),
+                      model.nonradial.coeffs.end());
   block.fixed = true;
   return block;
 }
@@ -132,14 +137,17 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       S_all += pose.S;
       b_all += pose.b;
     }
-  // Each residual pair's corner: its distance from its camera's principal
-  // point (a block holds its observation's inlier corners in order).
+  // Each residual pair's corner: its index and distance from its camera's
+  // principal point (a block holds its observation's inlier corners in order).
   std::vector<std::vector<double>> radius(lin.blocks.size());
+  std::vector<std::vector<int>> corner(lin.blocks.size());
   for (size_t b = 0; b < lin.blocks.size(); ++b) {
     const Observation& o = problem.observations[lin.blocks[b].observation];
     for (int i = 0; i < o.corners->size(); ++i)
-      if ((*o.inliers)[i])
+      if ((*o.inliers)[i]) {
         radius[b].push_back(PixelRadius(problem.cameras[o.camera], o.corners->image[i]));
+        corner[b].push_back(i);
+      }
   }
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);
@@ -191,8 +199,10 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
             ++cv.extrapolated[camera];
             continue;
           }
-          fold_sum[camera] += held_out.segment<2>(2 * j).squaredNorm();
+          const double squared = held_out.segment<2>(2 * j).squaredNorm();
+          fold_sum[camera] += squared;
           ++fold_count[camera];
+          cv.corners.push_back({camera, pose.view, corner[pose.blocks[i]][j], k, squared});
         }
       }
     }
@@ -207,6 +217,40 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
     cv.rms_px.push_back(count[c] ? std::sqrt(sum[c] / count[c]) : -1.0);
   if (cv.folds < 2) cv = CrossValidation{};
   return cv;
+}
+
+std::vector<std::vector<double>> FoldRmsOnCommonCorners(
+    const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera) {
+  using Key = std::tuple<int, int>;  // view, corner
+  struct Seen {
+    int count = 0, fold = 0;
+  };
+  std::map<Key, Seen> seen;
+  for (size_t c = 0; c < candidates.size(); ++c)
+    for (const HeldOutCorner& h : *candidates[c]) {
+      if (h.camera != camera) continue;
+      Seen& s = seen[{h.view, h.index}];
+      if (c == 0) s.fold = h.fold;
+      ++s.count;  // a corner is held out once per cross-validation
+    }
+  int folds = 0;
+  for (const auto& [key, s] : seen) folds = std::max(folds, s.fold + 1);
+  std::vector<std::vector<double>> out;
+  for (const auto* corners : candidates) {
+    std::vector<double> sum(folds, 0.0);
+    std::vector<int> count(folds, 0);
+    for (const HeldOutCorner& h : *corners) {
+      if (h.camera != camera) continue;
+      const Seen& s = seen.at({h.view, h.index});
+      if (s.count != int(candidates.size())) continue;
+      sum[s.fold] += h.squared;
+      ++count[s.fold];
+    }
+    std::vector<double> rms(folds);
+    for (int k = 0; k < folds; ++k) rms[k] = count[k] ? std::sqrt(sum[k] / count[k]) : 0.0;
+    out.push_back(rms);
+  }
+  return out;
 }
 
 int ChooseWithinNoise(const std::vector<std::vector<double>>& fold_rms) {

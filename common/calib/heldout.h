@@ -10,6 +10,7 @@
 #include "calib/board_warp.h"
 #include "calib/calib_data.h"
 #include "calib/camera_block.h"
+#include "calib/heldout_corner.h"
 #include "calib/problem.h"
 #include "models/camera_model.h"
 
@@ -55,7 +56,7 @@ HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, i
 // whole cross-validation then costs one Jacobian of the solved problem and
 // one small dense solve per fold, not K solves. Measured against the folds
 // it replaces (five Levenberg-Marquardt steps each, then the held-out poses
-// solved) in README "Calibration": equal to 1e-4 px near the chosen count;
+// solved) in docs/calibration.md: equal to 1e-4 px near the chosen count;
 // a model far from the lens or not determined by its views reads higher,
 // since the step is not damped.
 struct CrossValidation {
@@ -65,9 +66,17 @@ struct CrossValidation {
   std::vector<double> rms_px;
   std::vector<std::vector<double>> fold_rms_px;
   std::vector<int> extrapolated;  // per camera: held-out corners left out (above)
+  std::vector<HeldOutCorner> corners;  // every held-out corner
 };
 // Throws CalibrationError if the solved problem cannot be evaluated.
 CrossValidation CrossValidate(const Problem& solved, int folds);
+
+// Candidates that left out different outliers (other models, the board
+// bowed or flat, a field or none) compared on the same corners: per
+// candidate, camera `camera`'s per-fold RMS over the held-out corners that
+// every candidate kept. Folds as the first candidate dealt them.
+std::vector<std::vector<double>> FoldRmsOnCommonCorners(
+    const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera);
 
 // Of candidates in order of complexity, each with its per-fold held-out RMS
 // (the same folds for all), the least complex whose excess over the best

@@ -84,17 +84,148 @@ SolveSettings StageSettings(const CalibrationOptions& options, const std::string
 }
 
 // The last stages on every inlier corner: the camera's final problem (and
-// the board's warp with options.board_warp), solved with outlier rejection
-// (and standard deviations).
+// the board's warp with WarpRule::kEstimated), solved with outlier
+// rejection (and standard deviations).
 void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, const std::string& what,
               MonoState* s) {
   s->problem = MaskedProblem(camera, s, &s->inliers, 1);
-  s->problem.warp.free = options.board_warp;
+  s->problem.warp.free = options.board_warp == WarpRule::kEstimated;
   s->outcome = SolveWithRejection(s->problem, options, what);
   s->warp = s->problem.warp;
-  if (options.board_warp)
+  if (s->warp.free)
     Say(options, what + ": board bow x2 " + Fixed(1e3 * s->warp.data[0], 3) + " mm, y2 " +
                      Fixed(1e3 * s->warp.data[1], 3) + " mm");
+}
+
+// A final solve of the camera and its cross-validation, kept aside while
+// other candidates are solved (ChooseWarp, ChooseField).
+struct FinalSolve {
+  CameraBlock camera;
+  BoardWarp warp;
+  std::vector<Pose> poses;
+  Inliers inliers;
+  SolveOutcome outcome;
+  CrossValidation heldout;
+};
+
+FinalSolve Keep(const MonoState& s) {
+  return {s.problem.cameras[0], s.warp, s.poses, s.inliers, s.outcome, s.heldout};
+}
+
+void Restore(const FinalSolve& kept, MonoState* s) {
+  s->warp = kept.warp;
+  s->poses = kept.poses;
+  s->inliers = kept.inliers;
+  s->problem = MaskedProblem(kept.camera, s, &s->inliers, 1);
+  s->problem.warp.free = kept.warp.free;
+  s->outcome = kept.outcome;
+  s->heldout = kept.heldout;
+}
+
+// A candidate of ChooseWarp or ChooseField: `camera` (the board's bow free
+// or held) solved on the corners as they stand, so that every candidate is
+// fitted and cross-validated on the same corners; to the ranking tolerance.
+FinalSolve SolveCandidate(const CameraBlock& camera, bool warp_free,
+                          const CalibrationOptions& options, const std::string& what,
+                          MonoState* s) {
+  s->problem = MaskedProblem(camera, s, &s->inliers, 1);
+  s->problem.warp.free = warp_free;
+  SolveSettings settings = StageSettings(options, what, options.max_iterations);
+  settings.tolerance = kRankingTolerance;
+  s->outcome = Solve(s->problem, settings);
+  s->warp = s->problem.warp;
+  s->heldout = CrossValidate(s->problem, options.cv_folds);
+  return Keep(*s);
+}
+
+// Of candidates solved on the same corners, the simplest first, the one
+// ChooseWithinNoise keeps by their per-fold held-out RMS.
+int ChooseCandidate(const std::vector<FinalSolve>& candidates) {
+  std::vector<std::vector<double>> folds;
+  for (const FinalSolve& c : candidates) folds.push_back(c.heldout.fold_rms_px[0]);
+  return ChooseWithinNoise(folds);
+}
+
+// --board-warp auto (options.h, WarpRule::kAuto): the solved flat camera
+// solved again with the board's bow free on the same corners, both
+// cross-validated on the same folds; the bow is kept only where
+// ChooseWithinNoise prefers it to the flat board.
+void ChooseWarp(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+  if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
+  if (!s->heldout.folds) return;  // too few views to cross-validate: the board stays flat
+  const FinalSolve flat = Keep(*s);
+  const FinalSolve warped = SolveCandidate(flat.camera, true, options, what + " with the bow", s);
+  WarpChoice& choice = s->warp_choice;
+  choice.made = warped.heldout.folds == flat.heldout.folds;
+  choice.flat_heldout_px = flat.heldout.rms_px[0];
+  choice.warped_heldout_px = warped.heldout.folds ? warped.heldout.rms_px[0] : -1;
+  choice.estimated = warped.warp.data;
+  SolveOutcome with_stddev;
+  EstimateStddev(s->problem, StageSettings(options, what, options.max_iterations), &with_stddev);
+  choice.stddev = with_stddev.stddev_warp;
+  choice.kept = choice.made && ChooseCandidate({flat, warped}) == 1;
+  Say(options, what + ": board bow " + (choice.kept ? "kept" : "left out") + ", held-out RMS " +
+                   Fixed(choice.warped_heldout_px) + " px with it, " +
+                   Fixed(choice.flat_heldout_px) + " px flat");
+  if (!choice.kept) Restore(flat, s);
+}
+
+// The rows of a field of `cols` control points across an image of this
+// aspect: as many per unit length, at least NonRadialField's minimum.
+int FieldRows(int cols, int width, int height) {
+  return std::max(NonRadialField::kDegree + 1, int(std::lround(cols * double(height) / width)));
+}
+
+// --nonradial (options.h, FieldRule): a given grid; or, auto, every grid of
+// kFieldLadder solved from the radial camera with F = 0 on the same corners
+// and cross-validated (the held-out RMS need not fall steadily: a grid
+// whose knots miss the pattern can do worse than a coarser one); then the
+// simplest of "none" and them within the fold-to-fold noise of the best.
+void ChooseField(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+  const Prepared& p = s->prepared;
+  const bool warp_free = s->warp.free;
+  const CameraBlock radial = s->problem.cameras[0];
+  auto solve = [&](int cols, int rows) {
+    return SolveCandidate(
+        WithNonRadialField(radial, cols, rows, p.width, p.height, options.smoothness), warp_free,
+        options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) + " field",
+        s);
+  };
+  if (options.nonradial == FieldRule::kGrid) {
+    solve(options.field_cols, options.field_rows);
+    return;
+  }
+  if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
+  if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
+  std::vector<FinalSolve> candidates = {Keep(*s)};
+  s->field_curve.push_back({0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
+  for (int cols : kFieldLadder) {
+    const int rows = FieldRows(cols, p.width, p.height);
+    Restore(candidates[0], s);
+    try {
+      candidates.push_back(solve(cols, rows));
+    } catch (const CalibrationError& e) {
+      Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
+                       " field: " + e.what());
+      break;
+    }
+    if (s->heldout.folds != candidates[0].heldout.folds) {
+      candidates.pop_back();
+      break;
+    }
+    s->field_curve.push_back({cols, rows, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
+    Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
+                     " field: rms " + Fixed(s->field_curve.back().rms_px) + " px, held-out " +
+                     Fixed(s->heldout.rms_px[0]) + " px");
+  }
+  const int chosen = ChooseCandidate(candidates);
+  s->field_chosen = chosen;
+  Say(options, what + ": non-radial field " +
+                   (chosen == 0 ? std::string("none")
+                                : std::to_string(s->field_curve[chosen].cols) + " x " +
+                                      std::to_string(s->field_curve[chosen].rows)) +
+                   " chosen (the simplest within the fold-to-fold noise of the best held-out RMS)");
+  Restore(candidates[chosen], s);
 }
 
 // --knots auto (options.h): each count of kKnotLadder solved on every
@@ -150,13 +281,17 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
 
 void SolveMono(const CameraData& data, const BoardExtent& board,
                const CalibrationOptions& requested, MonoState* s) {
+  // The model (knots, the board's bow, the field) is chosen on every corner
+  // and with no standard deviations; the final solve leaves out the chosen
+  // model's outliers (a weaker model's systematic misfit would otherwise
+  // pass for outliers and hide what a richer one gains).
+  CalibrationOptions choosing = requested;
+  choosing.outliers = OutlierRule::kOff;
+  choosing.covariance = false;
   // --knots auto: the continuation runs on the ladder's first count.
-  CalibrationOptions options = requested;
+  CalibrationOptions options = choosing;
   const bool auto_knots = options.knots == kAutoKnots;
-  if (auto_knots) {
-    options.knots = kContinuationKnots;
-    options.covariance = false;  // the chosen count's, at the end
-  }
+  if (auto_knots) options.knots = kContinuationKnots;
   s->prepared = Prepare(data, options);
   s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
@@ -244,12 +379,14 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
-  if (auto_knots && IsSpline(s->problem.cameras[0])) {
-    ChooseKnots(requested, what, s);
-  } else if (auto_knots && requested.covariance) {
-    EstimateStddev(s->problem, StageSettings(requested, what, requested.max_iterations),
-                   &s->outcome);
-  }
+  if (auto_knots && IsSpline(s->problem.cameras[0])) ChooseKnots(choosing, what, s);
+  if (requested.board_warp == WarpRule::kAuto) ChooseWarp(choosing, what, s);
+  if (requested.nonradial != FieldRule::kNone) ChooseField(choosing, what, s);
+  // The final solve: the chosen model, its outliers left out.
+  CalibrationOptions final_solve = requested;
+  final_solve.board_warp = s->warp.free ? WarpRule::kEstimated : WarpRule::kFlat;
+  SolveAll(s->problem.cameras[0], final_solve, what, s);
+  s->heldout = CrossValidate(s->problem, requested.cv_folds);
 }
 
 CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options) {

@@ -37,11 +37,14 @@ struct MonoState {
   std::string init_method;  // PinholeInit::method
   std::vector<KnotTrial> knot_curve;  // --knots auto: every count tried
   CrossValidation heldout;            // of the last solve, when --knots auto ran it
+  WarpChoice warp_choice;             // --board-warp auto
+  std::vector<FieldTrial> field_curve;  // --nonradial auto: "none", then every grid tried
+  int field_chosen = 0;                 // its index in field_curve
 };
 
 // Calibrates the camera of `data` into *state; `board` is the extent of the
-// board (board_warp.h), the warp estimated in the final solve with
-// options.board_warp. Throws CalibrationError.
+// board (board_warp.h), the warp estimated in the final solve or chosen by
+// the held-out RMS as options.board_warp says. Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
                MonoState* state);
 

@@ -15,6 +15,39 @@ enum class StereoFlow {
 
 enum class RobustLoss { kNone, kHuber, kCauchy };
 
+// Which corners are outliers after a solve (outliers.h): those farther from
+// their projection than a threshold of the camera's robust noise level
+// sigma (RobustSigma, quality.h: from the median corner error).
+enum class OutlierRule {
+  kOff,        // every corner kept
+  // The default, Chauvenet's criterion with an alarm, as mrcal iterates its
+  // own (mrcal.c markOutliers: 4 sigma, once a corner is past 5 sigma).
+  // sigma is the per-coordinate RMS of the inliers' residuals. A solve is
+  // contaminated when a corner lies beyond the alarm level, which N corners
+  // of Gaussian noise pass with 1 % probability,
+  //   t_alarm = sigma sqrt(2 ln 100N)   (N P(|e| > t) = 0.01,
+  //                                      P(|e| > t) = exp(-t^2 / 2 sigma^2));
+  // then every corner beyond Chauvenet's level, which the noise passes
+  // half a corner's worth, t = sigma sqrt(2 ln 2N), is left out and the
+  // camera solved again, until no corner is past the alarm. N the camera's
+  // corners: 4.1 and 5.0 sigma for 2000 corners. A corner detected wrongly
+  // (blurred, half-occluded, a reflection) lies far beyond them; the noise
+  // of good corners does not.
+  kChauvenet,
+  kSigma,      // beyond outlier_sigma * sigma (--outlier-sigma K)
+};
+
+// Whether the board's bow (board_warp.h) is estimated.
+enum class WarpRule {
+  kFlat,       // the board held flat
+  // The default: each camera's final solve is repeated with the bow free,
+  // and the bow kept only where its held-out RMS is lower beyond the
+  // fold-to-fold noise (ChooseWithinNoise, heldout.h: the flat board is the
+  // simpler candidate); reported with its standard deviation either way.
+  kAuto,
+  kEstimated,  // always estimated
+};
+
 // --knots auto (CalibrationOptions::knots = kAutoKnots, the default): the
 // number of estimated B-spline coefficients is chosen per camera from the
 // data, by K-fold cross-validation (heldout.h): the counts of kKnotLadder are
@@ -44,6 +77,20 @@ inline constexpr int kContinuationKnots = 25;
 // The default smoothness prior weight lambda (smoothness_prior.h).
 inline constexpr double kDefaultSmoothness = 0.01;
 
+// The non-radial part of the lens model (models/nonradial_field.h).
+enum class FieldRule {
+  kNone,  // radial only
+  // The default: per camera, after the radial model, its knots and the
+  // board's bow are settled, fields of each of kFieldLadder control points
+  // across (rows in proportion to the image) are solved and cross-validated
+  // on the same corners; of "none" and those, the simplest within the
+  // fold-to-fold noise of the best (ChooseWithinNoise). A radially
+  // symmetric lens comes out as none.
+  kAuto,
+  kGrid,  // field_cols x field_rows control points
+};
+inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
+
 struct CalibrationOptions {
   std::string model = "bspline";  // a registered kind: bspline, poly6, poly12
   // Distinct B-spline knots on [0, r_max]: knots - 1 uniform spans, knots + 2
@@ -58,12 +105,12 @@ struct CalibrationOptions {
 
   RobustLoss robust_loss = RobustLoss::kNone;
   double robust_scale_px = 1.0;  // the loss's scale, pixels
-  // Outlier rejection: after a solve, corners farther than
-  // max(outlier_sigma * sigma, outlier_min_px) from their projection are
-  // left out and the solve repeated while that changes (at most 5 rounds);
-  // sigma is the robust (median-based) per-coordinate noise. 0 switches
-  // rejection off.
-  double outlier_sigma = 0;
+  // Outlier rejection: after a solve, corners farther than the rule's
+  // threshold from their projection are left out and the solve repeated
+  // while that changes (at most 5 rounds). With kSigma the threshold is
+  // max(outlier_sigma * sigma, outlier_min_px).
+  OutlierRule outliers = OutlierRule::kChauvenet;
+  double outlier_sigma = 6;
   double outlier_min_px = 0.25;
 
   int min_views = 3;         // per camera
@@ -72,9 +119,11 @@ struct CalibrationOptions {
   double min_view_angle_deg = 5.0;  // the board normals must spread at least this much
   StereoFlow flow = StereoFlow::kJoint;
   bool covariance = true;  // parameter standard deviations
-  // Estimate the board's deflection (board_warp.h) with each camera's final
-  // solve and the joint solve; otherwise the board is flat.
-  bool board_warp = false;
+  FieldRule nonradial = FieldRule::kAuto;
+  int field_cols = 0, field_rows = 0;  // FieldRule::kGrid
+  // The board's deflection (board_warp.h): estimated with each camera's
+  // final solve and the joint solve, held flat, or chosen (WarpRule).
+  WarpRule board_warp = WarpRule::kAuto;
   // Folds of the cross-validation (heldout.h) after every solve and for
   // --knots auto; 0 switches the held-out RMS off (auto then needs it: at
   // least 2).
@@ -93,5 +142,14 @@ void CheckOptions(const CalibrationOptions& options);
 // "auto" (kAutoKnots) or a count from 2 to 64 (--knots, knots=N); throws
 // std::invalid_argument otherwise.
 int ParseKnots(const std::string& value);
+
+// --nonradial: "auto", "none", or "COLSxROWS" (kGrid, 4 to 64 each) into
+// options->nonradial, field_cols, field_rows; throws std::invalid_argument
+// otherwise.
+void ParseFieldRule(const std::string& value, CalibrationOptions* options);
+
+// --outlier-sigma: "auto" (kChauvenet), "off" or "0" (kOff), or a positive
+// number K (kSigma, K into *sigma); throws std::invalid_argument otherwise.
+OutlierRule ParseOutlierRule(const std::string& value, double* sigma);
 
 }  // namespace ws::calib

@@ -1,15 +1,40 @@
 #include "calib/outliers.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ws::calib {
 namespace {
 
 constexpr int kMaxRounds = 5;
+// OutlierRule::kChauvenet's two levels, as expected counts of noise corners
+// beyond them (options.h).
+constexpr double kChauvenetCorners = 0.5, kAlarmCorners = 0.01;
+
+// The level |e| that N corners of Gaussian noise sigma (per coordinate)
+// exceed `expected` times in all: N exp(-t^2 / 2 sigma^2) = expected.
+double Level(double sigma, size_t corners, double expected) {
+  return sigma * std::sqrt(2.0 * std::log(corners / expected));
+}
 
 // Decides anew which of camera `camera`'s corners are outliers (their
-// inlier flag cleared) and which are not; returns how many flags changed.
+// inlier flag cleared) and which are not (options.h, OutlierRule); returns
+// how many flags changed.
 int RejectOutliers(Problem& problem, int camera, const CalibrationOptions& options) {
   std::vector<CornerResidual> residuals = Residuals(problem, camera);
-  const int changed = MarkOutliers(residuals, options.outlier_sigma, options.outlier_min_px);
+  double threshold = 0;
+  if (options.outliers == OutlierRule::kSigma) {
+    threshold = std::max(options.outlier_sigma * RobustSigma(residuals), options.outlier_min_px);
+  } else {
+    const double sigma = RmsSigma(residuals);
+    const double alarm = Level(sigma, residuals.size(), kAlarmCorners);
+    const bool alarmed = std::any_of(residuals.begin(), residuals.end(), [&](const auto& r) {
+      return !r.outlier && !(r.residual.norm() <= alarm);
+    });
+    if (!alarmed) return 0;
+    threshold = Level(sigma, residuals.size(), kChauvenetCorners);
+  }
+  const int changed = MarkOutliers(residuals, threshold);
   if (changed == 0) return 0;
   for (const CornerResidual& r : residuals)
     for (Observation& o : problem.observations)
@@ -24,7 +49,8 @@ SolveOutcome SolveWithRejection(Problem& problem, const CalibrationOptions& opti
   const SolveSettings settings{what, options.max_iterations, options.robust_loss,
                                options.robust_scale_px};
   SolveOutcome outcome = Solve(problem, settings);
-  for (int round = 0; options.outlier_sigma > 0 && round < kMaxRounds; ++round) {
+  const bool reject = options.outliers != OutlierRule::kOff;
+  for (int round = 0; reject && round < kMaxRounds; ++round) {
     int changed = 0;
     for (size_t c = 0; c < problem.cameras.size(); ++c)
       if (!problem.cameras[c].fixed) changed += RejectOutliers(problem, int(c), options);

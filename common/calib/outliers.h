@@ -11,7 +11,7 @@
 
 namespace ws::calib {
 
-// Solves the problem; with options.outlier_sigma > 0 it then decides each
+// Solves the problem; unless options.outliers is kOff it then decides each
 // free camera's outliers (MarkOutliers in quality.h) and solves again while
 // the decision changes, at most 5 rounds; last, with options.covariance,
 // the standard deviations.

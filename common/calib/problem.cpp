@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "calib/covariance.h"
+#include "calib/nonradial_prior.h"
 #include "calib/residuals.h"
 #include "calib/smoothness_prior.h"
 
@@ -95,7 +96,7 @@ std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem
   if (groups.front().size() == 0) return costs;
   for (ViewPoints& points : groups) {
     points.max_radius = camera.max_radius;
-    costs.emplace_back(MakeCost(camera.model, std::move(points), o.via_extrinsic));
+    costs.emplace_back(MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic));
   }
   return costs;
 }
@@ -154,8 +155,9 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
         held_intrinsics = {kP1, kP2};
         cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
       }
-      AddSmoothnessPrior(cp, camera.model, coeffs, camera.prior_weight);
       const int n = static_cast<int>(camera.coeffs.size());
+      AddSmoothnessPrior(cp, camera.model, coeffs, n, camera.prior_weight);
+      AddNonRadialPrior(cp, camera, coeffs);
       if (camera.free_coeffs == 0) {
         cp.SetParameterBlockConstant(coeffs);
       } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {

@@ -28,7 +28,8 @@ std::optional<Eigen::MatrixXd> ProjectionJacobian(const CameraBlock& camera,
     Jet pixel[2];
     const bool in_front = std::visit(
         [&](const auto& m) {
-          return Project(m, params.data(), params.data() + kNumIntrinsics, point, pixel);
+          return Project(m, camera.field, params.data(), params.data() + kNumIntrinsics, point,
+                         pixel);
         },
         camera.model);
     params[k].v[0] = 0;

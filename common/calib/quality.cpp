@@ -86,8 +86,15 @@ double RobustSigma(const std::vector<CornerResidual>& residuals) {
   return Median(std::move(norms)) / std::sqrt(2.0 * std::log(2.0));
 }
 
-int MarkOutliers(std::vector<CornerResidual>& residuals, double sigma_factor, double min_px) {
-  const double threshold = std::max(sigma_factor * RobustSigma(residuals), min_px);
+double RmsSigma(const std::vector<CornerResidual>& residuals) {
+  double sum = 0;
+  int n = 0;
+  for (const auto& r : residuals)
+    if (!r.outlier) sum += r.residual.squaredNorm(), ++n;
+  return n ? std::sqrt(sum / (2.0 * n)) : 0.0;
+}
+
+int MarkOutliers(std::vector<CornerResidual>& residuals, double threshold) {
   int changed = 0;
   for (auto& r : residuals) {
     const bool outlier = !(r.residual.norm() <= threshold);

@@ -45,9 +45,11 @@ double Median(std::vector<double> values);
 // residual norms have the inliers' median (median |e| = 1.1774 sigma).
 double RobustSigma(const std::vector<CornerResidual>& residuals);
 
+// The per-coordinate RMS of the inliers' residuals: sqrt(sum |e|^2 / 2n).
+double RmsSigma(const std::vector<CornerResidual>& residuals);
+
 // Decides every corner anew, previous outliers included: an outlier when its
-// |residual| exceeds max(sigma_factor * RobustSigma of the current inliers,
-// min_px). Returns how many flags changed.
-int MarkOutliers(std::vector<CornerResidual>& residuals, double sigma_factor, double min_px);
+// |residual| exceeds threshold_px. Returns how many flags changed.
+int MarkOutliers(std::vector<CornerResidual>& residuals, double threshold_px);
 
 }  // namespace ws::calib

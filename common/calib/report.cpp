@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "calib/table2.h"
+#include "models/model_registry.h"
 
 namespace ws::calib {
 namespace {
@@ -28,7 +29,7 @@ Json UncertaintyReport(const ProjectionUncertainty& u) {
   Json out;
   out["definition"] =
       "worst-direction 1-sigma of projecting a fixed camera-frame ray, from the solve's "
-      "covariance with the board poses marginalised (README: Projection uncertainty)";
+      "covariance with the board poses marginalised (docs/calibration.md: Projection uncertainty)";
   out.update(ImageGridJson(u.grid, "sigma_px", u.sigma_px));
   out["observed"] = std::vector<int>(u.observed.begin(), u.observed.end());
   out["median_px"] = u.median_px;
@@ -69,7 +70,7 @@ Json CameraReport(const CameraCalibration& c) {
   j["p1"] = m.p1;
   j["p2"] = m.p2;
   j["knots"] = Numbers(m.distortion.knots);
-  j[m.distortion.kind == "bspline" ? "alpha" : "k"] = Numbers(m.distortion.coeffs);
+  j[CoefficientKey(m.distortion.kind)] = Numbers(m.distortion.coeffs);
   Json stddev = Json::object();
   for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
     stddev[c.param_names[i]] = c.stddev[i];
@@ -91,6 +92,19 @@ Json CameraReport(const CameraCalibration& c) {
       warp["stddev_y2_mm"] = 1e3 * c.board_warp_stddev[1];
     }
     j["board_warp"] = warp;
+  }
+  if (const WarpChoice& w = c.warp_choice; w.made) {  // --board-warp auto
+    Json choice;
+    choice["kept"] = w.kept;
+    choice["flat_heldout_rms_px"] = w.flat_heldout_px;
+    choice["warped_heldout_rms_px"] = w.warped_heldout_px;
+    choice["x2_mm"] = 1e3 * w.estimated[0];
+    choice["y2_mm"] = 1e3 * w.estimated[1];
+    if (w.stddev.size() == 2) {
+      choice["stddev_x2_mm"] = 1e3 * w.stddev[0];
+      choice["stddev_y2_mm"] = 1e3 * w.stddev[1];
+    }
+    j["board_warp_choice"] = choice;
   }
   const ResidualGrid& g = c.grid;
   Json grid;

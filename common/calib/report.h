@@ -20,7 +20,12 @@
 // "heldout_fold_rms_px" (per fold), "heldout_extrapolated_corners" (held-out
 // corners farther out than every training corner, left out) and "knot_curve" (--knots auto: per
 // count tried {"knots", "rms_px", "heldout_rms_px", "fold_rms_px"}; empty
-// otherwise).
+// otherwise). With the board's bow estimated, "board_warp" {"x2_mm",
+// "y2_mm", "centre_mm", "stddev_x2_mm", "stddev_y2_mm"}; with --board-warp
+// auto, "board_warp_choice" {"kept", "flat_heldout_rms_px",
+// "warped_heldout_rms_px", "x2_mm", "y2_mm", "stddev_x2_mm", "stddev_y2_mm"}
+// (the bow this camera's views estimated, kept or not). "outliers" lists
+// the corners left out as outliers per view: "outlier_views" {"VIEW": count}.
 // With several models: {"models": [one object as above per model],
 // "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px",
 // "left_heldout_rms_px", "right_heldout_rms_px", "coeffs", "chosen"}],

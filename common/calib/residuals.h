@@ -8,7 +8,8 @@
 //
 // Parameter blocks (all double arrays owned by the caller):
 //   intrinsics[6]  {fx, fy, cx, cy, p1, p2}         (models/projection.h)
-//   coeffs[N]      the model's estimated coefficients (N = model.NumCoeffs())
+//   coeffs[N]      the model's estimated coefficients, then the non-radial
+//                  field's (N = model.NumCoeffs() + field.NumCoeffs())
 //   pose[6]        board -> camera (pose.h)
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
 //   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
@@ -19,7 +20,10 @@
 // however many knots it has), so the Jet carries those and the fixed-size
 // blocks, and their derivatives go to their columns of the coefficient
 // block (the other columns are 0). The Jet's size, and so the cost per
-// corner, does not grow with the number of knots.
+// corner, does not grow with the number of knots. The non-radial field
+// (models/nonradial_field.h) is linear in its coefficients: a corner's 16
+// control points and its field's gradient come from its local basis, and
+// the chain rule takes the Jet of (x_d, y_d) through x_d + F(x_d).
 #pragma once
 
 #include <ceres/cost_function.h>
@@ -72,10 +76,12 @@ struct ViewPoints {
 template <class Model, bool kViaExtrinsic, int L>
 class ViewCost final : public ceres::CostFunction {
  public:
-  // Keeps a pointer to `model`.
-  ViewCost(const Model& model, ViewPoints points) : model_(&model), points_(std::move(points)) {
+  // Keeps pointers to `model` and `field`.
+  ViewCost(const Model& model, const NonRadialField& field, ViewPoints points)
+      : model_(&model), field_(&field), points_(std::move(points)) {
     set_num_residuals(2 * points_.size());
-    for (int size : {int(kNumIntrinsics), model.NumCoeffs(), 2, 6}) AddBlock(size);
+    for (int size : {int(kNumIntrinsics), model.NumCoeffs() + field.NumCoeffs(), 2, 6})
+      AddBlock(size);
     if (kViaExtrinsic) AddBlock(6);
   }
 
@@ -85,7 +91,7 @@ class ViewCost final : public ceres::CostFunction {
       BoardToCamera(p[3], kViaExtrinsic ? p[4] : nullptr, R, t);
       for (int i = 0; i < points_.size(); ++i) {
         if (!Ideal(i, p[2], R, t, ideal)) return false;
-        ProjectIdeal(*model_, p[0], p[1], ideal, residuals + 2 * i);
+        ProjectIdeal(*model_, *field_, p[0], p[1], ideal, residuals + 2 * i);
         residuals[2 * i] -= points_.image[2 * i];
         residuals[2 * i + 1] -= points_.image[2 * i + 1];
       }
@@ -99,6 +105,8 @@ class ViewCost final : public ceres::CostFunction {
     LensJet intrinsics[kNumIntrinsics];
     Seed(p[0], kNumIntrinsics, kIntrinsicsAt, intrinsics);
     const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
+    const int all = n + field_->NumCoeffs(), half = field_->NumCoeffs() / 2;
+    const double* field = p[1] + n;
     std::vector<LensJet> coeffs(p[1], p[1] + n);  // constants but for a corner's local ones
     for (int i = 0; i < points_.size(); ++i) {
       RigJet ideal[2];
@@ -108,19 +116,38 @@ class ViewCost final : public ceres::CostFunction {
       for (int j = 0; j < local; ++j)
         if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 1.0;
       const LensJet lens_ideal[2] = {LensJet(ideal[0].a, kXAt), LensJet(ideal[1].a, kXAt + 1)};
-      LensJet pixel[2];
-      ProjectIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, pixel);
+      LensJet distorted[2], pixel[2];
+      DistortIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, distorted);
       for (int j = 0; j < local; ++j)
         if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 0.0;
+      NonRadialField::Local basis{};
+      if (!field_->empty()) {  // x_d + F(x_d), F linear about the corner's x_d
+        basis = field_->LocalBasis(distorted[0].a, distorted[1].a);
+        double f[2] = {0, 0}, by_s[2] = {0, 0}, by_t[2] = {0, 0};
+        for (int k = 0; k < NonRadialField::kLocal; ++k)
+          for (int c = 0; c < 2; ++c) {
+            const double coeff = field[c * half + basis.index[k]];
+            f[c] += coeff * basis.weight[k];
+            by_s[c] += coeff * basis.by_s[k];
+            by_t[c] += coeff * basis.by_t[k];
+          }
+        const LensJet d[2] = {distorted[0], distorted[1]};
+        for (int c = 0; c < 2; ++c)
+          distorted[c] = d[c] + by_s[c] * (d[0] - d[0].a) + by_t[c] * (d[1] - d[1].a) + f[c];
+      }
+      ToPixel(intrinsics, distorted, pixel);
       for (int k = 0; k < 2; ++k) {
         const int row = 2 * i + k;
         const LensJet& q = pixel[k];
         residuals[row] = q.a - points_.image[row];
         if (double* J = jacobians[0]) std::copy_n(&q.v[kIntrinsicsAt], kNumIntrinsics, J + row * kNumIntrinsics);
-        if (double* J = jacobians[1] ? jacobians[1] + row * n : nullptr) {
-          std::fill(J, J + n, 0.0);
+        if (double* J = jacobians[1] ? jacobians[1] + row * all : nullptr) {
+          std::fill(J, J + all, 0.0);
           for (int j = 0; j < local; ++j)
             if (in_range(j)) J[first + j] = q.v[kLocalAt + j];
+          // d pixel_k / d c^k_ij = f_k N_i M_j (fx or fy).
+          for (int j = 0; j < NonRadialField::kLocal && !field_->empty(); ++j)
+            J[n + k * half + basis.index[j]] = intrinsics[k == 0 ? kFx : kFy].a * basis.weight[j];
         }
         const RigJet by_rig = q.v[kXAt] * ideal[0] + q.v[kXAt + 1] * ideal[1];
         Scatter(by_rig, kWarpAt, 2, row, jacobians[2]);
@@ -182,22 +209,24 @@ class ViewCost final : public ceres::CostFunction {
   }
 
   const Model* model_;
+  const NonRadialField* field_;
   ViewPoints points_;
 };
 
-// The cost of one view's corners for any model (ViewCost; via_extrinsic: the
-// board pose is the left camera's). The Jet is sized for a cubic spline's
-// 4 local coefficients, or the model's bound for any other.
-inline ceres::CostFunction* MakeCost(const AnyDistortionModel& model, ViewPoints points,
-                                     bool via_extrinsic) {
+// The cost of one view's corners for any model with its non-radial field
+// (ViewCost; via_extrinsic: the board pose is the left camera's). The Jet is
+// sized for a cubic spline's 4 local coefficients, or the model's bound for
+// any other.
+inline ceres::CostFunction* MakeCost(const AnyDistortionModel& model, const NonRadialField& field,
+                                     ViewPoints points, bool via_extrinsic) {
   return std::visit(
       [&](const auto& m) -> ceres::CostFunction* {
         using Model = std::decay_t<decltype(m)>;
         constexpr int kCubic = 4, kMax = Model::kMaxLocalCoeffs;
         auto make = [&](auto width) -> ceres::CostFunction* {
           constexpr int kWidth = decltype(width)::value;
-          if (via_extrinsic) return new ViewCost<Model, true, kWidth>(m, std::move(points));
-          return new ViewCost<Model, false, kWidth>(m, std::move(points));
+          if (via_extrinsic) return new ViewCost<Model, true, kWidth>(m, field, std::move(points));
+          return new ViewCost<Model, false, kWidth>(m, field, std::move(points));
         };
         if constexpr (kMax > kCubic)
           if (m.NumLocalCoeffs() <= kCubic) return make(std::integral_constant<int, kCubic>());

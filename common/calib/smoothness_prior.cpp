@@ -5,7 +5,7 @@
 namespace ws::calib {
 
 void AddSmoothnessPrior(ceres::Problem& problem, const AnyDistortionModel& model, double* coeffs,
-                        double weight) {
+                        int block_size, double weight) {
   if (!(weight > 0)) return;
   std::visit(
       [&](const auto& spline) {
@@ -13,7 +13,7 @@ void AddSmoothnessPrior(ceres::Problem& problem, const AnyDistortionModel& model
           const int n = spline.NumBasis();
           auto* cost = new ceres::DynamicAutoDiffCostFunction<SecondDifferenceResidual>(
               new SecondDifferenceResidual{n, weight});
-          cost->AddParameterBlock(spline.NumCoeffs());
+          cost->AddParameterBlock(block_size);
           cost->SetNumResiduals(n - 2);
           problem.AddResidualBlock(cost, nullptr, coeffs);
         }

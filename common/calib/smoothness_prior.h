@@ -50,8 +50,9 @@ struct SecondDifferenceResidual {
   }
 };
 
-// Adds the prior on `coeffs` when `model` is a B-spline and weight > 0.
+// Adds the prior on `coeffs` (a block of `block_size`, the model's
+// coefficients first) when `model` is a B-spline and weight > 0.
 void AddSmoothnessPrior(ceres::Problem& problem, const AnyDistortionModel& model, double* coeffs,
-                        double weight);
+                        int block_size, double weight);
 
 }  // namespace ws::calib

@@ -129,8 +129,12 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
                                           c == 1 && is_stereo[v]});
     }
   };
+  // Each camera's outliers are out already, decided on its own fit: the
+  // stereo solves keep them out and leave out no more, since a pair whose
+  // cameras were not exposed together would otherwise lose its corners to
+  // the shared board pose one by one instead of being found (CheckPairs).
   CalibrationOptions extrinsic_options = options;
-  extrinsic_options.outlier_sigma = 0;  // each camera's outliers are already out
+  extrinsic_options.outliers = OutlierRule::kOff;
   // R, T with both cameras held at their own solutions: the paper's
   // extrinsic step, and the start of the joint solve.
   auto solve_extrinsics = [&] {
@@ -146,9 +150,10 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   };
   auto solve_joint = [&] {
     for (auto& camera : problem.cameras) camera.fixed = false;
-    problem.warp.free = options.board_warp;
+    problem.warp.free = options.board_warp == WarpRule::kEstimated ||
+                        mono[0].warp_choice.kept || mono[1].warp_choice.kept;
     observe(true);
-    return SolveWithRejection(problem, options, "joint stereo solve");
+    return SolveWithRejection(problem, extrinsic_options, "joint stereo solve");
   };
   const bool joint = options.flow == StereoFlow::kJoint;
   SolveOutcome outcome = solve_extrinsics();
@@ -196,6 +201,9 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   for (int c = 0; c < 2; ++c) {
     CameraCalibration& camera = c == 0 ? out.left : out.right;
     camera.knot_curve = mono[c].knot_curve;
+    camera.warp_choice = mono[c].warp_choice;
+    camera.field_curve = mono[c].field_curve;
+    camera.field_chosen = mono[c].field_chosen;
     if (joint_kept)
       SetHeldOut(joint_cv, c, &camera);
     else

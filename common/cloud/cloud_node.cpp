@@ -54,7 +54,7 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
       stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
                                   : NewestFirst<widestereo::point_cloud_t>::Policy::newest,
              [this](widestereo::point_cloud_t& msg) { Filter(msg); },
-             [this](const widestereo::point_cloud_t&) { process_.Counters(channel::kStereoCloud).dropped++; }) {
+             [this](const widestereo::point_cloud_t&) { process_.Counters(channel::kStereoCloud).skipped++; }) {
   if (save_.save_every < 0)
     throw ConfigError("--save-every: must be >= 0, got " + std::to_string(save_.save_every));
   if (!save_.pcd_dir.empty()) {

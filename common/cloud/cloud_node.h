@@ -16,7 +16,7 @@
 //
 // Live, the chain runs on a thread of its own and takes the newest cloud
 // waiting (runtime/newest_first.h): a cloud replaced before the chain took it
-// is counted as dropped on STEREO_CLOUD, so that the output stays about one
+// is counted as skipped on STEREO_CLOUD, so that the output stays about one
 // chain time behind the input, whatever its rate. From a log, every cloud is
 // filtered, in line.
 //

@@ -14,6 +14,15 @@ constexpr const char* kUsage =
     "expected chessboard:COLSxROWS:SQUARE or charuco:COLSxROWS:SQUARE:MARKER:DICT "
     "(inner corners, metres), e.g. chessboard:9x6:0.025 or charuco:9x6:0.03:0.022:DICT_5X5_100";
 
+// A square larger than this is a size in millimetres or centimetres.
+constexpr double kMaxSquare = 0.5;
+
+std::string Metres(double value) {
+  std::ostringstream text;
+  text << value << " m";
+  return text.str();
+}
+
 [[noreturn]] void Fail(const std::string& spec, const std::string& why) {
   throw std::invalid_argument("board '" + spec + "': " + why + "; " + kUsage);
 }
@@ -101,6 +110,9 @@ BoardSpec ParseBoardSpec(const std::string& spec) {
   board.cols = ParseCount(spec, size[0], "COLS");
   board.rows = ParseCount(spec, size[1], "ROWS");
   board.square = ParseLength(spec, fields[2], "SQUARE");
+  if (board.square > kMaxSquare)
+    Fail(spec, "a " + fields[2] + " m square is larger than any hand-held board's (over " + Metres(kMaxSquare) +
+                   "): is this in millimetres? SQUARE is in metres, 0.025 for 25 mm");
   if (board.type == BoardType::chessboard) return board;
 
   board.marker = ParseLength(spec, fields[3], "MARKER");

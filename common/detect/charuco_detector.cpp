@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "detect/saddle_point.h"
+#include "detect/corner_refinement.h"
 
 namespace ws {
 namespace {
@@ -15,10 +15,11 @@ namespace {
 // pixel off the true corner (measured on rendered boards: 0.7 px RMS, at
 // 640x480 and at 1280x960 alike). cornerSubPix again, from there, in a window
 // that stays clear of the corners of the markers next to each corner, brings
-// them to 0.03-0.07 px; the saddle point (saddle_point.h) at a scale of 0.15
-// of that clearance (its window 0.3 of it) to about 0.02 px.
+// them to 0.03-0.07 px; the saddle points (corner_refinement.h), their
+// scales bounded by that clearance, to about 0.02 px.
 void RefineClearOfMarkers(const cv::Mat& gray, const std::vector<std::vector<cv::Point2f>>& markers,
                           std::vector<cv::Point2f>& points) {
+  std::vector<double> clearances;
   for (cv::Point2f& point : points) {
     double clearance = INFINITY;
     for (const auto& marker : markers)
@@ -27,8 +28,10 @@ void RefineClearOfMarkers(const cv::Mat& gray, const std::vector<std::vector<cv:
     std::vector<cv::Point2f> one{point};
     cv::cornerSubPix(gray, one, cv::Size(half, half), cv::Size(-1, -1),
                      cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 40, 0.001));
-    point = SaddlePoint(gray, one.front(), std::max(1.0, 0.15 * clearance));
+    point = one.front();
+    clearances.push_back(clearance);
   }
+  RefineCorners(gray, points, clearances, points);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "detect/grid_order.h"
-#include "detect/saddle_point.h"
+#include "detect/corner_refinement.h"
 
 namespace ws {
 namespace {
@@ -22,27 +22,31 @@ BoardCorners CompleteGrid(const cv::Mat& gray, cv::Size pattern, std::vector<cv:
   return corners;
 }
 
-// Shortest distance between neighbouring corners of the grid, pixels.
-double ShortestSpacing(const std::vector<cv::Point2f>& points, cv::Size pattern) {
-  double shortest = INFINITY;
+// Each corner's distance to its nearest neighbour in the grid, pixels.
+std::vector<double> NearestSpacing(const std::vector<cv::Point2f>& points, cv::Size pattern) {
+  std::vector<double> nearest(points.size(), INFINITY);
+  auto link = [&](int a, int b) {
+    const double d = cv::norm(points[a] - points[b]);
+    nearest[a] = std::min(nearest[a], d);
+    nearest[b] = std::min(nearest[b], d);
+  };
   for (int row = 0; row < pattern.height; ++row)
     for (int col = 0; col < pattern.width; ++col) {
-      const cv::Point2f p = points[row * pattern.width + col];
-      if (col + 1 < pattern.width) shortest = std::min(shortest, cv::norm(points[row * pattern.width + col + 1] - p));
-      if (row + 1 < pattern.height) shortest = std::min(shortest, cv::norm(points[(row + 1) * pattern.width + col] - p));
+      const int i = row * pattern.width + col;
+      if (col + 1 < pattern.width) link(i, i + 1);
+      if (row + 1 < pattern.height) link(i, i + pattern.width);
     }
-  return shortest;
+  return nearest;
 }
 
 // OpenCV's adaptive-threshold search, which finds boards in unevenly lit
-// images that one global threshold misses, on a copy of at most
-// kSearchSide pixels a side: its cost grows steeply with the image (about
-// 11 s on a 1280 x 960 simulator frame holding part of a board, 1 s on its
-// 800-pixel copy); the corners are refined at full resolution afterwards.
+// images that one global threshold misses, on a copy of at most `side`
+// pixels a side: its cost grows steeply with the image (about 11 s on a
+// 1280 x 960 simulator frame holding part of a board, 1 s on its 800-pixel
+// copy); the corners are refined at full resolution afterwards.
 // FAST_CHECK leaves frames without a board early.
-bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
-  constexpr int kSearchSide = 800;
-  const double scale = std::min(1.0, double(kSearchSide) / std::max(gray.cols, gray.rows));
+bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector<cv::Point2f>* points) {
+  const double scale = std::min(1.0, double(side) / std::max(gray.cols, gray.rows));
   cv::Mat small = gray;
   if (scale < 1) cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
   if (!cv::findChessboardCorners(small, pattern, *points,
@@ -53,18 +57,30 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point
   return true;
 }
 
-// Every corner moved to its saddle point (saddle_point.h) at the scale of a
-// twentieth of the grid's shortest spacing, at least 1 px: the fit's window
-// (two scales) reaches a tenth of the way to the next corner. Larger scales
-// average more pixels but follow curved edges less: on the sharp-knee
-// simulator's views the corners come out 0.033, 0.022, 0.020 and 0.024 px
-// RMS off the truth at 0.05, 0.1, 0.15 and 0.2 of the spacing (cornerSubPix
-// alone: 0.052), while on fisheye-stereo-ros's real images (185 degrees)
-// scales above 0.05 of the spacing raise the calibration's RMS (0.42 px at
-// 0.05, 0.44 at 0.1, 0.49 at 0.2; cornerSubPix alone 0.42).
-void RefineToSaddles(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>& points) {
-  const double sigma = std::max(1.0, 0.05 * ShortestSpacing(points, pattern));
-  for (cv::Point2f& point : points) point = SaddlePoint(gray, point, sigma);
+// Where the board is, by the cheapest search that finds it:
+//   1. one global threshold (the fast path), at full resolution;
+//   2. the adaptive threshold on a copy of at most 800 pixels a side;
+//   3. the SB detector at full resolution: it finds boards the quads of
+//      1 and 2 miss (blurred, small or strongly curved squares).
+// A frame without a board goes through all three (about 0.1, 1 and 0.2 s at
+// 1280 x 960). The adaptive threshold at full resolution is left out: on a
+// 1280 x 960 simulator frame holding part of a board it took 8 s (against
+// 1 s for step 2), and on the real sets of bench/real/README.md steps 1-3
+// find every board it finds.
+bool FindBoard(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
+  constexpr int kSearchSide = 800;
+  return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
+         AdaptiveSearch(gray, pattern, kSearchSide, points) ||
+         cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE);
+}
+
+// The detector's corners to their saddle points (corner_refinement.h), each
+// fit starting there; cornerSubPix's corners where no fit is good.
+void RefineFromDetection(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>& points) {
+  const std::vector<double> spacing = NearestSpacing(points, pattern);
+  std::vector<cv::Point2f> subpix = points;
+  CornerSubPix(gray, subpix, spacing);
+  RefineCorners(gray, points, spacing, subpix);
 }
 
 }  // namespace
@@ -72,22 +88,23 @@ void RefineToSaddles(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Poin
 BoardCorners SbChessboardDetector::Detect(const cv::Mat& gray) const {
   std::vector<cv::Point2f> points;
   if (!cv::findChessboardCornersSB(gray, pattern_, points, cv::CALIB_CB_NORMALIZE_IMAGE)) return {};
-  RefineToSaddles(gray, pattern_, points);
+  RefineFromDetection(gray, pattern_, points);
   return CompleteGrid(gray, pattern_, std::move(points));
 }
 
 BoardCorners ClassicChessboardDetector::Detect(const cv::Mat& gray) const {
   std::vector<cv::Point2f> points;
-  // The fast path (one global threshold) first; where it finds no board,
-  // unevenly lit real images, the adaptive threshold (OpenCV's default).
-  if (!cv::findChessboardCorners(gray, pattern_, points, cv::CALIB_CB_NORMALIZE_IMAGE) &&
-      !AdaptiveSearch(gray, pattern_, &points))
+  if (!FindBoard(gray, pattern_, &points)) return {};
+  RefineFromDetection(gray, pattern_, points);
+  return CompleteGrid(gray, pattern_, std::move(points));
+}
+
+BoardCorners OpenCvChessboardDetector::Detect(const cv::Mat& gray) const {
+  std::vector<cv::Point2f> points;
+  if (!cv::findChessboardCorners(gray, pattern_, points,
+                                 cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
     return {};
-  // The cornerSubPix window must not reach the neighbouring corners.
-  const int half = std::clamp(int(ShortestSpacing(points, pattern_) * 0.4), 2, 11);
-  cv::cornerSubPix(gray, points, cv::Size(half, half), cv::Size(-1, -1),
-                   cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 40, 0.001));
-  RefineToSaddles(gray, pattern_, points);
+  CornerSubPix(gray, points, NearestSpacing(points, pattern_));
   return CompleteGrid(gray, pattern_, std::move(points));
 }
 

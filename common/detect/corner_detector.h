@@ -27,17 +27,19 @@ class CornerDetector {
   virtual BoardCorners Detect(const cv::Mat& gray) const = 0;
 };
 
-// The two OpenCV chessboard detectors.
+// The chessboard detectors.
 enum class ChessboardMethod {
   sb,       // cv::findChessboardCornersSB (localized Radon transform), then the saddle points
   classic,  // cv::findChessboardCorners + cv::cornerSubPix, then the saddle points
+  opencv,   // OpenCV's own way, for comparison: cv::findChessboardCorners with adaptive
+            // threshold and normalisation at full resolution, then cv::cornerSubPix only
 };
-// Both refine their corners to the same saddle points (saddle_point.h;
-// tests/detect/test_detector_accuracy.cpp measures them against exact
-// ground truth); classic is the default.
+// sb and classic refine their corners to the same saddle points
+// (corner_refinement.h; tests/detect/test_detector_accuracy.cpp measures
+// them against exact ground truth); classic is the default.
 inline constexpr ChessboardMethod kDefaultChessboardMethod = ChessboardMethod::classic;
 
-// "sb" or "classic"; throws std::invalid_argument otherwise.
+// "sb", "classic" or "opencv"; throws std::invalid_argument otherwise.
 ChessboardMethod ParseChessboardMethod(const std::string& name);
 const char* ChessboardMethodName(ChessboardMethod method);
 

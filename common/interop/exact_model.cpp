@@ -37,6 +37,7 @@ ExportFormat ParseExportFormat(const std::string& name) {
 }
 
 std::optional<TargetModel> ExactTargetModel(const CameraModel& camera, ExportFormat format) {
+  if (!camera.nonradial.empty()) return std::nullopt;  // no other format has a non-radial field
   const double p1 = camera.p1, p2 = camera.p2;
   if (const auto k = Brown(camera)) {
     const std::vector<double> opencv{(*k)[0], (*k)[1], p1, p2, (*k)[2]};

@@ -7,6 +7,7 @@
 //   poly12       as poly6 when k4 = k5 = k6 = 0, else -
 //   bspline, bspline_theta: -
 //
+// and never with a non-radial field (models/nonradial_field.h).
 // (OpenCV's, ROS's and mrcal's 8-coefficient model is rational, not poly12;
 // mrcal 2.2 has no Kannala-Brandt model.) Everything else is exported
 // another way, and says so: the rectification maps (OpenCV, ROS) or a

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lcm_io/image_codec.h"
+#include "models/distortion_function.h"
 
 namespace ws {
 namespace {
@@ -74,8 +75,6 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   const char* t = "camera_calibration_t";
   Require(ImageSizeAcceptable(msg.image_width, msg.image_height), t,
           "bad image size " + std::to_string(msg.image_width) + "x" + std::to_string(msg.image_height));
-  Require(msg.model == "bspline" || msg.model == "poly6" || msg.model == "poly12", t,
-          "unknown model '" + msg.model + "'");
   Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
   Require(std::is_sorted(msg.knots.begin(), msg.knots.end()), t, "knots are not non-decreasing");
   const double intrinsics[] = {msg.fx, msg.fy, msg.cx, msg.cy, msg.p1, msg.p2};
@@ -88,16 +87,25 @@ void Validate(const widestereo::camera_calibration_t& msg) {
               msg.cy <= 2.0 * msg.image_height,
           t, "the principal point (cx, cy) lies more than an image size outside the image");
   Require(std::abs(msg.p1) <= 1 && std::abs(msg.p2) <= 1, t, "|p1| and |p2| must be at most 1");
-  if (msg.model == "bspline") {
-    Require(msg.degree >= 1, t, "B-spline degree must be at least 1");
-    Require(msg.ncoeffs == msg.nknots - msg.degree - 1, t,
-            "a degree-" + std::to_string(msg.degree) + " spline on " + std::to_string(msg.nknots) +
-                " knots has " + std::to_string(msg.nknots - msg.degree - 1) +
-                " coefficients, not " + std::to_string(msg.ncoeffs));
-  } else {
-    Require(msg.ncoeffs == (msg.model == "poly6" ? 3 : 6), t,
-            msg.model + " has a wrong number of coefficients");
+  try {  // every kind of the model table: its knots and number of coefficients
+    DistortionFunction(Distortion{msg.model, msg.degree, msg.knots, msg.coeffs});
+  } catch (const std::invalid_argument& e) {
+    Reject(t, e.what());
   }
+  // The non-radial field: none, or a grid of its coefficients over a
+  // rectangle; a correction of more than the focal length is no lens's.
+  Require(msg.field_cols == 0 && msg.field_rows == 0 && msg.nfield == 0 ||
+              msg.field_cols >= 4 && msg.field_rows >= 4 && msg.field_cols <= 64 &&
+                  msg.field_rows <= 64 && msg.nfield == 2 * msg.field_cols * msg.field_rows,
+          t, "a non-radial field has 4 to 64 control points a side and 2 cols rows coefficients");
+  Require(AllFinite(msg.field_domain) && AllFinite(msg.field_coeffs), t,
+          "non-finite non-radial field");
+  Require(msg.nfield == 0 || (msg.field_domain[1] > msg.field_domain[0] &&
+                              msg.field_domain[3] > msg.field_domain[2]),
+          t, "empty non-radial field rectangle");
+  Require(std::all_of(msg.field_coeffs.begin(), msg.field_coeffs.end(),
+                      [](double c) { return std::abs(c) <= 1; }),
+          t, "a non-radial field coefficient beyond 1 (the focal length)");
 }
 
 void Validate(const widestereo::stereo_calibration_t& msg) {

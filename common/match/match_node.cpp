@@ -83,7 +83,7 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
              [this](widestereo::stereo_frame_t& frame) { Match(frame); },
-             [this](const widestereo::stereo_frame_t&) { process_.Counters(channel::kStereoImages).dropped++; }) {
+             [this](const widestereo::stereo_frame_t&) { process_.Counters(channel::kStereoImages).skipped++; }) {
   process_.SetState("waiting for calibration");
   process_.AtExit([this] { Drain(); });
 }

@@ -60,10 +60,10 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // Live, the two stages run as a small pipeline (runtime/newest_first.h) on
 // two threads of their own, so that the input thread only hands frames over:
 // matching takes the newest frame waiting (a frame replaced before it was
-// taken is counted as dropped on STEREO_IMAGES), while the cloud of the frame
+// taken is counted as skipped on STEREO_IMAGES), while the cloud of the frame
 // before is built and published. At most one frame waits for each stage.
-// Every frame from the first received is thus published, counted as dropped
-// (replaced, or a frame-id gap), or rejected. From a log, both stages run in
+// Every frame from the first received is thus published, counted as skipped
+// (replaced), dropped (a frame-id gap), or rejected. From a log, both stages run in
 // line: nothing is dropped, and every replay gives the same output.
 class MatchNode {
  public:

@@ -62,7 +62,8 @@ class Bspline {
   int degree() const { return degree_; }
   int NumBasis() const { return NumBasisFunctions(knots_, degree_); }
   int NumCoeffs() const { return NumBasis() - first_estimated_; }
-  std::string CoeffName(int i) const { return "alpha" + std::to_string(i + first_estimated_); }
+  static constexpr const char* kCoeffKey = "alpha";  // alpha_i: files, reports, parameter names
+  std::string CoeffName(int i) const { return kCoeffKey + std::to_string(i + first_estimated_); }
 
   Distortion ToData(const double* coeffs) const;
   // The estimated coefficients of a stored alpha vector; throws if its size

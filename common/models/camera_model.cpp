@@ -25,16 +25,25 @@ CameraModel Validated(CameraModel model) {
 Camera::Camera(CameraModel model)
     : model_(Validated(std::move(model))),
       intrinsics_(model_.Intrinsics()),
-      distortion_(model_.distortion) {
+      distortion_(model_.distortion),
+      field_(NonRadialField::FromData(model_.nonradial)),
+      coeffs_(model_.distortion.coeffs) {
   if (!HasTangential(distortion_.model()) && (model_.p1 != 0 || model_.p2 != 0))
     throw std::invalid_argument(model_.distortion.kind + " has no tangential terms: p1 = p2 = 0");
+  const std::vector<double>& field = model_.nonradial.coeffs;
+  if (int(field.size()) != field_.NumCoeffs())
+    throw std::invalid_argument("the non-radial field has " + std::to_string(field.size()) +
+                                " coefficients, its grid " + std::to_string(field_.NumCoeffs()));
+  for (double c : field)
+    if (!std::isfinite(c)) throw std::invalid_argument("non-finite non-radial field coefficient");
+  coeffs_.insert(coeffs_.end(), field.begin(), field.end());
 }
 
 std::optional<Eigen::Vector2d> Camera::Project(const Eigen::Vector3d& point) const {
   Eigen::Vector2d pixel;
   const bool in_front = std::visit(
       [&](const auto& model) {
-        return ws::Project(model, intrinsics_.data(), distortion_.coeffs(), point.data(),
+        return ws::Project(model, field_, intrinsics_.data(), coeffs_.data(), point.data(),
                            pixel.data());
       },
       distortion_.model());
@@ -57,7 +66,7 @@ std::optional<Eigen::Vector3d> Camera::Unproject(const Eigen::Vector2d& pixel) c
   Eigen::Vector3d ray;
   const bool found = std::visit(
       [&](const auto& model) {
-        return ws::Unproject(model, intrinsics_.data(), distortion_.coeffs(), pixel.data(),
+        return ws::Unproject(model, field_, intrinsics_.data(), coeffs_.data(), pixel.data(),
                              ray.data());
       },
       distortion_.model());

@@ -8,10 +8,12 @@
 //   r = sqrt(x^2 + y^2)
 //   x_d = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)
 //   y_d = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y
-//   u = fx x_d + cx,  v = fy y_d + cy
+//   (x_f, y_f) = (x_d, y_d) + F(x_d, y_d)
+//   u = fx x_f + cx,  v = fy y_f + cy
 //
 // D(r) is given by distortion.kind: bspline_distortion.h, poly_distortion.h
-// (kb4 has p1 = p2 = 0).
+// (kb4 has p1 = p2 = 0); F, the non-radial field, by nonradial
+// (nonradial_field.h; none: F = 0).
 // Pixel coordinates have (0, 0) at the centre of the top-left pixel.
 #pragma once
 
@@ -22,6 +24,7 @@
 
 #include "models/distortion.h"
 #include "models/distortion_function.h"
+#include "models/nonradial_field.h"
 #include "models/projection.h"
 
 namespace ws {
@@ -32,6 +35,7 @@ struct CameraModel {
   double fx = 0, fy = 0, cx = 0, cy = 0;  // pixels
   double p1 = 0, p2 = 0;                  // tangential distortion
   Distortion distortion;                  // D(r), with r in normalized coordinates
+  NonRadial nonradial;                    // F; empty: none
 
   // {fx, fy, cx, cy, p1, p2}, indexed by kFx..kP2 (projection.h).
   std::array<double, kNumIntrinsics> Intrinsics() const { return {fx, fy, cx, cy, p1, p2}; }
@@ -41,7 +45,8 @@ class Camera {
  public:
   // Throws std::invalid_argument unless the image size and focal lengths are
   // positive, every number is finite and the distortion is consistent
-  // (a model without tangential terms has p1 = p2 = 0).
+  // (a model without tangential terms has p1 = p2 = 0; a field has its
+  // grid's number of finite coefficients).
   explicit Camera(CameraModel model);
 
   const CameraModel& model() const { return model_; }
@@ -67,6 +72,8 @@ class Camera {
   CameraModel model_;
   std::array<double, kNumIntrinsics> intrinsics_;
   DistortionFunction distortion_;
+  NonRadialField field_;
+  std::vector<double> coeffs_;  // the distortion's, then the field's (projection.h)
 };
 
 }  // namespace ws

@@ -10,18 +10,18 @@ struct ModelType {
   using type = Model;
 };
 
-// make(ModelType<Model>{}) for the alternative of AnyDistortionModel whose
+// f(ModelType<Model>{}) for the alternative of AnyDistortionModel whose
 // Kind() is kind.
-template <size_t I = 0, typename Make>
-AnyDistortionModel MakeByKind(const std::string& kind, const Make& make) {
+template <size_t I = 0, typename F>
+auto ForKind(const std::string& kind, const F& f) -> decltype(f(ModelType<BsplineDistortion>{})) {
   if constexpr (I == std::variant_size_v<AnyDistortionModel>) {
     std::string known;
     for (const auto& name : ModelKinds()) known += (known.empty() ? "" : ", ") + name;
     throw std::invalid_argument("unknown distortion model '" + kind + "' (known: " + known + ")");
   } else {
     using Model = std::variant_alternative_t<I, AnyDistortionModel>;
-    if (kind == Model::Kind()) return make(ModelType<Model>{});
-    return MakeByKind<I + 1>(kind, make);
+    if (kind == Model::Kind()) return f(ModelType<Model>{});
+    return ForKind<I + 1>(kind, f);
   }
 }
 
@@ -37,13 +37,13 @@ std::vector<std::string> ModelKinds() {
 }
 
 AnyDistortionModel MakeModel(const Distortion& data, Coefficients which) {
-  return MakeByKind(data.kind, [&](auto type) -> AnyDistortionModel {
+  return ForKind(data.kind, [&](auto type) -> AnyDistortionModel {
     return decltype(type)::type::FromData(data, which);
   });
 }
 
 AnyDistortionModel MakeCalibrationModel(const std::string& kind, const CalibrationSetup& setup) {
-  return MakeByKind(kind, [&](auto type) -> AnyDistortionModel {
+  return ForKind(kind, [&](auto type) -> AnyDistortionModel {
     return decltype(type)::type::ForCalibration(setup);
   });
 }
@@ -55,6 +55,10 @@ bool IsAngleModel(const AnyDistortionModel& model) {
 
 bool HasTangential(const AnyDistortionModel& model) {
   return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::kTangential; }, model);
+}
+
+std::string CoefficientKey(const std::string& kind) {
+  return ForKind(kind, [](auto type) -> std::string { return decltype(type)::type::kCoeffKey; });
 }
 
 }  // namespace ws

@@ -42,4 +42,9 @@ bool IsAngleModel(const AnyDistortionModel& model);
 // Whether p1, p2 apply (every model but kb4).
 bool HasTangential(const AnyDistortionModel& model);
 
+// The name of a kind's coefficient vector in calibration files and reports:
+// "alpha" for the B-splines, "k" for the polynomials. Throws
+// std::invalid_argument for an unknown kind.
+std::string CoefficientKey(const std::string& kind);
+
 }  // namespace ws

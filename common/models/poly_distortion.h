@@ -46,7 +46,8 @@ class PolyDistortion {
   static PolyDistortion ForCalibration(const CalibrationSetup&) { return PolyDistortion(); }
 
   int NumCoeffs() const { return N; }
-  std::string CoeffName(int i) const { return "k" + std::to_string(i + 1); }
+  static constexpr const char* kCoeffKey = "k";  // k1..kN: files, reports, parameter names
+  std::string CoeffName(int i) const { return kCoeffKey + std::to_string(i + 1); }
 
   Distortion ToData(const double* coeffs) const {
     return Distortion{Kind(), 0, {}, std::vector<double>(coeffs, coeffs + N)};

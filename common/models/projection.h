@@ -4,12 +4,14 @@
 //   (x, y) = Model::Coordinate::Ideal(X, Y, Z)    radial_coordinate.h:
 //                                                 (X, Y) / Z, or theta (X, Y) / rho
 //   (x_d, y_d) = model.Distort(coeffs, p1, p2, x, y)   (distortion.h)
-//   u = fx x_d + cx,  v = fy y_d + cy
+//   (x_f, y_f) = (x_d, y_d) + F(x_d, y_d)              (nonradial_field.h; F = 0 without one)
+//   u = fx x_f + cx,  v = fy y_f + cy
 //
 // Intrinsics are the array {fx, fy, cx, cy, p1, p2} (indices kFx..kP2), the
-// distortion coefficients a separate array of model.NumCoeffs(): one
-// parameter block each in a Ceres problem. Everything is templated on the
-// scalar so that Ceres can differentiate it automatically.
+// coefficients a separate array: model.NumCoeffs() of the radial model, then
+// field.NumCoeffs() of the non-radial field; one parameter block each in a
+// Ceres problem. Everything is templated on the scalar so that Ceres can
+// differentiate it automatically.
 #pragma once
 
 #include <cmath>
@@ -17,6 +19,7 @@
 
 #include <ceres/jet.h>
 
+#include "models/nonradial_field.h"
 #include "models/radial_coordinate.h"
 #include "models/scalar_part.h"
 
@@ -25,27 +28,42 @@ namespace ws {
 // Indices into the intrinsics array, and its size.
 constexpr int kFx = 0, kFy = 1, kCx = 2, kCy = 3, kP1 = 4, kP2 = 5, kNumIntrinsics = 6;
 
+// The distorted normalized point (x_d, y_d) of the ideal point (x, y).
+template <typename Model, typename T>
+void DistortIdeal(const Model& model, const T* intrinsics, const T* coeffs, const T* ideal,
+                  T* distorted) {
+  model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], ideal[0], ideal[1], &distorted[0],
+                &distorted[1]);
+}
+
+// The pixel of a point (x_f, y_f) of the normalized plane.
+template <typename T>
+void ToPixel(const T* intrinsics, const T* normalized, T* pixel) {
+  pixel[0] = intrinsics[kFx] * normalized[0] + intrinsics[kCx];
+  pixel[1] = intrinsics[kFy] * normalized[1] + intrinsics[kCy];
+}
+
+// The pixel of the ideal point (x, y): Project after the coordinate.
+template <typename Model, typename T>
+void ProjectIdeal(const Model& model, const NonRadialField& field, const T* intrinsics,
+                  const T* coeffs, const T* ideal, T* pixel) {
+  T p[2], f[2];
+  DistortIdeal(model, intrinsics, coeffs, ideal, p);
+  field.Evaluate(coeffs + model.NumCoeffs(), p[0], p[1], f);
+  p[0] += f[0];
+  p[1] += f[1];
+  ToPixel(intrinsics, p, pixel);
+}
+
 // Projects the camera-frame point (or direction) X to the pixel uv; false
 // (uv untouched) where the model's coordinate has no ideal point for it
 // (pinhole models: Z <= 0; angle models: straight back).
 template <typename Model, typename T>
-bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel);
-
-// The pixel of the ideal point (x, y): Project after the coordinate.
-template <typename Model, typename T>
-void ProjectIdeal(const Model& model, const T* intrinsics, const T* coeffs, const T* ideal,
-                  T* pixel) {
-  T xd, yd;
-  model.Distort(coeffs, intrinsics[kP1], intrinsics[kP2], ideal[0], ideal[1], &xd, &yd);
-  pixel[0] = intrinsics[kFx] * xd + intrinsics[kCx];
-  pixel[1] = intrinsics[kFy] * yd + intrinsics[kCy];
-}
-
-template <typename Model, typename T>
-bool Project(const Model& model, const T* intrinsics, const T* coeffs, const T* point, T* pixel) {
+bool Project(const Model& model, const NonRadialField& field, const T* intrinsics,
+             const T* coeffs, const T* point, T* pixel) {
   T ideal[2];
   if (!Model::Coordinate::Ideal(point, ideal)) return false;
-  ProjectIdeal(model, intrinsics, coeffs, ideal, pixel);
+  ProjectIdeal(model, field, intrinsics, coeffs, ideal, pixel);
   return true;
 }
 
@@ -107,16 +125,26 @@ bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
   return true;
 }
 
-// The unit ray (X, Y, Z) that projects to the pixel (Z > 0 for the pinhole
-// models; any direction for the angle models); false when Undistort fails.
+// The ideal point of a pixel: the field inverted (NonRadialField::Invert),
+// then the distortion (Undistort); false where either fails.
 template <typename Model>
-bool Unproject(const Model& model, const double* intrinsics, const double* coeffs,
-               const double pixel[2], double ray[3]) {
-  const double distorted[2] = {(pixel[0] - intrinsics[kCx]) / intrinsics[kFx],
-                               (pixel[1] - intrinsics[kCy]) / intrinsics[kFy]};
+bool IdealOfPixel(const Model& model, const NonRadialField& field, const double* intrinsics,
+                  const double* coeffs, const double pixel[2], double ideal[2]) {
+  const double normalized[2] = {(pixel[0] - intrinsics[kCx]) / intrinsics[kFx],
+                                (pixel[1] - intrinsics[kCy]) / intrinsics[kFy]};
+  double distorted[2];
+  return field.Invert(coeffs + model.NumCoeffs(), normalized, distorted) &&
+         Undistort(model, coeffs, intrinsics[kP1], intrinsics[kP2], distorted, ideal);
+}
+
+// The unit ray (X, Y, Z) that projects to the pixel (Z > 0 for the pinhole
+// models; any direction for the angle models); false when IdealOfPixel fails.
+template <typename Model>
+bool Unproject(const Model& model, const NonRadialField& field, const double* intrinsics,
+               const double* coeffs, const double pixel[2], double ray[3]) {
   double ideal[2];
-  if (!Undistort(model, coeffs, intrinsics[kP1], intrinsics[kP2], distorted, ideal)) return false;
-  return Model::Coordinate::Ray(ideal, ray);
+  return IdealOfPixel(model, field, intrinsics, coeffs, pixel, ideal) &&
+         Model::Coordinate::Ray(ideal, ray);
 }
 
 }  // namespace ws

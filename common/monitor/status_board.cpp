@@ -1,11 +1,18 @@
 #include "monitor/status_board.h"
 
+#include <algorithm>
+#include <climits>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 namespace ws {
 namespace {
+
+// A process gone this long leaves the table.
+constexpr int64_t kForgetAfterUs = 300000000;
 
 std::string Format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 std::string Format(const char* fmt, ...) {
@@ -39,9 +46,30 @@ int CoveragePercent(const std::vector<std::vector<int32_t>>& grid) {
   return cells ? 100 * covered / cells : 0;
 }
 
+std::string Who(const widestereo::process_status_t& s) { return s.name + (s.host.empty() ? "" : "@" + s.host); }
+
+// `text` after `prefix`, broken between words into lines of at most `cols`.
+std::vector<std::string> Wrapped(const std::string& prefix, const std::string& text, int cols) {
+  std::vector<std::string> lines;
+  std::string line = prefix;
+  bool empty = true;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    if (!empty && cols > 0 && int(line.size() + 1 + word.size()) > cols) {
+      lines.push_back(line);
+      line = std::string(prefix.size(), ' ');
+      empty = true;
+    }
+    line += (empty ? "" : " ") + word;
+    empty = false;
+  }
+  lines.push_back(line);
+  return lines;
+}
+
 }  // namespace
 
-void StatusBoard::Add(const widestereo::process_status_t& status) {
+void StatusBoard::Add(const widestereo::process_status_t& status, int64_t received_us) {
   const std::string key = status.name + "@" + status.host + ":" + std::to_string(status.pid);
   auto& entry = processes_[key];
   // Rates are taken over at least half a second: a process's last heartbeat
@@ -49,48 +77,127 @@ void StatusBoard::Add(const widestereo::process_status_t& status) {
   if (entry.latest.utime != 0 && (!entry.previous || status.utime - entry.latest.utime >= 500000))
     entry.previous = entry.latest;
   entry.latest = status;
+  entry.heard_us = received_us;
 }
 
 void StatusBoard::Add(const widestereo::calibration_status_t& status) { calibration_ = status; }
 
 void StatusBoard::Add(const widestereo::calibration_health_t& health) { health_ = health; }
 
-std::string StatusBoard::Render() const {
-  std::ostringstream out;
-  out << Format("%-18s %-12s %7s %9s  %-22s %9s %9s %8s %8s %8s\n", "PROCESS", "STATE", "PID",
-                "UPTIME", "CHANNEL", "IN", "OUT", "RATE/s", "DROPPED", "REJECTED");
+void StatusBoard::Add(const widestereo::cloud_stats_t& stats, int64_t received_us) {
+  if (!depth_) depth_ = Depth{stats, received_us, received_us, 0};
+  depth_->latest = stats;
+  depth_->heard_us = received_us;
+  ++depth_->clouds;
+}
+
+std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condensed) const {
+  size_t width = 7;  // "PROCESS"
+  for (const auto& [key, entry] : processes_) width = std::max(width, Who(entry.latest).size());
+  const int w = int(width);
+  std::vector<std::string> lines;
+  lines.push_back(condensed ? Format("%-*s %-14s %7s %8s  %s", w, "PROCESS", "STATE", "PID", "UPTIME",
+                                     "IN / OUT / LOST / SKIPPED (newer frame) / REJECTED, all channels")
+                            : Format("%-*s %-14s %7s %8s  %-22s %9s %9s %8s %7s %8s %8s", w, "PROCESS", "STATE",
+                                     "PID", "UPTIME", "CHANNEL", "IN", "OUT", "RATE/s", "LOST", "SKIPPED",
+                                     "REJECTED"));
   for (const auto& [key, entry] : processes_) {
     const auto& s = entry.latest;
-    const std::string who = s.name + (s.host.empty() ? "" : "@" + s.host);
-    out << Format("%-18.18s %-12.12s %7d %8.0fs\n", who.c_str(), s.state.c_str(), s.pid,
-                  s.uptime_s);
-    for (const auto& c : s.channels) {
-      const double rate = Rate(c, s, entry.previous);
-      out << Format("%-18s %-12s %7s %9s  %-22.22s %9lld %9lld %8s %8lld %8lld\n", "", "", "", "",
-                    c.channel.c_str(), (long long)c.received, (long long)c.published,
-                    rate < 0 ? "-" : Format("%.1f", rate).c_str(), (long long)c.dropped,
-                    (long long)c.rejected);
+    const int64_t silent_us = now_us - entry.heard_us;
+    if (silent_us > kForgetAfterUs) continue;
+    const bool gone = silent_us > kGoneAfterUs;
+    const bool ended = s.state == "exited" || s.state == "failed";
+    const std::string state = gone && !ended ? "gone" : s.state;
+    const std::string uptime = gone ? Format("gone %llds", (long long)(silent_us / 1000000)) : Format("%.0fs", s.uptime_s);
+    std::string line = Format("%-*s %-14.14s %7d %8s", w, Who(s).c_str(), state.c_str(), s.pid, uptime.c_str());
+    if (condensed) {
+      int64_t in = 0, out = 0, lost = 0, skipped = 0, rejected = 0;
+      for (const auto& c : s.channels) {
+        in += c.received;
+        out += c.published;
+        lost += c.dropped;
+        skipped += c.skipped;
+        rejected += c.rejected;
+      }
+      line += Format("  %lld / %lld / %lld / %lld / %lld", (long long)in, (long long)out, (long long)lost,
+                     (long long)skipped, (long long)rejected);
     }
-    if (!s.last_error.empty()) out << "    last error: " << s.last_error << "\n";
+    lines.push_back(line);
+    if (!condensed)
+      for (const auto& c : s.channels) {
+        const double rate = gone ? -1 : Rate(c, s, entry.previous);
+        lines.push_back(Format("%-*s %-14s %7s %8s  %-22s %9lld %9lld %8s %7lld %8lld %8lld", w, "", "", "", "",
+                               c.channel.c_str(), (long long)c.received, (long long)c.published,
+                               rate < 0 ? "-" : Format("%.1f", rate).c_str(), (long long)c.dropped,
+                               (long long)c.skipped, (long long)c.rejected));
+      }
+    if (!s.last_error.empty()) lines.push_back("    last error: " + s.last_error);
   }
-  if (processes_.empty()) out << "(no PROCESS_STATUS heard yet)\n";
+  if (lines.size() == 1) lines.push_back("(no PROCESS_STATUS heard yet)");
+  return lines;
+}
+
+std::vector<std::string> StatusBoard::SummaryLines(int64_t now_us, int cols) const {
+  std::vector<std::string> lines;
+  if (depth_) {
+    const auto& d = *depth_;
+    const auto& stats = d.latest;
+    std::string line = "depth: ";
+    if (now_us - d.heard_us > kGoneAfterUs) {
+      line += Format("no cloud for %llds", (long long)((now_us - d.heard_us) / 1000000));
+    } else {
+      const int points = stats.nstages ? stats.stage_points.back() : 0;
+      const double seconds = (d.heard_us - d.first_us) * 1e-6;
+      line += Format("%d points (frame %lld)", points, (long long)stats.frame_id);
+      line += stats.plane_found ? Format(", plane %.3f m away (inlier RMS %.1f mm)", std::abs(stats.plane_offset),
+                                         stats.inlier_rms * 1e3)
+                                : std::string(", no plane");
+      if (d.clouds > 1 && seconds > 0) line += Format(", %.1f clouds/s", (d.clouds - 1) / seconds);
+    }
+    lines.push_back(line);
+  }
   if (calibration_) {
     const auto& c = *calibration_;
-    out << Format("\ncalibration: %s  views left %d right %d stereo %d  coverage left %d%% "
-                  "right %d%%  rms %s  held-out %s\n",
-                  c.state.c_str(), c.views_left, c.views_right, c.views_stereo,
-                  CoveragePercent(c.coverage_left), CoveragePercent(c.coverage_right),
-                  c.rms < 0 ? "-" : Format("%.3f px", c.rms).c_str(),
-                  c.heldout_rms < 0 ? "-" : Format("%.3f px", c.heldout_rms).c_str());
-    if (!c.hint.empty()) out << "hint: " << c.hint << "\n";
+    lines.push_back(Format("calibration: %s  views left %d right %d stereo %d  coverage left %d%% "
+                           "right %d%%  rms %s  held-out %s",
+                           c.state.c_str(), c.views_left, c.views_right, c.views_stereo,
+                           CoveragePercent(c.coverage_left), CoveragePercent(c.coverage_right),
+                           c.rms < 0 ? "-" : Format("%.3f px", c.rms).c_str(),
+                           c.heldout_rms < 0 ? "-" : Format("%.3f px", c.heldout_rms).c_str()));
+    if (!c.hint.empty())
+      for (const std::string& line : Wrapped("hint: ", c.hint, cols)) lines.push_back(line);
   }
   if (health_) {
     const auto& h = *health_;
-    out << Format("\nhealth: %-10s median |dy| %s  p95 %s  (max %.2f px; %d matches in %d frames)\n",
-                  h.verdict.c_str(), h.dy_median_px < 0 ? "-" : Format("%.3f px", h.dy_median_px).c_str(),
-                  h.dy_p95_px < 0 ? "-" : Format("%.3f px", h.dy_p95_px).c_str(), h.max_dy_px, h.matches,
-                  h.frames);
+    lines.push_back(Format("health: %-10s median |dy| %s  p95 %s  (max %.2f px; %d matches in %d frames)",
+                           h.verdict.c_str(),
+                           h.dy_median_px < 0 ? "-" : Format("%.3f px", h.dy_median_px).c_str(),
+                           h.dy_p95_px < 0 ? "-" : Format("%.3f px", h.dy_p95_px).c_str(), h.max_dy_px,
+                           h.matches, h.frames));
   }
+  return lines;
+}
+
+std::string StatusBoard::Render(int64_t now_us, Screen screen) const {
+  const std::vector<std::string> summary = SummaryLines(now_us, screen.cols);
+  std::vector<std::string> table = ProcessLines(now_us, false);
+  const size_t room = screen.rows > 0 ? size_t(std::max(2, screen.rows - 1)) : SIZE_MAX;  // the cursor's line
+  const size_t gap = summary.empty() ? 0 : 1;
+  if (table.size() + gap + summary.size() > room) table = ProcessLines(now_us, true);
+  if (table.size() + gap + summary.size() > room) {
+    const size_t keep = room > gap + summary.size() + 1 ? room - gap - summary.size() - 1 : 1;
+    const size_t cut = table.size() - std::min(keep, table.size());
+    table.resize(keep);
+    table.push_back(Format("... %zu more lines: a taller terminal shows them", cut));
+  }
+  std::ostringstream out;
+  auto put = [&](const std::string& line) {
+    out << (screen.cols > 0 && int(line.size()) > screen.cols ? line.substr(0, size_t(screen.cols)) : line)
+        << "\n";
+  };
+  for (const auto& line : table) put(line);
+  if (gap) out << "\n";
+  for (const auto& line : summary) put(line);
   return out.str();
 }
 

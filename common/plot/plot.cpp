@@ -126,6 +126,10 @@ void WriteData(const Series& series, const fs::path& path) {
   if (!out) throw PlotError("cannot write " + path.string());
 }
 
+bool HasMissing(const Heatmap& map) {
+  return std::any_of(map.values.begin(), map.values.end(), [](double v) { return !std::isfinite(v); });
+}
+
 // The heat map's data file (gnuplot's `with image`: x y value, a blank
 // line after each row) and its plot clause.
 std::string HeatmapPlot(const Heatmap& map, const fs::path& path) {
@@ -146,7 +150,11 @@ std::string HeatmapPlot(const Heatmap& map, const fs::path& path) {
     out << '\n';
   }
   if (!out) throw PlotError("cannot write " + path.string());
-  return Quote(path.string()) + " using 1:2:3 with image notitle";
+  std::string plot = Quote(path.string()) + " using 1:2:3 with image notitle";
+  if (HasMissing(map))
+    plot += ", " + Quote(path.string()) + " using 1:($3 != $3 ? $2 : 1/0):(" + std::to_string(map.dx / 2) + "):(" +
+            std::to_string(map.dy / 2) + ") with boxxyerror fill solid 1.0 noborder lc rgb '#9a9a9a' notitle";
+  return plot;
 }
 
 // The gnuplot commands drawing one panel, writing its data files.
@@ -163,7 +171,8 @@ std::string PanelScript(const Panel& panel, int panel_index, const TempDir& dir)
   std::string plots;
   if (panel.heatmap) {
     const Heatmap& map = *panel.heatmap;
-    script << "set colorbox\nset cblabel " << Quote(map.label) << "\n"
+    script << "set colorbox\nset cblabel " << Quote(map.label + (HasMissing(map) ? "; grey: " + map.missing : ""))
+           << "\n"
            << "set palette cubehelix negative\n"
            << "set cbrange [0:";
     if (std::isfinite(map.max) && map.max > 0)

@@ -40,12 +40,14 @@ struct Series {
 
 // Values on a regular grid drawn as colours under a panel's series, with a
 // colour bar: cell (i, j) centred at (x0 + i dx, y0 + j dy), row-major
-// (values[j * cols + i]); NaN cells are left blank.
+// (values[j * cols + i]); NaN cells are grey, and the colour bar's label
+// says what they are (`missing`), so that none reads as the scale's 0.
 struct Heatmap {
   int cols = 0, rows = 0;
   double x0 = 0, y0 = 0, dx = 1, dy = 1;
   std::vector<double> values;
   std::string label;        // the colour bar's: what and which unit
+  std::string missing = "no value";  // what a NaN cell means
   double max = NAN;         // top of the colour scale; NaN: the largest value
 };
 

@@ -19,6 +19,10 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   model.distortion.degree = msg.degree;
   model.distortion.knots = msg.knots;
   model.distortion.coeffs = msg.coeffs;
+  model.nonradial.cols = msg.field_cols;
+  model.nonradial.rows = msg.field_rows;
+  std::copy(msg.field_domain, msg.field_domain + 4, model.nonradial.domain.begin());
+  model.nonradial.coeffs = msg.field_coeffs;
   Camera check(model);  // throws std::invalid_argument when inconsistent
   return model;
 }
@@ -63,6 +67,11 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   msg.cy = model.cy;
   msg.p1 = model.p1;
   msg.p2 = model.p2;
+  msg.field_cols = model.nonradial.cols;
+  msg.field_rows = model.nonradial.rows;
+  std::copy(model.nonradial.domain.begin(), model.nonradial.domain.end(), msg.field_domain);
+  msg.field_coeffs = model.nonradial.coeffs;
+  msg.nfield = int32_t(msg.field_coeffs.size());
   return msg;
 }
 

@@ -74,7 +74,9 @@ void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path) {
   try {
     storage.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
-    throw YamlFileError("not YAML that OpenCV reads (the first line must be '%YAML:1.0'): " + e.err);
+    throw YamlFileError(text.rfind("%YAML:1.0", 0) == 0
+                            ? "does not parse as YAML (OpenCV: " + e.err + ")"
+                            : "not YAML that OpenCV reads (the first line must be '%YAML:1.0'): " + e.err);
   } catch (const std::exception& e) {  // OpenCV lets some through, e.g. std::length_error
     throw YamlFileError(std::string("not YAML that OpenCV reads: ") + e.what());
   }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -60,15 +61,23 @@ Process::Process(const ProcessOptions& options)
   if (!options.key_file.empty())
     auth_.emplace(auth::RigKey::FromFile(options.key_file),
                   file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
-  out_ = OpenLcm(options.out_url, "output");
+  if ((file_input_ || options_.batch) && options_.out_url.empty()) {
+    const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
+                                                       : options_.batch_out;
+    options_.out_url = "file://" + std::filesystem::absolute(log).lexically_normal().string() + "?mode=w";
+    log_.Info("batch run: output to " + log + ", nothing on the live bus (--out-url URL publishes)");
+  }
+  out_ = OpenLcm(options_.out_url, "output");
   log_.Info("started (pid " + std::to_string(getpid()) + ", in " +
             (options.in_url.empty() ? "LCM default" : options.in_url) + ", out " +
-            (options.out_url.empty() ? "LCM default" : options.out_url) +
+            (options_.out_url.empty() ? "LCM default" : options_.out_url) +
             (options.config_file.empty() ? "" : ", config " + options.config_file) + ", log " +
             log_.path() + ")");
   if (auth_)
     log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
               "): commands and calibrations are signed, and refused unless signed with it");
+  else if (file_input_)  // a batch run obeys no peer: only the log file needs to say it
+    log_.Detail("no --key-file: commands and calibrations are unauthenticated");
   else
     log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
 }
@@ -150,7 +159,7 @@ int Process::Run() {
 int Process::Finish() {
   for (auto& fn : at_exit_) fn();
   at_exit_.clear();
-  PublishStatus();
+  PublishStatus(exit_code_ ? "failed" : "exited");  // the last heartbeat says it ends
   log_.Detail("final: " + ProgressLine());
   ShowProgress();
   log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
@@ -244,7 +253,7 @@ void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t
   }
 }
 
-void Process::PublishStatus() {
+void Process::PublishStatus(const char* state) {
   widestereo::process_status_t status;
   status.utime = Now();
   status.name = options_.name;
@@ -253,7 +262,7 @@ void Process::PublishStatus() {
   status.uptime_s = (WallMicros() - start_wall_us_) * 1e-6;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    status.state = state_;
+    status.state = state ? state : state_;
     status.last_error = last_error_;
     for (const auto& [name, c] : counters_) {
       widestereo::channel_counters_t cc;
@@ -261,6 +270,7 @@ void Process::PublishStatus() {
       cc.received = c->received;
       cc.published = c->published;
       cc.dropped = c->dropped;
+      cc.skipped = c->skipped;
       cc.rejected = c->rejected;
       status.channels.push_back(cc);
     }
@@ -279,6 +289,7 @@ std::string Process::ProgressLine() {
     for (const auto& [name, c] : counters_) {
       line << " | " << name << " in " << c->received << " out " << c->published;
       if (c->dropped) line << " dropped " << c->dropped;
+      if (c->skipped) line << " skipped " << c->skipped;
       if (c->rejected) line << " rejected " << c->rejected;
     }
   }

@@ -9,6 +9,11 @@
 // Subscribe (auth/message_auth.h): one that fails is rejected with the reason.
 // Without a key they go unsigned and unchecked, and the log says so at start.
 //
+// Batch runs. With a file:// input (or files the process reads itself,
+// ProcessOptions::batch) and no --out-url, the output goes to a log file
+// (ProcessOptions::batch_out), never to the LCM default: a replay on a
+// robot's network must not reach the live rig.
+//
 // Clock. Live, the process clock is the wall clock. With a file:// input it is
 // the utime of the newest input message, so that timers and heartbeats fall at
 // the same places in the output on every replay of the same log.
@@ -38,7 +43,8 @@ namespace ws {
 struct ChannelCounters {
   std::atomic<int64_t> received{0};
   std::atomic<int64_t> published{0};
-  std::atomic<int64_t> dropped{0};
+  std::atomic<int64_t> dropped{0};  // lost
+  std::atomic<int64_t> skipped{0};  // replaced by a newer frame, by design
   std::atomic<int64_t> rejected{0};
 };
 
@@ -117,7 +123,8 @@ class Process {
   template <class Msg>
   void PublishEncoded(const std::string& channel, const Msg& msg);
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
-  void PublishStatus();
+  // The heartbeat, with `state` instead of the process's own if given.
+  void PublishStatus(const char* state = nullptr);
   void ShowProgress();
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();

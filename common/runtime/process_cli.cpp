@@ -6,6 +6,28 @@
 #include "runtime/yaml_config.h"
 
 namespace ws {
+namespace {
+
+// The first option a CLI11 message names ("--rate" of "Could not convert:
+// --rate = fast"), or "".
+std::string OptionNamed(const std::string& message) {
+  const size_t at = message.find("--");
+  if (at == std::string::npos) return "";
+  const size_t end = message.find_first_not_of(
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_", at + 2);
+  return message.substr(at, end == std::string::npos ? std::string::npos : end - at);
+}
+
+// Whether `option` ("--rate") is among the arguments, alone or as --rate=X.
+bool OnCommandLine(const std::string& option, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == option || arg.rfind(option + "=", 0) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 ProcessCli::ProcessCli(std::string name, std::string description)
     : app_(std::move(description), name) {
@@ -22,7 +44,7 @@ ProcessCli::ProcessCli(std::string name, std::string description)
       ->capture_default_str();
   app_.add_option("--key-file", options_.key_file,
                   "The rig key (a secret only its owner may read): commands and calibrations are then "
-                  "signed, and refused unless signed with it (README, Security)");
+                  "signed, and refused unless signed with it (docs/security.md)");
   app_.add_flag("--quiet", options_.quiet, "Only errors on the terminal (the log file gets all)");
 }
 
@@ -31,12 +53,16 @@ std::optional<int> ProcessCli::Parse(int argc, char** argv) {
     app_.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app_.exit(e);  // --help
-    // Name the config file and say "unknown option" where CLI11 says "INI".
+    // Name the config file where the error is in it, and say "unknown
+    // option" where CLI11 says "INI".
     std::string why = e.what();
     const std::string ini = "INI was not able to parse ";
     if (why.rfind(ini, 0) == 0) why = "unknown option '" + why.substr(ini.size()) + "'";
     const CLI::Option* config = app_.get_config_ptr();
-    const std::string file = config && config->count() ? config->as<std::string>() + ": " : "";
+    const std::string option = OptionNamed(why);
+    const bool in_config = dynamic_cast<const CLI::ConfigError*>(&e) != nullptr ||
+                           (!option.empty() && !OnCommandLine(option, argc, argv));
+    const std::string file = in_config && config && config->count() ? config->as<std::string>() + ": " : "";
     std::cerr << options_.name << ": " << file << why << "\nRun with --help for more information.\n";
     return e.get_exit_code();
   }

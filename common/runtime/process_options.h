@@ -13,7 +13,12 @@ struct ProcessOptions {
   std::string name;
   std::string config_file;
   std::string in_url;   // "" = LCM's default (LCM_DEFAULT_URL or udpm multicast)
-  std::string out_url;
+  std::string out_url;  // "" with a file:// input: a log file (batch_out), never the live bus
+  // A batch run (a file:// input, or `batch`: files read by the process
+  // itself) without --out-url writes its output to an LCM log file,
+  // `batch_out`; "" = <log_dir>/<name>.lcmlog.
+  bool batch = false;
+  std::string batch_out;
   std::string log_dir = "logs";
   std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
   bool quiet = false;

@@ -13,7 +13,7 @@ std::string Where(const YAML::Node& node) {
 
 std::string ScalarText(const YAML::Node& node, const std::string& key) {
   if (!node.IsScalar())
-    throw CLI::ConversionError("config key '" + key + "' (" + Where(node) +
+    throw CLI::ConfigError("config key '" + key + "' (" + Where(node) +
                                ") must be a scalar or a list of scalars");
   return node.Scalar();
 }
@@ -46,11 +46,11 @@ std::vector<CLI::ConfigItem> YamlConfig::from_config(std::istream& input) const 
   try {
     root = YAML::Load(input);
   } catch (const YAML::Exception& e) {
-    throw CLI::ConversionError("config is not valid YAML: " + std::string(e.what()));
+    throw CLI::ConfigError("config is not valid YAML: " + std::string(e.what()));
   }
   std::vector<CLI::ConfigItem> items;
   if (root.IsNull()) return items;
-  if (!root.IsMap()) throw CLI::ConversionError("config must be a YAML map of option: value");
+  if (!root.IsMap()) throw CLI::ConfigError("config must be a YAML map of option: value");
   for (const auto& entry : root) {
     CLI::ConfigItem item;
     item.name = entry.first.as<std::string>();

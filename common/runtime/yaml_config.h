@@ -12,7 +12,7 @@ class YamlConfig : public CLI::Config {
  public:
   std::string to_config(const CLI::App* app, bool default_also, bool write_description,
                         std::string prefix) const override;
-  // Throws CLI::ConversionError naming the line when the YAML does not parse,
+  // Throws CLI::ConfigError naming the line when the YAML does not parse,
   // and for anything but a flat map of scalars and sequences of scalars.
   std::vector<CLI::ConfigItem> from_config(std::istream& input) const override;
 };

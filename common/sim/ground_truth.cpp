@@ -4,13 +4,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "models/model_registry.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
-
-// The coefficients' key, as in calibration files: alpha for the B-splines (bspline, bspline_theta), else k.
-const char* CoefficientKey(const std::string& kind) { return kind.rfind("bspline", 0) == 0 ? "alpha" : "k"; }
 
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double max_theta) {
   fs << "{";
@@ -21,6 +19,10 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
   fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
   fs << "fx" << m.fx << "fy" << m.fy << "cx" << m.cx << "cy" << m.cy << "p1" << m.p1 << "p2" << m.p2;
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
+  if (!m.nonradial.empty())  // a tilted sensor (sensor_tilt.h)
+    fs << "nonradial_cols" << m.nonradial.cols << "nonradial_rows" << m.nonradial.rows
+       << "nonradial_domain" << std::vector<double>(m.nonradial.domain.begin(), m.nonradial.domain.end())
+       << "nonradial_coeffs" << m.nonradial.coeffs;
   fs << "K" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
   fs << "field_deg" << 2 * max_theta * 180 / M_PI;
   fs << "}";
@@ -112,7 +114,16 @@ CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::str
   m.p2 = r.Real(node, "p2", where);
   m.image_width = r.Int(node, "image_width", where);
   m.image_height = r.Int(node, "image_height", where);
+  if (!node["nonradial_cols"].isNone()) {
+    m.nonradial.cols = r.Int(node, "nonradial_cols", where);
+    m.nonradial.rows = r.Int(node, "nonradial_rows", where);
+    const std::vector<double> domain = r.Reals(node, "nonradial_domain", where);
+    if (domain.size() != 4) r.Fail(where + "nonradial_domain", "must be 4 numbers");
+    std::copy(domain.begin(), domain.end(), m.nonradial.domain.begin());
+    m.nonradial.coeffs = r.Reals(node, "nonradial_coeffs", where);
+  }
   try {
+    NonRadialField::FromData(m.nonradial);
     Camera camera(m);
   } catch (const std::exception& e) {
     r.Fail(where.substr(0, where.size() - 1), std::string("not a valid camera model: ") + e.what());

@@ -106,6 +106,9 @@ std::string Key(const CameraModel& m, double max_theta) {
   for (double k : m.distortion.knots) out << ' ' << k;
   out << " |";
   for (double c : m.distortion.coeffs) out << ' ' << c;
+  out << " | " << m.nonradial.cols << ' ' << m.nonradial.rows;
+  for (double d : m.nonradial.domain) out << ' ' << d;
+  for (double c : m.nonradial.coeffs) out << ' ' << c;
   return out.str();
 }
 
@@ -121,7 +124,7 @@ RayMap::RayMap(const CameraModel& model, double max_theta)
                                        : cv::Vec3f(0, 0, 0);
   };
   auto vertex = [&](int i, int j) { return cv::Vec2d(i - 0.5, j - 0.5); };
-  if (model.p1 == 0 && model.p2 == 0) {
+  if (model.p1 == 0 && model.p2 == 0 && model.nonradial.empty()) {
     double rd_max = 0;
     for (int j : {0, rows_ - 1})
       for (int i : {0, cols_ - 1}) {

@@ -7,8 +7,8 @@
 // lens map is smooth, so this differs from the exact ray by far less than
 // 0.001 px (MaxInterpolationErrorPx measures it).
 //
-// Unprojection: for a lens without tangential terms (p1 = p2 = 0) the map is
-// radial, and the ideal radius of each distorted radius is taken from a dense
+// Unprojection: for a lens without tangential terms (p1 = p2 = 0) or a
+// non-radial field the map is radial, and the ideal radius of each distorted radius is taken from a dense
 // table of exact inverses (Newton on r (1 + D(r))) by cubic Hermite
 // interpolation; otherwise every vertex is unprojected by Camera::Unproject.
 // Vertices where the model cannot be inverted, or whose ray is more than

@@ -1,8 +1,5 @@
 #include "source/dir_source.h"
 
-#include <algorithm>
-#include <filesystem>
-#include <set>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
@@ -10,16 +7,6 @@
 
 namespace ws {
 namespace {
-
-namespace fs = std::filesystem;
-
-bool IsImage(const fs::path& path) {
-  static const std::set<std::string> kExtensions = {".jpg", ".jpeg", ".png", ".bmp", ".pgm",
-                                                    ".ppm", ".pnm", ".tif", ".tiff"};
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  return kExtensions.count(ext) > 0;
-}
 
 cv::Mat ReadImage(const std::string& path) {
   cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
@@ -29,62 +16,45 @@ cv::Mat ReadImage(const std::string& path) {
   return image;
 }
 
+ImageFolder StereoOrMonoFolder(const std::string& dir, bool mono) {
+  ImageFolder folder = FindImageFolder(dir, mono);
+  if (!mono && folder.layout == FolderLayout::kOneCamera)
+    throw std::runtime_error("no stereo pairs in " + dir +
+                             ": no left*/right* names, no left/ + right/ or cam0/ + cam1/ folders (" +
+                             std::to_string(folder.pairs.size()) + " images; for a one-camera rig use --mono)");
+  return folder;
+}
+
 }  // namespace
 
-fs::directory_iterator OpenDir(const std::string& dir) {
-  std::error_code error;
-  fs::directory_iterator it(dir, error);
-  if (error) throw std::runtime_error("cannot read image directory " + dir + ": " + error.message());
-  return it;
-}
-
-void SortByLeft(std::vector<ImagePairPaths>* pairs) {
-  std::sort(pairs->begin(), pairs->end(),
-            [](const ImagePairPaths& a, const ImagePairPaths& b) { return a.left < b.left; });
-}
-
-std::vector<ImagePairPaths> FindImages(const std::string& dir) {
-  std::vector<ImagePairPaths> images;
-  for (const auto& entry : OpenDir(dir))
-    if (entry.is_regular_file() && IsImage(entry.path())) images.push_back({entry.path().string(), ""});
-  if (images.empty()) throw std::runtime_error("no images in " + dir);
-  SortByLeft(&images);
-  return images;
-}
-
-std::vector<ImagePairPaths> FindImagePairs(const std::string& dir) {
-  std::vector<ImagePairPaths> pairs;
-  for (const auto& entry : OpenDir(dir)) {
-    const std::string name = entry.path().filename().string();
-    const size_t at = name.find("left");
-    if (!entry.is_regular_file() || !IsImage(entry.path()) || at == std::string::npos) continue;
-    const fs::path right = entry.path().parent_path() / (name.substr(0, at) + "right" + name.substr(at + 4));
-    if (fs::is_regular_file(right)) pairs.push_back({entry.path().string(), right.string()});
-  }
-  if (pairs.empty())
-    throw std::runtime_error("no left/right image pairs in " + dir +
-                             " (names must differ only in 'left' and 'right')");
-  SortByLeft(&pairs);
-  return pairs;
-}
-
 DirSource::DirSource(const std::string& dir, bool loop, bool mono)
-    : dir_(dir), mono_(mono), pairs_(mono ? FindImages(dir) : FindImagePairs(dir)), loop_(loop) {}
+    : DirSource(dir, StereoOrMonoFolder(dir, mono), loop) {}
+
+DirSource::DirSource(std::string dir, ImageFolder folder, bool loop)
+    : dir_(std::move(dir)), mono_(folder.layout == FolderLayout::kOneCamera), folder_(std::move(folder)), loop_(loop) {
+  events_.push_back(dir_ + ": " + std::to_string(folder_.pairs.size()) + (mono_ ? " images, " : " pairs, ") +
+                    LayoutName(folder_.layout));
+  for (const std::string& alone : folder_.unpaired)
+    events_.push_back("warning: " + ImageName(alone, dir_) + " has no partner image: left out");
+}
+
+std::vector<std::string> DirSource::TakeEvents() { return std::move(events_); }
 
 std::optional<StereoPair> DirSource::Next() {
-  if (next_ == pairs_.size()) {
+  if (next_ == folder_.pairs.size()) {
+    if (read_ == 0)
+      throw std::runtime_error("nothing in " + dir_ + " could be read as " +
+                               (mono_ ? "an image" : "two images of one size and type"));
     if (!loop_) return std::nullopt;
-    if (consecutive_unreadable_ >= pairs_.size())
-      throw std::runtime_error("no pair in the directory can be read as two images of one size");
     next_ = 0;
   }
-  const ImagePairPaths& paths = pairs_[next_++];
+  const ImagePairPaths& paths = folder_.pairs[next_++];
   StereoPair pair;
   pair.left = ReadImage(paths.left);
-  pair.label = fs::path(paths.left).filename().string();
+  pair.label = ImageName(paths.left, dir_);
   if (!mono_) {
     pair.right = ReadImage(paths.right);
-    pair.label += " + " + fs::path(paths.right).filename().string();
+    pair.label += " + " + ImageName(paths.right, dir_);
   }
   const bool readable = mono_ ? !pair.left.empty()
                               : !pair.left.empty() && !pair.right.empty() &&
@@ -94,10 +64,8 @@ std::optional<StereoPair> DirSource::Next() {
     pair.label = "unreadable, or two images of different size or type: " + pair.label;
     pair.left = pair.right = cv::Mat();
     ++unreadable_;
-    ++consecutive_unreadable_;
   } else {
     ++read_;
-    consecutive_unreadable_ = 0;
   }
   return pair;
 }

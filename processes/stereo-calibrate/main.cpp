@@ -1,13 +1,29 @@
 // stereo-calibrate: collects board corners from STEREO_CORNERS, tells the
 // person holding the board where corners are still missing, solves the
 // stereo calibration on a 'solve' command (or, with --once, at the end of a
-// replayed log) and publishes and writes it.
+// replayed log) and writes and publishes it. With --images it is the whole
+// chain in one process: a folder of images to a calibration file, no bus.
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <thread>
 
 #include "calib/calibrate_node.h"
+#include "calib/folder_corners.h"
+#include "lcm_io/lcm_log.h"
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"
 #include "runtime/process_cli.h"
+
+namespace {
+
+// calib.yaml -> calib.SUFFIX, beside it.
+std::string Beside(const std::string& file, const std::string& suffix) {
+  std::filesystem::path path(file);
+  return path.replace_extension(suffix).string();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-calibrate",
@@ -16,16 +32,37 @@ int main(int argc, char** argv) {
                      "polynomial distortion, R, T and every board pose). Publishes "
                      "CALIBRATION_STATUS (coverage and a hint) every second and, after a solve "
                      "(a 'solve' command on STEREO_COMMAND, or --once at the end of a replayed "
-                     "log), STEREO_CALIBRATION; writes the calibration file and report.");
+                     "log), STEREO_CALIBRATION; writes the calibration file and report.\n\n"
+                     "A folder of images to a calibration, with no bus:\n"
+                     "  stereo-calibrate --images DIR --board chessboard:9x6:0.025 --out calib.yaml\n\n"
+                     "Batch runs (--images, or a file:// --in-url) never publish on the live bus: without "
+                     "--out-url their output goes to a log file beside the report. A calibration whose file "
+                     "cannot be written is not published.");
   ws::calib::NodeOptions node;
   ws::calib::CalibrationOptions& calib = node.calibration;
-  std::string model = "bspline", flow = "joint", loss = "none", state, knots = "auto";
+  std::string model = "all", flow = "joint", loss = "none", state, knots = "auto";
+  std::string outliers = "auto", warp = "auto", nonradial = "auto";
+  std::string images, board;
+  bool mono = false;
   auto& app = cli.app();
+  app.add_option("--images", images,
+                 "A folder of calibration images: left*/right* names, left/ + right/ or cam0/ + cam1/ "
+                 "folders, or one camera's images. Finds the board (--board) in every image and solves "
+                 "at once, in this process (no bus). Beside --out go NAME.report.json, NAME.plots/, "
+                 "NAME.corners.lcmlog (the corners: --in-url solves them again) and NAME.lcmlog (the "
+                 "messages, not published)");
+  app.add_option("--board", board,
+                 "With --images: chessboard:COLSxROWS:SQUARE or charuco:COLSxROWS:SQUARE:MARKER:DICT "
+                 "(inner corners, metres), as stereo-detect's");
+  app.add_flag("--mono", mono, "With --images: every image of the folder alone, a one-camera rig");
   std::vector<std::string> models = ws::ModelKinds();
   models.push_back("all");
   app.add_option("--model", model,
                  "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "
-                 "fisheye lenses beyond 180 degrees) or all (Table II; the first solved is published)")
+                 "fisheye lenses beyond 180 degrees) or all: every model solved (Table II), the "
+                 "one with the lowest held-out RMS (the fewest parameters within the fold-to-fold "
+                 "noise of it) written to --out and published; a model that cannot follow the lens "
+                 "is reported (docs/calibration.md)")
       ->check(CLI::IsMember(models))
       ->capture_default_str();
   app.add_option("--knots", knots,
@@ -50,14 +87,22 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--robust-scale", calib.robust_scale_px, "Robust loss scale, pixels")
       ->capture_default_str();
-  app.add_option(
-         "--outlier-sigma", calib.outlier_sigma,
-         "Leave out corners farther than this many sigma from their projection (0: keep all)")
-      ->check(CLI::NonNegativeNumber)
+  app.add_option("--outlier-sigma", outliers,
+                 "Corners left out as outliers: auto (farther from their projection than "
+                 "sigma sqrt(2 ln 2N), Chauvenet's criterion for N corners of robust noise "
+                 "sigma), K (farther than K sigma, at least 0.25 px) or off")
       ->capture_default_str();
-  app.add_flag("--board-warp", calib.board_warp,
-               "Estimate the board's bow (mrcal's calobject_warp paraboloid; reported in mm) "
-               "with everything else");
+  app.add_option("--board-warp", warp,
+                 "The board's bow (mrcal's calobject_warp paraboloid; reported in mm): auto "
+                 "(estimated, kept where it lowers the held-out RMS beyond the fold-to-fold "
+                 "noise), on or off")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
+      ->capture_default_str();
+  app.add_option("--nonradial", nonradial,
+                 "The lens model's non-radial part, a smooth 2-D field over the image: auto "
+                 "(grids of 4 to 16 control points across tried, the simplest with the lowest "
+                 "held-out RMS kept, none included), none, or COLSxROWS")
+      ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
       ->capture_default_str();
@@ -71,7 +116,7 @@ int main(int argc, char** argv) {
   app.add_flag("--once", node.once,
                "Solve at the end of a file:// input (or at the first solve command) and exit");
   app.add_option("--out", node.out_yaml,
-                 "Calibration file to write (YAML, cv::FileStorage) of the first model; with several "
+                 "Calibration file to write (YAML, cv::FileStorage) of the model published; with several "
                  "models also FILE.MODEL.yaml for each (calib.poly6.yaml); a 'save path=NAME' command writes "
                  "only NAME in its folder");
   app.add_option("--report", node.report_json,
@@ -91,19 +136,58 @@ int main(int argc, char** argv) {
     node.models = ws::calib::ParseModelList(model);
     calib.model = node.models.front();
     calib.knots = ws::calib::ParseKnots(knots);
+    calib.outliers = ws::calib::ParseOutlierRule(outliers, &calib.outlier_sigma);
+    ws::calib::ParseFieldRule(nonradial, &calib);
+    calib.board_warp = warp == "on"    ? ws::calib::WarpRule::kEstimated
+                       : warp == "off" ? ws::calib::WarpRule::kFlat
+                                       : ws::calib::WarpRule::kAuto;
     calib.flow = flow == "paper" ? ws::calib::StereoFlow::kPaper : ws::calib::StereoFlow::kJoint;
     calib.robust_loss = loss == "huber"    ? ws::calib::RobustLoss::kHuber
                         : loss == "cauchy" ? ws::calib::RobustLoss::kCauchy
                                            : ws::calib::RobustLoss::kNone;
     node.session.min_views = calib.min_views;
-    const bool replay = cli.options().in_url.rfind("file://", 0) == 0;
-    if (state.empty() && !replay) state = cli.options().log_dir + "/stereo-calibrate-views.lcmlog";
+    ws::ProcessOptions options = cli.options();
+    if (!images.empty()) {
+      if (!options.in_url.empty())
+        throw std::invalid_argument("--images reads the folder itself: give --images or --in-url, not both");
+      if (board.empty())
+        throw std::invalid_argument("--images needs --board, e.g. chessboard:9x6:0.025 (9x6 inner corners, "
+                                    "25 mm squares)");
+      if (node.out_yaml.empty()) throw std::invalid_argument("--images needs --out CALIB.yaml");
+      if (node.report_json.empty()) node.report_json = Beside(node.out_yaml, ".report.json");
+      if (node.plot_dir.empty()) node.plot_dir = Beside(node.out_yaml, ".plots");
+      options.in_url = "file://" + std::filesystem::absolute(Beside(node.out_yaml, ".corners.lcmlog")).string() +
+                       "?speed=0";
+      node.once = true;
+      if (app.get_option("--log-dir")->count() == 0)  // the text log beside the calibration too
+        options.log_dir = std::filesystem::path(node.out_yaml).parent_path().string();
+      if (options.log_dir.empty()) options.log_dir = ".";
+    } else if (!board.empty() || mono) {
+      throw std::invalid_argument("--board and --mono go with --images (live, stereo-detect finds the board)");
+    }
+    const bool replay = options.in_url.rfind("file://", 0) == 0;
+    if (state.empty() && !replay) state = options.log_dir + "/stereo-calibrate-views.lcmlog";
     node.session.state_path = state == "none" ? "" : state;
+    if (!node.out_yaml.empty() || !node.report_json.empty())
+      options.batch_out = Beside(node.out_yaml.empty() ? node.report_json : node.out_yaml, ".lcmlog");
     ws::calib::CheckOptions(calib);
     ws::RequireWritableFolderOf("--out", node.out_yaml);
     ws::RequireWritableFolderOf("--report", node.report_json);
+    const std::optional<ws::StereoCornerFinder> finder =
+        images.empty() ? std::nullopt
+                       : std::optional<ws::StereoCornerFinder>(std::in_place, ws::ParseBoardSpec(board),
+                                                               ws::kDefaultChessboardMethod);
 
-    ws::Process process(cli.options());
+    ws::Process process(options);
+    if (finder) {
+      const std::string corners = ws::LcmFileUrlPath(options.in_url);
+      const auto found = ws::calib::DetectFolder(images, mono, *finder,
+                                                 std::max(1, int(std::thread::hardware_concurrency())),
+                                                 corners, process.log());
+      node.frame_names = found.names;
+      process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
+                         corners + "?speed=0' --once)");
+    }
     ws::calib::CalibrateNode calibrate(process, node);
     calibrate.Start();
     return process.Run();

@@ -3,7 +3,7 @@
 //   stereo-command save --target stereo-cloud (write the newest filtered cloud as PCD)
 //   stereo-command reset / restore            (stereo-calibrate: archive the views / bring them back)
 //   stereo-command refine --target stereo-health (repair the extrinsics from the live matches)
-// With --key-file the command is signed with the rig key (README, Security).
+// With --key-file the command is signed with the rig key (docs/security.md).
 #include <cstdio>
 
 #include "lcm_io/channels.h"

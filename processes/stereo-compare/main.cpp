@@ -85,9 +85,9 @@ int main(int argc, char** argv) {
       diffs.emplace_back(side == 0 ? "left" : "right",
                          CompareProjection(ca, cb, radius, o.cols, o.rows));
     }
-    const std::string title = o.b + " (" + b.format + " " + b.left->Name() + ") against " + o.a +
-                              " (" + a.format + " " + a.left->Name() + ")";
-    std::printf("%s\n", title.c_str());
+    const std::string title = "difference of " + o.b + " (" + b.format + " " + b.left->Name() +
+                              ") from " + o.a + " (" + a.format + " " + a.left->Name() + ")";
+    std::printf("%s: %s's pixel rays projected through %s\n", title.c_str(), o.a.c_str(), o.b.c_str());
     for (const auto& [name, d] : diffs)
       std::printf("%-5s: rms %.4f px, median %.4f px, max %.4f px over %d grid points; rotation "
                   "%.4f deg fitted to %d points\n",

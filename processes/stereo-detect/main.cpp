@@ -23,8 +23,10 @@ int main(int argc, char** argv) {
                  "(inner corners, metres; DICT an OpenCV ArUco dictionary, e.g. DICT_5X5_100)")
       ->capture_default_str();
   app.add_option("--chessboard-detector", chessboard_detector,
-                 "sb (findChessboardCornersSB) or classic (findChessboardCorners + cornerSubPix)")
-      ->check(CLI::IsMember({"sb", "classic"}))
+                 "sb (findChessboardCornersSB) or classic (findChessboardCorners + cornerSubPix), both "
+                 "then refined to saddle points; or opencv (OpenCV's own findChessboardCorners with "
+                 "adaptive threshold + cornerSubPix, no more: for comparison)")
+      ->check(CLI::IsMember({"sb", "classic", "opencv"}))
       ->capture_default_str();
   app.add_option("--workers", workers, "Detection threads (default: one per core)")->check(CLI::Range(1, 256));
   app.add_option("--max-in-flight", max_in_flight,

@@ -136,12 +136,18 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
       rig.data.left.views[v].image[i] += Eigen::Vector2d(3.0, -4.0);
       ++moved;
     }
+  options.outliers = OutlierRule::kOff;
   const CameraCalibration plain = CalibrateCamera(rig.data.left, options);
   EXPECT_EQ(plain.outliers, 0);
   EXPECT_GT(plain.rms_px, 1.5 * floor);
-  options.outlier_sigma = 5;
+  for (const OutlierRule rule : {OutlierRule::kSigma, OutlierRule::kChauvenet}) {
+    options.outliers = rule;
+    options.outlier_sigma = 5;
+    const CameraCalibration robust = CalibrateCamera(rig.data.left, options);
+    EXPECT_EQ(robust.outliers, moved) << (rule == OutlierRule::kSigma ? "5 sigma" : "Chauvenet");
+  }
+  options.outliers = OutlierRule::kSigma;
   const CameraCalibration robust = CalibrateCamera(rig.data.left, options);
-  EXPECT_EQ(robust.outliers, moved);
   int flagged_moved = 0;
   for (const CornerResidual& r : robust.residuals)
     flagged_moved +=
@@ -150,7 +156,7 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
   EXPECT_NEAR(robust.rms_px, floor, 0.1 * floor);
 
   // A robust loss instead: the moved corners pull the camera far less.
-  options.outlier_sigma = 0;
+  options.outliers = OutlierRule::kOff;
   options.robust_loss = RobustLoss::kCauchy;
   options.robust_scale_px = 0.5;
   const CameraCalibration cauchy = CalibrateCamera(rig.data.left, options);

@@ -2,7 +2,8 @@
 // differentiated by its local coefficients only, the chain rule split at the
 // ideal point) against central differences of its own residuals, for every
 // block, with the board pose in the camera's frame and via the extrinsic,
-// on every test camera and on a spline of 31 coefficients.
+// on every test camera, on a spline of 31 coefficients and with a
+// non-radial field.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,9 +32,10 @@ ViewPoints Board() {
   return points;
 }
 
-void CheckJacobians(const AnyDistortionModel& model, std::vector<std::vector<double>> blocks,
-                    bool via_extrinsic, const std::string& where) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeCost(model, Board(), via_extrinsic));
+void CheckJacobians(const AnyDistortionModel& model, const NonRadialField& field,
+                    std::vector<std::vector<double>> blocks, bool via_extrinsic,
+                    const std::string& where) {
+  std::unique_ptr<ceres::CostFunction> cost(MakeCost(model, field, Board(), via_extrinsic));
   const int rows = cost->num_residuals();
   ASSERT_EQ(cost->parameter_block_sizes().size(), blocks.size()) << where;
   std::vector<double*> parameters;
@@ -69,11 +71,13 @@ void CheckJacobians(const AnyDistortionModel& model, std::vector<std::vector<dou
 }
 
 void CheckBothWays(const AnyDistortionModel& model, const std::vector<double>& intrinsics,
-                   const std::vector<double>& coeffs, const std::string& name) {
+                   const std::vector<double>& coeffs, const std::string& name,
+                   const NonRadialField& field = NonRadialField()) {
   const std::vector<double> warp{2e-3, -1e-3}, pose{0.25, -0.35, 0.1, 0.02, -0.01, 0.3},
       extrinsic{0.01, 0.02, -0.015, -0.12, 0.002, 0.004};
-  CheckJacobians(model, {intrinsics, coeffs, warp, pose}, false, name + ", board in its frame");
-  CheckJacobians(model, {intrinsics, coeffs, warp, pose, extrinsic}, true,
+  CheckJacobians(model, field, {intrinsics, coeffs, warp, pose}, false,
+                 name + ", board in its frame");
+  CheckJacobians(model, field, {intrinsics, coeffs, warp, pose, extrinsic}, true,
                  name + ", board via the extrinsic");
 }
 
@@ -99,6 +103,20 @@ TEST(ViewCostJacobians, ThirtyOneCoefficientSplineMatchesCentralDifferences) {
     for (size_t i = 0; i < coeffs.size(); ++i) coeffs[i] = 0.02 * std::sin(0.7 * i) - 0.003 * i;
     CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, kind + " 31");
   }
+}
+
+// A 7 x 5 field over the board's part of the image on every model: each
+// corner reads 16 of its 70 coefficients, and (x_d, y_d) moves the field.
+TEST_P(ViewCostJacobians, WithANonRadialFieldMatchCentralDifferences) {
+  const TestCamera& test = GetParam();
+  const auto intrinsics = test.model.Intrinsics();
+  const AnyDistortionModel model = MakeModel(test.model.distortion, test.which);
+  std::vector<double> coeffs = std::visit(
+      [&](const auto& m) { return m.EstimatedCoeffs(test.model.distortion.coeffs); }, model);
+  const NonRadialField field(7, 5, {-1.2, 1.2, -0.9, 0.9});
+  for (int k = 0; k < field.NumCoeffs(); ++k) coeffs.push_back(2e-3 * std::sin(1.3 * k));
+  CheckBothWays(model, {intrinsics.begin(), intrinsics.end()}, coeffs, test.name + " with a field",
+                field);
 }
 
 }  // namespace

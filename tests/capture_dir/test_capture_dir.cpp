@@ -10,6 +10,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "source/dir_source.h"
+#include "source/image_folder.h"
 #include "test_support.h"
 #include "widestereo/process_status_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -22,7 +23,9 @@ void WriteImage(const std::string& path, int value, int width = 32, int height =
   cv::imwrite(path, cv::Mat(height, width, CV_8UC1, cv::Scalar(value)));
 }
 
-TEST(DirSource, PairsNamesThatDifferOnlyInLeftAndRight) {
+std::string Name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+TEST(ImageFolder, PairsNamesThatDifferOnlyInLeftAndRightAndNamesTheImagesAlone) {
   const std::string dir = TempDir("pairs");
   WriteImage(dir + "/left_03.png", 3);
   WriteImage(dir + "/right_03.png", 103);
@@ -30,16 +33,65 @@ TEST(DirSource, PairsNamesThatDifferOnlyInLeftAndRight) {
   WriteImage(dir + "/right_01.png", 101);
   WriteImage(dir + "/left_02.png", 2);  // no right: not a pair
   std::ofstream(dir + "/notes_left.txt") << "not an image";
-  const auto pairs = ws::FindImagePairs(dir);
-  ASSERT_EQ(pairs.size(), 2u);
-  EXPECT_EQ(std::filesystem::path(pairs[0].left).filename(), "left_01.png");
-  EXPECT_EQ(std::filesystem::path(pairs[0].right).filename(), "right_01.png");
-  EXPECT_EQ(std::filesystem::path(pairs[1].right).filename(), "right_03.png");
+  const ws::ImageFolder folder = ws::FindImageFolder(dir);
+  EXPECT_EQ(folder.layout, ws::FolderLayout::kLeftRightNames);
+  ASSERT_EQ(folder.pairs.size(), 2u);
+  EXPECT_EQ(Name(folder.pairs[0].left), "left_01.png");
+  EXPECT_EQ(Name(folder.pairs[0].right), "right_01.png");
+  EXPECT_EQ(Name(folder.pairs[1].right), "right_03.png");
+  ASSERT_EQ(folder.unpaired.size(), 1u);
+  EXPECT_EQ(Name(folder.unpaired[0]), "left_02.png");
 }
 
-TEST(DirSource, EmptyOrMissingDirectoryIsAClearError) {
-  EXPECT_THROW(ws::FindImagePairs(TempDir("none")), std::runtime_error);
-  EXPECT_THROW(ws::FindImagePairs("/nonexistent/dir"), std::runtime_error);
+TEST(ImageFolder, SubfoldersPairByNameAndAFolderOfPlainImagesIsOneCamera) {
+  const std::string dir = TempDir("layouts");
+  for (const char* side : {"left", "right"}) std::filesystem::create_directories(dir + "/lr/" + side);
+  WriteImage(dir + "/lr/left/0001.png", 1);
+  WriteImage(dir + "/lr/right/0001.png", 2);
+  WriteImage(dir + "/lr/right/0002.png", 3);
+  for (const char* cam : {"cam0/data", "cam1/data"}) std::filesystem::create_directories(dir + "/cam/" + cam);
+  WriteImage(dir + "/cam/cam0/data/17.png", 1);
+  WriteImage(dir + "/cam/cam1/data/17.png", 2);
+  std::filesystem::create_directories(dir + "/one");
+  WriteImage(dir + "/one/a.png", 1);
+  WriteImage(dir + "/one/b.png", 2);
+
+  const ws::ImageFolder lr = ws::FindImageFolder(dir + "/lr");
+  EXPECT_EQ(lr.layout, ws::FolderLayout::kLeftRightFolders);
+  ASSERT_EQ(lr.pairs.size(), 1u);
+  EXPECT_EQ(ws::ImageName(lr.pairs[0].right, dir + "/lr"), "right/0001.png");
+  ASSERT_EQ(lr.unpaired.size(), 1u);
+  EXPECT_EQ(ws::ImageName(lr.unpaired[0], dir + "/lr"), "right/0002.png");
+  const ws::ImageFolder cam = ws::FindImageFolder(dir + "/cam");
+  EXPECT_EQ(cam.layout, ws::FolderLayout::kCamFolders);
+  EXPECT_EQ(cam.pairs.size(), 1u);
+  const ws::ImageFolder one = ws::FindImageFolder(dir + "/one");
+  EXPECT_EQ(one.layout, ws::FolderLayout::kOneCamera);
+  EXPECT_EQ(one.pairs.size(), 2u);
+  // stereo-capture's dir: source asks for --mono there.
+  try {
+    ws::DirSource source(dir + "/one", false);
+    ADD_FAILURE() << "a folder of one camera's images is no stereo source";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("--mono"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ImageFolder, EmptyOrMissingFolderIsAClearError) {
+  EXPECT_THROW(ws::FindImageFolder(TempDir("none")), std::runtime_error);
+  EXPECT_THROW(ws::FindImageFolder("/nonexistent/dir"), std::runtime_error);
+}
+
+// A folder where no pair reads is an error, not a capture of nothing.
+TEST(CaptureDir, NothingReadableExitsNonZero) {
+  const std::string dir = TempDir("garbage");
+  std::ofstream(dir + "/left01.jpg") << "not a jpeg";
+  std::ofstream(dir + "/right01.jpg") << "not a jpeg";
+  const auto r = RunCommand({"stereo-capture", "--source", "dir:" + dir, "--log-dir", dir, "--out-url",
+                             "file://" + dir + "/images.lcmlog?mode=w"},
+                            60);
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("nothing in " + dir + " could be read"), std::string::npos) << r.output;
 }
 
 TEST(CaptureDir, PublishesEveryOpenCvDocPairToALogAndExits) {

@@ -1,21 +1,26 @@
-// The saddle-point refinement (saddle_point.h) on an X-junction drawn at a
-// known sub-pixel position, and the cases where it must leave the start.
+// The saddle-point fit (saddle_point.h) on an X-junction drawn at a known
+// sub-pixel position, the cases where it finds nothing, what it says about
+// itself (share explained, standard error), and the per-corner choice of
+// scale with its fallback (corner_refinement.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "detect/corner_refinement.h"
 #include "detect/saddle_point.h"
 
 namespace {
 
-using ws::SaddlePoint;
+using ws::SaddleWindow;
 
 // Two edges crossing at `corner` at an angle (a skewed chessboard corner),
-// 8 x 8 samples a pixel, pixel centres at integers, then blurred. A
-// horizontal edge is drawn where it crosses between two rows of samples:
-// at y = k / 8 - 0.5 for whole k, so the corners below are placed there.
-cv::Mat XJunction(cv::Size size, cv::Point2d corner, double angle_deg, double blur) {
+// 8 x 8 samples a pixel, pixel centres at integers, then blurred, then
+// Gaussian noise of `noise` grey levels. A horizontal edge is drawn where
+// it crosses between two rows of samples: at y = k / 8 - 0.5 for whole k,
+// so the corners below are placed there.
+cv::Mat XJunction(cv::Size size, cv::Point2d corner, double angle_deg, double blur, double noise = 0,
+                  uint64_t seed = 1) {
   const cv::Point2d a(1, 0), b(std::cos(angle_deg * M_PI / 180), std::sin(angle_deg * M_PI / 180));
   cv::Mat image(size, CV_32F);
   constexpr int n = 8;
@@ -30,33 +35,111 @@ cv::Mat XJunction(cv::Size size, cv::Point2d corner, double angle_deg, double bl
         }
       image.at<float>(y, x) = float(sum / (n * n));
     }
-  cv::GaussianBlur(image, image, cv::Size(), blur);
+  if (blur > 0) cv::GaussianBlur(image, image, cv::Size(), blur);
+  if (noise > 0) {
+    cv::Mat grain(size, CV_32F);
+    cv::RNG(seed).fill(grain, cv::RNG::NORMAL, 0, noise);
+    image += grain;
+  }
   cv::Mat gray;
   image.convertTo(gray, CV_8U);
   return gray;
 }
 
 TEST(SaddlePoint, FindsASkewedCornerToAHundredthOfAPixel) {
+  const SaddleWindow window(1.5);
   for (const cv::Point2d corner : {cv::Point2d(40.375, 30.625), cv::Point2d(41.5, 29.5), cv::Point2d(40.125, 30.875)})
     for (double angle : {90.0, 60.0}) {
       const cv::Mat gray = XJunction({80, 60}, corner, angle, 0.7);
       const cv::Point2f start(float(corner.x + 0.6), float(corner.y - 0.5));
-      const cv::Point2f found = SaddlePoint(gray, start, 1.5);
-      EXPECT_LT(cv::norm(cv::Point2d(found) - corner), 0.01)
-          << "corner " << corner << " angle " << angle << ": found " << found;
+      const auto fit = window.Fit(gray, start);
+      ASSERT_TRUE(fit) << "corner " << corner << " angle " << angle;
+      EXPECT_LT(cv::norm(cv::Point2d(fit->point) - corner), 0.01)
+          << "corner " << corner << " angle " << angle << ": found " << fit->point;
     }
 }
 
-TEST(SaddlePoint, LeavesTheStartWhereThereIsNoSaddle) {
+// The threshold corner_refinement.h calls a poor fit (0.75) lies below every
+// ideal junction: sharp or blurred, edges crossing at 90 down to 20 degrees.
+TEST(SaddlePoint, AnIdealJunctionFitsWithMostOfItsVarianceExplained) {
+  const cv::Point2d corner(40.375, 30.625);
+  for (double angle : {90.0, 45.0, 20.0})
+    for (double blur : {0.0, 0.7, 1.5})
+      for (double sigma : {1.0, 2.0, 4.0}) {
+        const auto fit = SaddleWindow(sigma).Fit(XJunction({120, 100}, corner, angle, blur), cv::Point2f(corner));
+        ASSERT_TRUE(fit) << angle << " " << blur << " " << sigma;
+        EXPECT_GE(fit->explained, 0.85) << angle << " deg, blur " << blur << ", sigma " << sigma;
+      }
+}
+
+// The standard error the fit gives for image noise is the scatter of its
+// point over noise draws, within the scatter's own sampling error.
+TEST(SaddlePoint, StandardErrorMatchesTheScatterOverNoiseDraws) {
+  constexpr double kNoise = 8;
+  constexpr int kDraws = 200;
+  const cv::Point2d corner(40.375, 30.625);
+  for (double sigma : {1.0, 2.0}) {
+    const SaddleWindow window(sigma);
+    double squared = 0, predicted = 0;
+    for (int draw = 0; draw < kDraws; ++draw) {
+      const auto fit = window.Fit(XJunction({80, 60}, corner, 70, 0.7, kNoise, draw + 1), cv::Point2f(corner));
+      ASSERT_TRUE(fit);
+      squared += std::pow(cv::norm(cv::Point2d(fit->point) - corner), 2);
+      predicted += kNoise * fit->error_per_noise;
+    }
+    const double scatter = std::sqrt(squared / kDraws), error = predicted / kDraws;
+    std::printf("sigma %.0f: scatter %.4f px, standard error %.4f px\n", sigma, scatter, error);
+    EXPECT_NEAR(scatter / error, 1.0, 0.25) << "sigma " << sigma;
+  }
+}
+
+TEST(SaddlePoint, FindsNothingWhereThereIsNoSaddle) {
+  const SaddleWindow window(1.5);
   const cv::Point2f start(40.2f, 30.2f);
   // A flat image and a single straight edge have no saddle.
-  EXPECT_EQ(SaddlePoint(cv::Mat(60, 80, CV_8U, cv::Scalar(128)), start, 1.5), start);
+  EXPECT_FALSE(window.Fit(cv::Mat(60, 80, CV_8U, cv::Scalar(128)), start));
   cv::Mat edge(60, 80, CV_8U, cv::Scalar(40));
   edge.colRange(40, 80).setTo(200);
-  EXPECT_EQ(SaddlePoint(edge, start, 1.5), start);
+  EXPECT_FALSE(window.Fit(edge, start));
   // A window that would leave the image.
-  const cv::Mat gray = XJunction({80, 60}, {3.2, 30.4}, 90, 0.7);
-  EXPECT_EQ(SaddlePoint(gray, cv::Point2f(3.5f, 30.5f), 1.5), cv::Point2f(3.5f, 30.5f));
+  EXPECT_FALSE(window.Fit(XJunction({80, 60}, {3.2, 30.4}, 90, 0.7), cv::Point2f(3.5f, 30.5f)));
+}
+
+TEST(ImageNoise, MeasuresTheNoiseBesideEdges) {
+  for (double noise : {0.0, 2.0, 6.0}) {
+    const cv::Mat gray = XJunction({200, 150}, {100.3, 75.6}, 80, 0.7, noise);
+    const double measured = ws::ImageNoise(gray, cv::Rect(0, 0, 200, 150));
+    const double expected = std::sqrt(noise * noise + 1.0 / 12);  // with the rounding
+    EXPECT_NEAR(measured, expected, 0.15 * expected + 0.05) << noise;
+  }
+}
+
+// On a noisy, blurred junction the chosen scales beat the smallest one
+// (on a sharp one every scale is as good: the longer edges a larger window
+// sees are smoothed as much); where the window holds no junction the corner
+// falls back.
+TEST(RefineCorners, NoisyCornersGainFromLargerScalesAndBadOnesFallBack) {
+  const cv::Point2d corner(100.375, 75.625);
+  double smallest = 0, chosen = 0;
+  constexpr int kDraws = 40;
+  for (int draw = 0; draw < kDraws; ++draw) {
+    const cv::Mat gray = XJunction({200, 150}, corner, 80, 2.5, 10, draw + 1);
+    const auto fit = SaddleWindow(1).Fit(gray, cv::Point2f(corner));
+    ASSERT_TRUE(fit);
+    smallest += std::pow(cv::norm(cv::Point2d(fit->point) - corner), 2);
+    std::vector<cv::Point2f> points{cv::Point2f(corner) + cv::Point2f(0.4f, -0.3f)};
+    EXPECT_EQ(ws::RefineCorners(gray, points, {60.0}, {cv::Point2f(0, 0)}), 0);
+    chosen += std::pow(cv::norm(cv::Point2d(points[0]) - corner), 2);
+  }
+  std::printf("noisy junction: smallest scale %.4f px RMS, chosen scales %.4f px RMS\n",
+              std::sqrt(smallest / kDraws), std::sqrt(chosen / kDraws));
+  EXPECT_LT(chosen, 0.5 * smallest);
+
+  cv::Mat edge(150, 200, CV_8U, cv::Scalar(40));
+  edge.colRange(100, 200).setTo(200);
+  std::vector<cv::Point2f> points{cv::Point2f(100.2f, 75.2f)};
+  EXPECT_EQ(ws::RefineCorners(edge, points, {60.0}, {cv::Point2f(99, 74)}), 1);
+  EXPECT_EQ(points[0], cv::Point2f(99, 74));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// A hostile peer on the bus (README "Security on the robot network"), against
+// A hostile peer on the bus (docs/security.md), against
 // real processes over udpm: it cannot make a process write outside its
 // output folders, cannot lose accepted views, and, once the processes have
 // the rig key, cannot command them or swap the calibration at all: unsigned,

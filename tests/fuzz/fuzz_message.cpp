@@ -6,6 +6,7 @@
 // handlers, so the steps after decoding may throw those.
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include "auth/message_auth.h"
 #include "calib/calibration_session.h"
@@ -88,9 +89,14 @@ void Use(const stereo_calibration_t& calibration) {
 template <class Status>
 void Show(const Status& status) {
   ws::StatusBoard board;
-  board.Add(status);
-  board.Add(status);
-  board.Render();
+  for (int64_t heard_us : {0, 1000000}) {
+    if constexpr (std::is_same_v<Status, process_status_t>)
+      board.Add(status, heard_us);
+    else
+      board.Add(status);
+  }
+  board.Render(10000000, {40, 10});  // gone, condensed, cut
+  board.Render(1000000);
 }
 void Use(const process_status_t& status) { Show(status); }
 void Use(const calibration_status_t& status) { Show(status); }

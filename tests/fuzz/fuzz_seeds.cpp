@@ -184,6 +184,13 @@ void CalibrationSeeds(Seeds& seeds) {
   seeds.Message("signed-poly6", poly6);
   seeds.Message("bspline", ws::MessageFromCameraModel(sim.left, "left"));
   seeds.Message("poly6", poly6.left);
+  // A fisheye model with a non-radial field.
+  ws::CameraModel field = ws::DefaultSimConfig(0.1).left;
+  field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0)};
+  for (size_t k = 0; k < field.nonradial.coeffs.size(); ++k) field.nonradial.coeffs[k] = 1e-3 * (k % 5);
+  rig.left = rig.right = field;
+  seeds.Message("bspline-field", ws::MessageFromStereoRig(rig, 1));
+  seeds.Message("bspline-field", ws::MessageFromCameraModel(field, "left"));
 }
 
 process_status_t StatusMessage() {
@@ -195,7 +202,7 @@ process_status_t StatusMessage() {
   status.uptime_s = 12.5;
   status.state = "running";
   for (const char* channel : {ws::channel::kStereoImages, ws::channel::kStereoCorners})
-    status.channels.push_back({channel, 120, 118, 1, 1});
+    status.channels.push_back({channel, 120, 118, 1, 2, 1});
   status.nchannels = 2;
   status.last_error = "STEREO_IMAGES: image_t: bad image size 0x0";
   return status;

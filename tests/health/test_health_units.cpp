@@ -157,7 +157,7 @@ TEST(CalibrationHealthMessage, DecoderChecksItAndStereoStatusShowsIt) {
 
   ws::StatusBoard board;
   board.Add(HealthMessage());
-  const std::string table = board.Render();
+  const std::string table = board.Render(0);
   EXPECT_NE(table.find("health: misaligned"), std::string::npos) << table;
   EXPECT_NE(table.find("median |dy| 1.234 px"), std::string::npos) << table;
 }

@@ -40,7 +40,7 @@ camera_corners_t Corners() {
 }
 
 camera_calibration_t Calibration(const std::string& name) {
-  camera_calibration_t c;
+  camera_calibration_t c{};
   c.name = name;
   c.image_width = 1280;
   c.image_height = 960;
@@ -294,6 +294,33 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   calib.ncoeffs++;
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);
   EXPECT_NO_THROW(ws::Validate(Calibration("left")));
+  // Every kind of the model table, the fisheye ones too.
+  calib = Calibration("left");
+  calib.model = "bspline_theta";
+  EXPECT_NO_THROW(ws::Validate(calib));
+  calib.model = "kb4";
+  calib.degree = calib.nknots = calib.p1 = calib.p2 = 0;
+  calib.knots.clear();
+  calib.coeffs = {0.01, -0.002, 0.0, 0.0};
+  calib.ncoeffs = 4;
+  EXPECT_NO_THROW(ws::Validate(calib));
+  // A non-radial field: its grid's number of coefficients, finite and small.
+  calib = Calibration("left");
+  calib.field_cols = calib.field_rows = 4;
+  calib.field_domain[0] = calib.field_domain[2] = -2;
+  calib.field_domain[1] = calib.field_domain[3] = 2;
+  calib.field_coeffs.assign(32, 1e-3);
+  calib.nfield = 32;
+  EXPECT_NO_THROW(ws::Validate(calib));
+  for (auto bad : {+[](camera_calibration_t& c) { c.field_rows = 3; },
+                   +[](camera_calibration_t& c) { c.field_coeffs.pop_back(), --c.nfield; },
+                   +[](camera_calibration_t& c) { c.field_coeffs[5] = 2; },
+                   +[](camera_calibration_t& c) { c.field_domain[1] = -2; },
+                   +[](camera_calibration_t& c) { c.field_domain[3] = std::nan(""); }}) {
+    camera_calibration_t broken = calib;
+    bad(broken);
+    EXPECT_THROW(ws::Validate(broken), ws::DecodeError);
+  }
 }
 
 // Found by the fault-injection test: stereo-match spent minutes building

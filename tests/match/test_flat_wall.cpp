@@ -101,7 +101,7 @@ TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
   }
 }
 
-// The accuracy cost of the fast matcher modes (README "Matcher modes"): the
+// The accuracy cost of the fast matcher modes (docs/depth.md, "Matcher modes"): the
 // same wall, the exact calibration, each mode against full SGBM.
 TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
   const ws::StereoRig rig = TrueStereoRig(*truth_);

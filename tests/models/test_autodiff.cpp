@@ -21,16 +21,17 @@ template <typename Model>
 struct ProjectFunctor {
   template <typename T>
   bool operator()(T const* const* parameters, T* pixel) const {
-    return Project(*model, parameters[0], parameters[1], parameters[2], pixel);
+    return Project(*model, *field, parameters[0], parameters[1], parameters[2], pixel);
   }
   const Model* model;
+  const NonRadialField* field;
 };
 
 template <typename Model>
-void CheckJacobians(const Model& model, std::vector<std::vector<double>> blocks,
-                    const std::string& where) {
+void CheckJacobians(const Model& model, const NonRadialField& field,
+                    std::vector<std::vector<double>> blocks, const std::string& where) {
   ceres::DynamicAutoDiffCostFunction<ProjectFunctor<Model>> cost(
-      new ProjectFunctor<Model>{&model});
+      new ProjectFunctor<Model>{&model, &field});
   for (const auto& block : blocks) cost.AddParameterBlock(static_cast<int>(block.size()));
   cost.SetNumResiduals(2);
   std::vector<double*> parameters;
@@ -49,9 +50,9 @@ void CheckJacobians(const Model& model, std::vector<std::vector<double>> blocks,
       const double step = 1e-6 * std::max(1.0, std::abs(saved));
       double plus[2], minus[2];
       blocks[b][j] = saved + step;
-      ASSERT_TRUE(Project(model, blocks[0].data(), blocks[1].data(), blocks[2].data(), plus));
+      ASSERT_TRUE(Project(model, field, blocks[0].data(), blocks[1].data(), blocks[2].data(), plus));
       blocks[b][j] = saved - step;
-      ASSERT_TRUE(Project(model, blocks[0].data(), blocks[1].data(), blocks[2].data(), minus));
+      ASSERT_TRUE(Project(model, field, blocks[0].data(), blocks[1].data(), blocks[2].data(), minus));
       blocks[b][j] = saved;
       for (int row = 0; row < 2; ++row) {
         const double numeric = (plus[row] - minus[row]) / (2 * step);
@@ -65,23 +66,32 @@ void CheckJacobians(const Model& model, std::vector<std::vector<double>> blocks,
 
 class Autodiff : public ::testing::TestWithParam<TestCamera> {};
 
-TEST_P(Autodiff, JacobiansMatchCentralDifferences) {
-  const TestCamera& test = GetParam();
+// Without a non-radial field, and with a 6 x 5 one (nonradial_field.h) over
+// the image of a camera of about 300 px focal length.
+void CheckPoints(const TestCamera& test, const NonRadialField& field) {
   const auto intrinsics = test.model.Intrinsics();
   std::visit(
       [&](const auto& model) {
-        const std::vector<double> coeffs = model.EstimatedCoeffs(test.model.distortion.coeffs);
-        // On the axis, near it, inside spans, on a knot and beyond the image corner.
+        std::vector<double> coeffs = model.EstimatedCoeffs(test.model.distortion.coeffs);
+        for (int k = 0; k < field.NumCoeffs(); ++k) coeffs.push_back(2e-3 * std::cos(0.9 * k));
+        // On the axis, near it, inside spans, on a knot and (without a field,
+        // whose differences would cross it there) beyond the image corner.
         for (const std::vector<double>& point :
              {std::vector<double>{0.0, 0.0, 2.0}, {1e-3, -2e-3, 1.0}, {0.3, 0.2, 1.5},
               {-1.1, 0.7, 0.9}, {1.4, -1.0, 1.0}, {2.3, 1.6, 1.0}}) {
+          if (!field.empty() && point[0] > 2) continue;
           std::ostringstream where;
           where << test.name << " at (" << point[0] << ", " << point[1] << ", " << point[2] << ")";
-          CheckJacobians(model, {{intrinsics.begin(), intrinsics.end()}, coeffs, point},
-                         where.str());
+          CheckJacobians(model, field, {{intrinsics.begin(), intrinsics.end()}, coeffs, point},
+                         where.str() + (field.empty() ? "" : " with a field"));
         }
       },
       MakeModel(test.model.distortion, test.which));
+}
+
+TEST_P(Autodiff, JacobiansMatchCentralDifferences) {
+  CheckPoints(GetParam(), NonRadialField());
+  CheckPoints(GetParam(), NonRadialField(6, 5, {-2.1, 2.1, -1.6, 1.6}));
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, Autodiff, ::testing::ValuesIn(TestCameras()),

@@ -119,7 +119,7 @@ TEST(SimConfig, BadConfigIsAClearErrorNamingFileAndField) {
       {rig + "scene: {board: {spec: chessboard:9x6}}\n", {"scene.board.spec", "chessboard takes 3"}},
       {rig + "scene: {board: {spec: chessboard:9x6:0.05, depth: [1.0, 0.5]}}\n", {"scene.board.depth", "MIN <= MAX"}},
       {rig + "scene: {board: {spec: chessboard:9x6:0.05, poses: 0}}\n", {"scene.board.poses", "from 1"}},
-      {rig + "scene: {board: {spec: chessboard:9x6:2.0, depth: [0.5, 0.6]}}\n", {"scene.board", "does not fit"}},
+      {rig + "scene: {board: {spec: chessboard:9x6:0.5, depth: [0.5, 0.6]}}\n", {"scene.board", "does not fit"}},
       {"rig: {left: {lens: theia}}\n" + scene, {"rig.baseline: is required"}},
       {"rig: {baseline: -0.3, left: {lens: theia}}\n" + scene, {"rig.baseline", "greater than 0", "-0.3"}},
       {"rig: {baseline: 0.3, T: [-0.3, 0, 0], left: {lens: theia}}\n" + scene, {"rig.T", "either baseline or T"}},
@@ -313,8 +313,8 @@ TEST(SimRender, DetectedCornersAreWhereTheModelProjectsThem) {
     RecordProperty(std::string(ChessboardMethodName(methods[m])) + "_found", std::to_string(found));
   }
   std::printf("[ corners ] rendering and detection of %zu views: %.1f s\n", views.size(), seconds);
-  // Both detectors end at the corners' saddle points (saddle_point.h):
-  // measured 0.026 px RMS each (the classic one with cornerSubPix alone: 0.043 px).
+  // Both detectors end at the corners' saddle points (corner_refinement.h):
+  // measured 0.020 px RMS each (the classic one with cornerSubPix alone: 0.043 px).
   for (int m = 0; m < 2; ++m) EXPECT_LT(rms[m], 0.035) << ChessboardMethodName(methods[m]);
   for (size_t v = 0; v < views.size(); ++v)
     for (int m = 0; m < 2; ++m)
