@@ -1,7 +1,7 @@
 // A camera of another tool's lens model (opencv_lens.h, mrcal_spline.h):
 // a model class of distortion.h's concept with its coefficients, projected
-// and inverted by models/projection.h, so that the Newton inverse and its
-// fold checks are widestereo's own.
+// and inverted by models/projection.h (with no non-radial field), so that
+// the Newton inverse and its fold checks are widestereo's own.
 #pragma once
 
 #include <array>
@@ -43,13 +43,13 @@ class ForeignCamera final : public CameraProjection {
   std::string Name() const override { return name_; }
   std::optional<Eigen::Vector2d> Project(const Eigen::Vector3d& point) const override {
     Eigen::Vector2d pixel;
-    if (!ws::Project(model_, intrinsics_.data(), coeffs_.data(), point.data(), pixel.data()))
+    if (!ws::Project(model_, NonRadialField(), intrinsics_.data(), coeffs_.data(), point.data(), pixel.data()))
       return std::nullopt;
     return pixel;
   }
   std::optional<Eigen::Vector3d> Unproject(const Eigen::Vector2d& pixel) const override {
     Eigen::Vector3d ray;
-    if (!ws::Unproject(model_, intrinsics_.data(), coeffs_.data(), pixel.data(), ray.data()))
+    if (!ws::Unproject(model_, NonRadialField(), intrinsics_.data(), coeffs_.data(), pixel.data(), ray.data()))
       return std::nullopt;
     return ray;
   }

@@ -17,7 +17,7 @@ struct PixelResidual {
   bool operator()(const T* intrinsics, const T* coeffs, T* residual) const {
     const T point[3] = {T(sample.ray.x()), T(sample.ray.y()), T(sample.ray.z())};
     T pixel[2];
-    if (!ws::Project(model, intrinsics, coeffs, point, pixel)) return false;
+    if (!ws::Project(model, NonRadialField(), intrinsics, coeffs, point, pixel)) return false;
     residual[0] = pixel[0] - sample.pixel.x();
     residual[1] = pixel[1] - sample.pixel.y();
     return true;
