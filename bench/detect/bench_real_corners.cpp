@@ -45,8 +45,9 @@ double Seconds(const std::function<void()>& run) { return 1e-3 * ws::bench::Mill
 void PrintFit(const std::string& name, const CameraData& data) {
   ws::calib::CalibrationOptions options;
   options.model = "kb4";
-  options.outlier_sigma = 0;
-  options.board_warp = false;
+  options.outliers = ws::calib::OutlierRule::kOff;
+  options.board_warp = ws::calib::WarpRule::kFlat;
+  options.nonradial = ws::calib::FieldRule::kNone;
   options.covariance = false;
   options.cv_folds = 0;
   try {

@@ -169,9 +169,13 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
                                            const std::vector<std::string>& kinds) {
   ModelCalibrations results;
+  // Several models are compared radially; the chosen one then gets its
+  // non-radial field.
+  const bool field_after = kinds.size() > 1 && options.nonradial != FieldRule::kNone;
   for (const auto& kind : kinds) {
     CalibrationOptions o = options;
     o.model = kind;
+    if (field_after) o.nonradial = FieldRule::kNone;
     try {
       results.solved.push_back(CalibrateStereo(data, o));
     } catch (const CalibrationError& e) {
@@ -181,6 +185,15 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   if (results.solved.empty() && !results.failed.empty())
     throw CalibrationError(results.failed.front().error);
   results.chosen = ChooseModel(results.solved);
+  if (field_after && !results.solved.empty()) {
+    CalibrationOptions o = options;
+    o.model = results.solved[results.chosen].model;
+    try {
+      results.solved[results.chosen] = CalibrateStereo(data, o);
+    } catch (const CalibrationError& e) {  // the radial solution stands
+      results.failed.push_back({o.model + " with a non-radial field", e.what()});
+    }
+  }
   return results;
 }
 

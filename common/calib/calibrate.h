@@ -129,10 +129,13 @@ struct ModelCalibrations {
   std::vector<StereoCalibration> solved;  // in the order asked
   std::vector<ModelFailure> failed;
   // The one published and written to --out: of the solved ones that use
-  // the most views, the fewest parameters (per camera) whose held-out RMS
-  // (both cameras' folds pooled) is within the fold-to-fold noise of the
-  // lowest (ChooseWithinNoise, heldout.h); the first solved when any was
-  // not cross-validated.
+  // the most views (and leave out no more outliers than the fewest plus
+  // their Poisson noise), the fewest parameters (per camera) whose held-out
+  // RMS (both cameras' folds pooled, on the corners all kept) is within the
+  // fold-to-fold noise of the lowest (ChooseWithinNoise, heldout.h); the
+  // first solved when any was not cross-validated. With a non-radial field
+  // asked for, the models are compared without one and the chosen model is
+  // then solved again with it (options.h, FieldRule).
   int chosen = 0;
 };
 const StereoCalibration& Chosen(const ModelCalibrations& calibrations);

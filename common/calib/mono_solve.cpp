@@ -179,8 +179,9 @@ int FieldRows(int cols, int width, int height) {
 // --nonradial (options.h, FieldRule): a given grid; or, auto, every grid of
 // kFieldLadder solved from the radial camera with F = 0 on the same corners
 // and cross-validated (the held-out RMS need not fall steadily: a grid
-// whose knots miss the pattern can do worse than a coarser one); then the
-// simplest of "none" and them within the fold-to-fold noise of the best.
+// whose knots miss the pattern can do worse than a coarser one); the grid
+// of the lowest held-out RMS is kept if it beats no field beyond the
+// fold-to-fold noise (ChooseWithinNoise of the two).
 void ChooseField(const CalibrationOptions& options, const std::string& what, MonoState* s) {
   const Prepared& p = s->prepared;
   const bool warp_free = s->warp.free;
@@ -209,7 +210,8 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
                        " field: " + e.what());
       break;
     }
-    if (s->heldout.folds != candidates[0].heldout.folds) {
+    if (s->heldout.folds != candidates[0].heldout.folds ||
+        !std::isfinite(s->heldout.rms_px[0])) {  // a field the views cannot hold
       candidates.pop_back();
       break;
     }
@@ -218,13 +220,20 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
                      " field: rms " + Fixed(s->field_curve.back().rms_px) + " px, held-out " +
                      Fixed(s->heldout.rms_px[0]) + " px");
   }
-  const int chosen = ChooseCandidate(candidates);
+  // The grid that predicts best, kept only if it beats no field beyond the
+  // fold-to-fold noise.
+  size_t best = 1;
+  for (size_t i = 2; i < candidates.size(); ++i)
+    if (candidates[i].heldout.rms_px[0] < candidates[best].heldout.rms_px[0]) best = i;
+  const int chosen =
+      best < candidates.size() && ChooseCandidate({candidates[0], candidates[best]}) == 1 ? int(best) : 0;
   s->field_chosen = chosen;
   Say(options, what + ": non-radial field " +
                    (chosen == 0 ? std::string("none")
                                 : std::to_string(s->field_curve[chosen].cols) + " x " +
                                       std::to_string(s->field_curve[chosen].rows)) +
-                   " chosen (the simplest within the fold-to-fold noise of the best held-out RMS)");
+                   " chosen (the lowest held-out RMS, if it beats none beyond the fold-to-fold "
+                   "noise)");
   Restore(candidates[chosen], s);
 }
 

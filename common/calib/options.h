@@ -22,7 +22,10 @@ enum class OutlierRule {
   kOff,        // every corner kept
   // The default, Chauvenet's criterion with an alarm, as mrcal iterates its
   // own (mrcal.c markOutliers: 4 sigma, once a corner is past 5 sigma).
-  // sigma is the per-coordinate RMS of the inliers' residuals. A solve is
+  // sigma is the per-coordinate RMS of the inliers' residuals, or the
+  // views' detection noise where that is larger (corner_noise.h: a model
+  // that fits better than its corners are detected leaves out no corner for
+  // missing by less than the detection's own noise). A solve is
   // contaminated when a corner lies beyond the alarm level, which N corners
   // of Gaussian noise pass with 1 % probability,
   //   t_alarm = sigma sqrt(2 ln 100N)   (N P(|e| > t) = 0.01,
@@ -83,9 +86,12 @@ enum class FieldRule {
   // The default: per camera, after the radial model, its knots and the
   // board's bow are settled, fields of each of kFieldLadder control points
   // across (rows in proportion to the image) are solved and cross-validated
-  // on the same corners; of "none" and those, the simplest within the
-  // fold-to-fold noise of the best (ChooseWithinNoise). A radially
-  // symmetric lens comes out as none.
+  // on the same corners; the grid of the lowest held-out RMS is kept where
+  // it beats no field beyond the fold-to-fold noise (ChooseWithinNoise of
+  // the two): whether the lens has a non-radial part is a test, how fine a
+  // grid it needs the best prediction. A radially symmetric lens comes out
+  // as none. With several models, the field is
+  // chosen for the model the radial comparison chose (calibrate.h).
   kAuto,
   kGrid,  // field_cols x field_rows control points
 };

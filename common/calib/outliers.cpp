@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calib/corner_noise.h"
+
 namespace ws::calib {
 namespace {
 
@@ -17,6 +19,14 @@ double Level(double sigma, size_t corners, double expected) {
   return sigma * std::sqrt(2.0 * std::log(corners / expected));
 }
 
+// The median detection noise of camera `camera`'s views (corner_noise.h).
+double DetectionNoise(const Problem& problem, int camera) {
+  std::vector<double> noise;
+  for (const Observation& o : problem.observations)
+    if (o.camera == camera) noise.push_back(CornerNoise(*o.corners));
+  return noise.empty() ? 0.0 : Median(std::move(noise));
+}
+
 // Decides anew which of camera `camera`'s corners are outliers (their
 // inlier flag cleared) and which are not (options.h, OutlierRule); returns
 // how many flags changed.
@@ -26,7 +36,7 @@ int RejectOutliers(Problem& problem, int camera, const CalibrationOptions& optio
   if (options.outliers == OutlierRule::kSigma) {
     threshold = std::max(options.outlier_sigma * RobustSigma(residuals), options.outlier_min_px);
   } else {
-    const double sigma = RmsSigma(residuals);
+    const double sigma = std::max(RmsSigma(residuals), DetectionNoise(problem, camera));
     const double alarm = Level(sigma, residuals.size(), kAlarmCorners);
     const bool alarmed = std::any_of(residuals.begin(), residuals.end(), [&](const auto& r) {
       return !r.outlier && !(r.residual.norm() <= alarm);

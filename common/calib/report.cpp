@@ -93,6 +93,18 @@ Json CameraReport(const CameraCalibration& c) {
     }
     j["board_warp"] = warp;
   }
+  if (!m.nonradial.empty()) {  // models/nonradial_field.h
+    const NonRadial& f = m.nonradial;
+    j["nonradial"] = {{"cols", f.cols}, {"rows", f.rows},
+                      {"domain", Numbers(std::vector<double>(f.domain.begin(), f.domain.end()))},
+                      {"coeffs", Numbers(f.coeffs)}};
+  }
+  Json field_curve = Json::array();
+  for (const FieldTrial& t : c.field_curve)
+    field_curve.push_back({{"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
+                           {"heldout_rms_px", t.heldout_rms_px}});
+  j["field_curve"] = field_curve;
+  j["field_chosen"] = c.field_chosen;
   if (const WarpChoice& w = c.warp_choice; w.made) {  // --board-warp auto
     Json choice;
     choice["kept"] = w.kept;

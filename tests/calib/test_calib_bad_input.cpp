@@ -136,23 +136,29 @@ TEST_F(BarrelViews, OutliersAreRejectedAndCounted) {
       rig.data.left.views[v].image[i] += Eigen::Vector2d(3.0, -4.0);
       ++moved;
     }
+  auto moved_left_out = [](const CameraCalibration& c) {
+    int n = 0;
+    for (const CornerResidual& r : c.residuals)
+      n += r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
+    return n;
+  };
   options.outliers = OutlierRule::kOff;
+  options.nonradial = FieldRule::kNone;  // poly6 on a poly6 lens
   const CameraCalibration plain = CalibrateCamera(rig.data.left, options);
   EXPECT_EQ(plain.outliers, 0);
   EXPECT_GT(plain.rms_px, 1.5 * floor);
-  for (const OutlierRule rule : {OutlierRule::kSigma, OutlierRule::kChauvenet}) {
-    options.outliers = rule;
-    options.outlier_sigma = 5;
-    const CameraCalibration robust = CalibrateCamera(rig.data.left, options);
-    EXPECT_EQ(robust.outliers, moved) << (rule == OutlierRule::kSigma ? "5 sigma" : "Chauvenet");
-  }
+  // Chauvenet's criterion (the default) expects half a noise corner beyond
+  // its level: the moved ones and at most a few more (here one).
+  options.outliers = OutlierRule::kChauvenet;
+  const CameraCalibration chauvenet = CalibrateCamera(rig.data.left, options);
+  EXPECT_GE(chauvenet.outliers, moved);
+  EXPECT_LE(chauvenet.outliers, moved + 3);
+  EXPECT_EQ(moved_left_out(chauvenet), moved);
   options.outliers = OutlierRule::kSigma;
+  options.outlier_sigma = 5;
   const CameraCalibration robust = CalibrateCamera(rig.data.left, options);
-  int flagged_moved = 0;
-  for (const CornerResidual& r : robust.residuals)
-    flagged_moved +=
-        r.outlier && (r.view - 2) % 3 == 0 && (r.index == 1 || r.index == 7 || r.index == 13);
-  EXPECT_EQ(flagged_moved, moved);
+  EXPECT_EQ(robust.outliers, moved);
+  EXPECT_EQ(moved_left_out(robust), moved);
   EXPECT_NEAR(robust.rms_px, floor, 0.1 * floor);
 
   // A robust loss instead: the moved corners pull the camera far less.

@@ -9,6 +9,8 @@
 #include <opencv2/core.hpp>
 
 #include "calib/calib_file.h"
+#include "calib/report.h"
+#include "models/model_registry.h"
 #include "calib/synthetic_rig.h"
 #include "opencv_fisheye.h"
 #include "test_support.h"
@@ -58,6 +60,10 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.distortion.degree, b.distortion.degree);
   EXPECT_EQ(a.distortion.knots, b.distortion.knots);
   EXPECT_EQ(a.distortion.coeffs, b.distortion.coeffs);
+  EXPECT_EQ(a.nonradial.cols, b.nonradial.cols);
+  EXPECT_EQ(a.nonradial.rows, b.nonradial.rows);
+  EXPECT_EQ(a.nonradial.domain, b.nonradial.domain);
+  EXPECT_EQ(a.nonradial.coeffs, b.nonradial.coeffs);
 }
 
 TEST(CalibFile, EveryModelReadsBackBitForBit) {
@@ -76,6 +82,40 @@ TEST(CalibFile, EveryModelReadsBackBitForBit) {
     EXPECT_EQ(read.T, written.T);
     EXPECT_EQ(read.rms, written.rms);
     EXPECT_EQ(read.views, written.views);
+  }
+}
+
+// A camera with a non-radial field (models/nonradial_field.h) keeps it.
+TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
+  const std::string path = test::TempDir("calib-file-field") + "/field.yaml";
+  CalibrationFile written = SampleFile("bspline_theta");
+  written.left.nonradial = {5, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(40)};
+  for (size_t k = 0; k < 40; ++k) written.left.nonradial.coeffs[k] = 1e-3 * std::sin(0.3 * k);
+  WriteCalibrationFile(path, written);
+  const CalibrationFile read = ReadCalibrationFile(path);
+  ExpectSameCamera(read.left, written.left);
+  ExpectSameCamera(read.right, written.right);
+  EXPECT_TRUE(read.right.nonradial.empty());
+  const Camera a(read.left), b(written.left);
+  const Eigen::Vector3d ray(0.3, -0.2, 1.0);
+  EXPECT_EQ(*a.Project(ray), *b.Project(ray));
+}
+
+// The report calls a model's coefficients what the calibration file does
+// (models/model_registry.h, CoefficientKey).
+TEST(CalibFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
+  const std::string dir = test::TempDir("calib-file-keys");
+  for (const std::string& model : ModelKinds()) {
+    const CalibrationFile written = SampleFile(model);
+    WriteCalibrationFile(dir + "/" + model + ".yaml", written);
+    cv::FileStorage fs(dir + "/" + model + ".yaml", cv::FileStorage::READ);
+    CameraCalibration camera;
+    camera.name = "left";
+    camera.model = written.left;
+    const Json report = CameraReport(camera);
+    for (const std::string key : {"alpha", "k"})
+      EXPECT_EQ(!fs["left"][key].empty(), report.contains(key)) << model << ": " << key;
+    EXPECT_TRUE(report.contains(CoefficientKey(model))) << model;
   }
 }
 

@@ -111,8 +111,9 @@ TEST_F(RealFisheyeStereo, AngleModelsUseEveryViewAndBsplineThetaFitsNoWorseThanC
 CameraCalibration FitKb4(const CameraData& data) {
   CalibrationOptions options;
   options.model = "kb4";
-  options.outlier_sigma = 0;
-  options.board_warp = false;
+  options.outliers = ws::calib::OutlierRule::kOff;
+  options.board_warp = ws::calib::WarpRule::kFlat;
+  options.nonradial = ws::calib::FieldRule::kNone;
   options.covariance = false;
   options.cv_folds = 0;
   return CalibrateCamera(data, options);
@@ -171,41 +172,33 @@ std::vector<std::string> OrpcFiles(const std::string& dir) {
   return files;
 }
 
-// BabelCalib's protocol: calibrate on train; hold the camera, fit each test
-// pose alone, and report the test RMS.
-TEST(RealBabelCalib, TrainTestProtocolBsplineThetaNoWorseThanKb4) {
+// BabelCalib's protocol: calibrate on train with the defaults (every model,
+// the one with the lowest held-out RMS, its knots, bow, field and outliers
+// chosen from the data); hold the camera, fit each test pose alone to all
+// its corners, and report the test RMS. mrcal 2.2's splined model on the
+// same corners reaches 0.355 px (bench/real/README.md). Measured: 0.353 px,
+// bspline_theta with an 11 x 7 field and the board's bow.
+TEST(RealBabelCalib, TrainTestProtocolWithTheDefaultsNoWorseThanMrcal) {
   const std::string dir = SharedData("babelcalib-ov-plane");
   if (!std::filesystem::is_directory(dir))
     GTEST_SKIP() << dir << " is absent (real data beside the project, not part of it): skipped";
-  const CameraData train =
-      ReadBabelCalibViews(dir + "/ov_plane.dsc", OrpcFiles(dir + "/corners/train"));
+  StereoData train;
+  train.left = ReadBabelCalibViews(dir + "/ov_plane.dsc", OrpcFiles(dir + "/corners/train"));
+  train.right.views.resize(train.left.views.size());  // one camera
   const CameraData test =
       ReadBabelCalibViews(dir + "/ov_plane.dsc", OrpcFiles(dir + "/corners/test"));
-  ASSERT_EQ(train.views.size(), 18u);
+  ASSERT_EQ(train.size(), 18);
   ASSERT_EQ(test.views.size(), 7u);
-  double test_rms[2][2] = {};
-  std::printf("babelcalib ov_plane (BabelCalib's protocol): train RMS (views, outliers), test RMS (views)\n");
-  const char* models[2] = {"kb4", "bspline_theta"};
-  // By default, and with outlier rejection and the board's bow estimated
-  // (the test poses fitted on the bowed board the training found).
-  for (int robust = 0; robust < 2; ++robust)
-    for (int m = 0; m < 2; ++m) {
-      CalibrationOptions options;
-      options.model = models[m];
-      options.outliers = robust ? OutlierRule::kSigma : OutlierRule::kOff;
-      options.board_warp = robust ? WarpRule::kEstimated : WarpRule::kFlat;
-      const CameraCalibration calibration = CalibrateCamera(train, options);
-      const HeldOutFit held_out = FitHeldOutViews(calibration.model, test, 6, calibration.board_warp);
-      std::printf("%-14s%-28s train %.4f px (%d, %d)   test %.4f px (%d)\n", models[m],
-                  robust ? " --outlier-sigma 6 --board-warp" : "", calibration.rms_px,
-                  calibration.views, calibration.outliers, held_out.rms_px, held_out.views);
-      EXPECT_EQ(calibration.views, 18) << models[m];
-      EXPECT_EQ(held_out.views, 7) << models[m];
-      test_rms[robust][m] = held_out.rms_px;
-    }
-  for (int robust = 0; robust < 2; ++robust)
-    EXPECT_LE(test_rms[robust][1], test_rms[robust][0])
-        << "bspline_theta predicts the test views no worse than kb4";
+  const ModelCalibrations all = CalibrateStereoAllModels(train, CalibrationOptions(), ModelKinds());
+  const CameraCalibration& chosen = Chosen(all).left;
+  const HeldOutFit held_out = FitHeldOutViews(chosen.model, test, 6, chosen.board_warp);
+  std::printf("babelcalib ov_plane (BabelCalib's protocol), defaults: %s, field %d x %d, train %.4f px "
+              "(%d views, %d outliers), test %.4f px (%d views)\n",
+              Chosen(all).model.c_str(), chosen.model.nonradial.cols, chosen.model.nonradial.rows,
+              chosen.rms_px, chosen.views, chosen.outliers, held_out.rms_px, held_out.views);
+  EXPECT_EQ(chosen.views, 18);
+  EXPECT_EQ(held_out.views, 7);
+  EXPECT_LE(held_out.rms_px, 0.355);
 }
 
 // The same train views through the processes, as a user calibrates corners

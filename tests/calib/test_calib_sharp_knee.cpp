@@ -78,7 +78,7 @@ std::map<std::string, KnotRun> RenderDetectCalibrate(const std::string& config,
   for (const std::string& knots : knot_values) {
     SCOPED_TRACE(config + " --knots " + knots);
     const std::string name = "knots-" + knots;
-    const auto run = CalibrateOnce(dir, corners, name, {"--knots", knots});
+    const auto run = CalibrateOnce(dir, corners, name, {"--model", "bspline", "--knots", knots});
     EXPECT_EQ(run.exit_code, 0) << run.output;
     if (run.exit_code != 0) continue;
     const CalibrationFile file = ReadCalibrationFile(dir + "/" + name + ".yaml");
@@ -98,6 +98,9 @@ std::map<std::string, KnotRun> RenderDetectCalibrate(const std::string& config,
       out[knots].fewest_coeffs = std::min(out[knots].fewest_coeffs, coeffs);
       if (knots == "auto") {
         EXPECT_GT(camera["knot_curve"].size(), 2u);
+        // A radially symmetric lens: no non-radial field (report.h).
+        EXPECT_GT(camera["field_curve"].size(), 1u);
+        EXPECT_EQ(camera["field_chosen"], 0);
         // The right model predicts views it did not see as well as those it fitted.
         EXPECT_LE(heldout, 1.15 * rms);
       }
