@@ -10,6 +10,7 @@
 #include "calib_process_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -62,6 +63,12 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
   EXPECT_FALSE(report.contains("stereo"));
   const CalibrationFile mono = ReadCalibrationFile(dir + "/mono.yaml");
   EXPECT_TRUE(mono.mono);
+  // The status says the camera's RMS, not the empty stereo one.
+  const auto statuses = ws::test::Messages<widestereo::calibration_status_t>(
+      ws::test::ReadLog(dir + "/mono.lcmlog"), ws::channel::kCalibrationStatus);
+  ASSERT_FALSE(statuses.empty());
+  EXPECT_EQ(statuses.back().state, "solved");
+  EXPECT_NEAR(statuses.back().rms, report["cameras"][0]["rms_px"].get<double>(), 1e-9);
 
   // The same camera as the left one of the stereo set solved in the paper's
   // flow (each camera from its own views), to the last digits.
