@@ -22,7 +22,8 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libceres-dev libeigen3-dev libpcl-dev libaravis-dev \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 tmux xvfb clang libclang-rt-14-dev python3 python3-yaml time \
-  libsodium-dev mrcal python3-mrcal python3-opencv
+  libsodium-dev mrcal python3-mrcal python3-opencv pybind11-dev python3-pybind11 python3-numpy \
+  python3-pytest
 
 .PHONY: deps build built test test-asan fuzz demo spy clean
 

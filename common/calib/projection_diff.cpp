@@ -25,20 +25,21 @@ Eigen::Matrix3d Rotation(const Eigen::Vector3d& angle_axis) {
 }
 
 // project_B(R v) - q, or nullopt where B has no pixel inside its image.
-std::optional<Eigen::Vector2d> Difference(const Camera& b, const Eigen::Matrix3d& R,
+std::optional<Eigen::Vector2d> Difference(const CameraProjection& b, const Eigen::Matrix3d& R,
                                           const GridRay& g) {
-  const auto pixel = b.Project(R * g.ray);
+  const Eigen::Vector3d ray = R * g.ray;
+  if (!b.InField(ray)) return std::nullopt;
+  const auto pixel = b.Project(ray);
   if (!pixel || !pixel->allFinite()) return std::nullopt;
-  const CameraModel& m = b.model();
-  if (pixel->x() < -0.5 || pixel->y() < -0.5 || pixel->x() > m.image_width - 0.5 ||
-      pixel->y() > m.image_height - 0.5)
+  if (pixel->x() < -0.5 || pixel->y() < -0.5 || pixel->x() > b.image_width() - 0.5 ||
+      pixel->y() > b.image_height() - 0.5)
     return std::nullopt;
   return *pixel - g.pixel;
 }
 
 // Gauss-Newton on the angle-axis w of R over the rays (numerical Jacobian:
 // three parameters, a small rotation), from w = 0.
-Eigen::Matrix3d FitRotation(const Camera& b, const std::vector<GridRay>& rays) {
+Eigen::Matrix3d FitRotation(const CameraProjection& b, const std::vector<GridRay>& rays) {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
   const double h = 1e-7;
   for (int iteration = 0; iteration < 20; ++iteration) {
@@ -71,28 +72,28 @@ Eigen::Matrix3d FitRotation(const Camera& b, const std::vector<GridRay>& rays) {
 
 }  // namespace
 
-double DefaultFitRadius(const CameraModel& camera) {
-  return std::min(camera.image_width, camera.image_height) / 6.0;
+double DefaultFitRadius(const CameraProjection& camera) {
+  return std::min(camera.image_width(), camera.image_height()) / 6.0;
 }
 
-ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_radius, int cols,
-                                 int rows) {
-  const CameraModel& ma = a.model();
-  if (ma.image_width != b.model().image_width || ma.image_height != b.model().image_height)
+ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjection& b,
+                                 double fit_radius, int cols, int rows) {
+  const int width = a.image_width(), height = a.image_height();
+  if (width != b.image_width() || height != b.image_height())
     throw std::invalid_argument(
-        "the two cameras' images differ in size (" + std::to_string(ma.image_width) + "x" +
-        std::to_string(ma.image_height) + " and " + std::to_string(b.model().image_width) + "x" +
-        std::to_string(b.model().image_height) + "): not calibrations of one camera");
+        "the two cameras' images differ in size (" + std::to_string(width) + "x" +
+        std::to_string(height) + " and " + std::to_string(b.image_width()) + "x" +
+        std::to_string(b.image_height()) + "): not calibrations of one camera");
   ProjectionDiff out;
-  out.grid = ImageGrid::Over(ma.image_width, ma.image_height, cols, rows);
+  out.grid = ImageGrid::Over(width, height, cols, rows);
   out.diff_px.assign(out.grid.size(), NAN);
-  const Eigen::Vector2d centre((ma.image_width - 1) / 2.0, (ma.image_height - 1) / 2.0);
+  const Eigen::Vector2d centre((width - 1) / 2.0, (height - 1) / 2.0);
   std::vector<GridRay> all, central;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < cols; ++i) {
       const Eigen::Vector2d q = out.grid.Pixel(i, j);
       const auto ray = a.Unproject(q);
-      if (!ray) continue;
+      if (!ray || !a.InField(*ray)) continue;
       all.push_back({j * cols + i, q, *ray});
       if ((q - centre).norm() <= fit_radius) central.push_back(all.back());
     }

@@ -13,15 +13,16 @@
 // within `fit_radius` pixels of the image centre (mrcal's default: a sixth
 // of the smaller image side; the centre is where both are best observed),
 // by Gauss-Newton on its angle-axis; fit_radius <= 0: R = I (no fit).
-// Grid points that either camera cannot carry (no ray, no pixel, or a pixel
-// outside B's image) are NaN and left out of every statistic.
+// Grid points that either camera cannot carry (no ray, no pixel, a pixel
+// outside B's image, or a ray outside either model's calibrated field,
+// CameraProjection::InField) are NaN and left out of every statistic.
 #pragma once
 
 #include <Eigen/Core>
 #include <vector>
 
 #include "calib/image_grid.h"
-#include "models/camera_model.h"
+#include "interop/camera_projection.h"
 
 namespace ws::calib {
 
@@ -36,11 +37,12 @@ struct ProjectionDiff {
 };
 
 // The default fit radius: a sixth of the smaller image side.
-double DefaultFitRadius(const CameraModel& camera);
+double DefaultFitRadius(const CameraProjection& camera);
 
-// Compares camera B against camera A (A's image is the grid's). Throws
+// Compares camera B against camera A (A's image is the grid's); either may
+// be another tool's model (interop/any_rig.h). Throws
 // std::invalid_argument when the two cameras' image sizes differ.
-ProjectionDiff CompareProjection(const Camera& a, const Camera& b, double fit_radius,
+ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjection& b, double fit_radius,
                                  int cols = 64, int rows = 48);
 
 }  // namespace ws::calib

@@ -2,9 +2,12 @@
 // across each camera's image, after the small rotation between their camera
 // frames that fits best (calib/projection_diff.h; mrcal's
 // show-projection-diff). Two models, two days, two rigs: whether a
-// recalibration changed anything real.
+// recalibration changed anything real. Either calibration may be another
+// tool's: mrcal's .cameramodel (or its output folder), Kalibr's camchain,
+// OpenCV's calibration YAML (interop/any_rig.h).
 //
 //   stereo-compare old.yaml new.yaml --plot diff.png --report diff.json
+//   stereo-compare calib.yaml mrcal-left/camera-0.cameramodel
 
 #include <cstdio>
 #include <iostream>
@@ -14,10 +17,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "calib/calib_file.h"
 #include "calib/calib_plots.h"
 #include "calib/projection_diff.h"
 #include "calib/report.h"
+#include "interop/any_rig.h"
 #include "runtime/atomic_file.h"
 
 namespace {
@@ -49,16 +52,17 @@ Json DiffJson(const std::string& name, const ProjectionDiff& d) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "Compares two calibration files (stereo-calibrate --out) of one rig: for each camera, the "
-      "pixel difference of projecting each pixel's ray of the first through the second, over a "
+      "Compares two calibrations of one rig (stereo-calibrate --out, or another tool's: an mrcal "
+      ".cameramodel or mrcal-calibrate-cameras' output folder, a Kalibr camchain YAML, an OpenCV "
+      "calibration YAML): for each camera, the pixel difference of projecting each pixel's ray of the first through the second, over a "
       "grid of the image, after the small rotation between the two camera frames that fits best "
       "near the image centre (mrcal-show-projection-diff's definition). Prints RMS, median and "
       "maximum per camera; writes a heat map and a JSON report."};
   Options o;
-  app.add_option("a", o.a, "the first calibration file (its image is the grid's)")
+  app.add_option("a", o.a, "the first calibration (its image is the grid's)")
       ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("b", o.b, "the second calibration file")->required()->check(CLI::ExistingFile);
+      ->check(CLI::ExistingPath);
+  app.add_option("b", o.b, "the second calibration")->required()->check(CLI::ExistingPath);
   app.add_option("--fit-radius", o.fit_radius,
                  "fit the rotation to the grid points within this many pixels of the image "
                  "centre (default: a sixth of the smaller image side)")
@@ -72,18 +76,18 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const CalibrationFile a = ReadCalibrationFile(o.a), b = ReadCalibrationFile(o.b);
+    const AnyRig a = LoadAnyRig(o.a), b = LoadAnyRig(o.b);
     std::vector<std::pair<std::string, ProjectionDiff>> diffs;
     for (int side = 0; side < ((a.mono || b.mono) ? 1 : 2); ++side) {
-      const CameraModel& ma = side == 0 ? a.left : a.right;
-      const CameraModel& mb = side == 0 ? b.left : b.right;
-      const double radius = o.no_rotation ? 0 : o.fit_radius > 0 ? o.fit_radius : DefaultFitRadius(ma);
+      const CameraProjection& ca = side == 0 ? *a.left : *a.right;
+      const CameraProjection& cb = side == 0 ? *b.left : *b.right;
+      const double radius = o.no_rotation ? 0 : o.fit_radius > 0 ? o.fit_radius : DefaultFitRadius(ca);
       diffs.emplace_back(side == 0 ? "left" : "right",
-                         CompareProjection(Camera(ma), Camera(mb), radius, o.cols, o.rows));
+                         CompareProjection(ca, cb, radius, o.cols, o.rows));
     }
-    const std::string what = "difference of " + o.b + " (" + b.model + ") from " + o.a + " (" + a.model + "): " +
-                             o.a + "'s pixel rays projected through " + o.b;
-    std::printf("%s\n", what.c_str());
+    const std::string title = "difference of " + o.b + " (" + b.format + " " + b.left->Name() +
+                              ") from " + o.a + " (" + a.format + " " + a.left->Name() + ")";
+    std::printf("%s: %s's pixel rays projected through %s\n", title.c_str(), o.a.c_str(), o.b.c_str());
     for (const auto& [name, d] : diffs)
       std::printf("%-5s: rms %.4f px, median %.4f px, max %.4f px over %d grid points; rotation "
                   "%.4f deg fitted to %d points\n",
@@ -98,8 +102,7 @@ int main(int argc, char** argv) {
       WriteFileAtomically(o.report, report.dump(2) + "\n");
     }
     if (!o.plot.empty())
-      WriteProjectionDiffPng(diffs, "difference of " + o.b + " (" + b.model + ") from " + o.a + " (" + a.model + ")",
-                             o.plot);
+      WriteProjectionDiffPng(diffs, title, o.plot);
   } catch (const std::exception& error) {
     std::cerr << "stereo-compare: " << error.what() << "\n";
     return 1;

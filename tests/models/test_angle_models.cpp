@@ -14,21 +14,12 @@
 #include "models/fisheye_lens.h"
 #include "models/radial_coordinate.h"
 #include "opencv_fisheye.h"
+#include "test_cameras.h"
 
 namespace ws {
 namespace {
 
-CameraModel Kb4Camera() {
-  CameraModel camera;
-  camera.image_width = 1280;
-  camera.image_height = 960;
-  camera.fx = 301.3;
-  camera.fy = 299.2;
-  camera.cx = 641.7;
-  camera.cy = 477.4;
-  camera.distortion = Distortion{"kb4", 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}};
-  return camera;
-}
+using testing::Kb4Camera;
 
 Eigen::Vector3d Direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};

@@ -9,6 +9,7 @@
 
 #include "models/camera_model.h"
 #include "models/curve_fit.h"
+#include "models/fisheye_lens.h"
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
 
@@ -58,6 +59,24 @@ inline std::vector<TestCamera> TestCameras() {
       {"poly12", WithTangential(TheiaFittedBy(MakeCalibrationModel("poly12", setup))),
        Coefficients::kAll},
   };
+}
+
+// A Kannala-Brandt camera of a 200-degree lens.
+inline CameraModel Kb4Camera() {
+  CameraModel camera;
+  camera.image_width = 1280, camera.image_height = 960;
+  camera.fx = 301.3, camera.fy = 299.2, camera.cx = 641.7, camera.cy = 477.4;
+  camera.distortion = Distortion{"kb4", 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}};
+  return camera;
+}
+
+// One camera of every model kind, in ModelKinds()'s order.
+inline std::vector<CameraModel> KindCameras() {
+  const CalibrationSetup setup{2.7, 8, 3};
+  return {WithTangential(TheiaLikeCamera()),
+          WithTangential(TheiaFittedBy(MakeCalibrationModel("poly6", setup))),
+          WithTangential(TheiaFittedBy(MakeCalibrationModel("poly12", setup))), Kb4Camera(),
+          FisheyeKneeCamera()};
 }
 
 }  // namespace ws::testing

@@ -1,0 +1,88 @@
+#include "interop/any_rig.h"
+
+#include <Eigen/LU>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "calib/calib_file.h"
+#include "interop/kalibr_camchain.h"
+#include "interop/mrcal_cameramodel.h"
+#include "interop/opencv_stereo_file.h"
+
+namespace ws {
+namespace {
+
+// Whether a YAML file has a top-level key (a line starting "key:").
+bool HasTopLevelKey(const std::string& path, const std::string& key) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(key + ":", 0) == 0) return true;
+  return false;
+}
+
+AnyRig FromCalibrationFile(const std::string& path) {
+  const calib::CalibrationFile file = calib::ReadCalibrationFile(path);
+  AnyRig rig;
+  rig.format = "widestereo";
+  rig.mono = file.mono;
+  rig.left = std::make_shared<WidestereoProjection>(file.left);
+  if (!file.mono) rig.right = std::make_shared<WidestereoProjection>(file.right);
+  rig.R = file.R;
+  rig.T = file.T;
+  return rig;
+}
+
+AnyRig FromMrcal(const std::string& path) {
+  AnyRig rig;
+  rig.format = "mrcal";
+  if (!std::filesystem::is_directory(path)) {
+    rig.mono = true;
+    rig.left = MrcalCamera(ReadMrcalCameraModel(path));
+    return rig;
+  }
+  const std::string left_path = path + "/camera-0.cameramodel", right_path = path + "/camera-1.cameramodel";
+  if (!std::filesystem::exists(left_path))
+    throw calib::CalibrationFileError(path + ": camera-0.cameramodel: missing (a folder is read as "
+                                      "mrcal-calibrate-cameras' output)");
+  const MrcalCameraModel left = ReadMrcalCameraModel(left_path);
+  rig.left = MrcalCamera(left);
+  rig.mono = !std::filesystem::exists(right_path);
+  if (rig.mono) return rig;
+  const MrcalCameraModel right = ReadMrcalCameraModel(right_path);
+  rig.right = MrcalCamera(right);
+  MrcalRelativePose(left, right, &rig.R, &rig.T);
+  return rig;
+}
+
+}  // namespace
+
+StereoRig AnyRig::AsStereoRig() const {
+  if (mono) throw std::invalid_argument("a one-camera calibration is not a stereo rig");
+  StereoRig rig;
+  for (const auto& [camera, model] : {std::pair{left.get(), &rig.left}, std::pair{right.get(), &rig.right}}) {
+    if (!camera->AsCamera())
+      throw std::invalid_argument("the camera model " + camera->Name() +
+                                  " is not one of widestereo's: it can be compared, not rectified");
+    *model = camera->AsCamera()->model();
+  }
+  rig.R = R;
+  rig.T = T;
+  return rig;
+}
+
+bool IsRotation(const Eigen::Matrix3d& R) {
+  return (R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-6) && R.determinant() > 0;
+}
+
+AnyRig LoadAnyRig(const std::string& path) {
+  const std::filesystem::path p(path);
+  if (!std::filesystem::exists(p)) throw calib::CalibrationFileError(path + ": (file): missing");
+  if (std::filesystem::is_directory(p) || p.extension() == ".cameramodel") return FromMrcal(path);
+  if (HasTopLevelKey(path, "cam0")) return ReadKalibrCamchain(path);
+  if (HasTopLevelKey(path, "left") && HasTopLevelKey(path, "model")) return FromCalibrationFile(path);
+  return ReadOpenCvCalibration(path);
+}
+
+}  // namespace ws

@@ -1,0 +1,218 @@
+#include "interop/export.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <Eigen/Geometry>
+
+#include "interop/kalibr_camchain.h"
+#include "interop/model_fit.h"
+#include "interop/mrcal_cameramodel.h"
+#include "interop/mrcal_spline_fit.h"
+#include "interop/opencv_stereo_file.h"
+#include "interop/ros_camera_info.h"
+
+namespace ws {
+namespace {
+
+// OpenCV's fixed-point remap tables are in 1/32 px: each coordinate within
+// 1/64 px of the model's.
+constexpr double kMapErrorPx = 0.0221;  // sqrt(2) / 64
+constexpr const char* kNames[2] = {"left", "right"};
+
+std::string Px(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g px", value);
+  return text;
+}
+
+struct Cameras {
+  std::vector<const CameraModel*> models;
+  StereoRig rig;
+};
+
+Cameras Of(const calib::CalibrationFile& file) {
+  Cameras c;
+  c.models.push_back(&file.left);
+  if (!file.mono) c.models.push_back(&file.right);
+  c.rig = StereoRig{file.left, file.right, file.R, file.T};
+  return c;
+}
+
+std::string Header(const calib::CalibrationFile& file, ExportFormat format) {
+  return std::string("widestereo calibration (") + file.model + ") exported by stereo-export --to " +
+         ExportFormatName(format);
+}
+
+void RequireStereo(const calib::CalibrationFile& file, const std::string& why) {
+  if (file.mono) throw std::invalid_argument("a one-camera calibration " + why);
+}
+
+Rectification PinholeRectification(const StereoRig& rig) {
+  RectifyOptions options;
+  options.mode = RectificationMode::kPinhole;
+  return BuildRectification(rig, options);
+}
+
+void OpenCv(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+  RequireStereo(file, "has no stereo rectification: use --to ros, kalibr or mrcal");
+  const Cameras c = Of(file);
+  const Rectification rect = PinholeRectification(c.rig);
+  const std::optional<TargetModel> exact[2] = {ExactTargetModel(file.left, ExportFormat::kOpenCv),
+                                               ExactTargetModel(file.right, ExportFormat::kOpenCv)};
+  std::vector<std::string> comments{Header(file, ExportFormat::kOpenCv)};
+  if (exact[0] && exact[1]) {
+    report->lines.push_back("left, right: OpenCV's " + exact[0]->name + " model, exactly (K, D)");
+  } else {
+    report->exact = false;
+    report->max_error_px = kMapErrorPx;
+    report->lines.push_back(file.model + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
+                            "P1, P2, Q and no D; the cameras are maps.yml.gz's remap tables (within " +
+                            Px(kMapErrorPx) + ", OpenCV's 1/32 px fixed point)");
+    comments.push_back("NOT EXACT: " + file.model + " is not an OpenCV model; no D: rectify with "
+                       "maps.yml.gz (cv::remap), not with K and D");
+  }
+  WriteOpenCvStereoFile(out + "/stereo.yaml", c.rig, rect, exact, comments);
+  WriteRectificationMaps(out + "/maps.yml.gz", rect);
+  report->files = {"stereo.yaml", "maps.yml.gz"};
+}
+
+void Ros(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+  const Cameras c = Of(file);
+  std::vector<std::optional<TargetModel>> exact;
+  for (const CameraModel* m : c.models) exact.push_back(ExactTargetModel(*m, ExportFormat::kRos));
+  const bool all_exact = std::all_of(exact.begin(), exact.end(), [](const auto& e) { return e.has_value(); });
+  if (!all_exact)
+    RequireStereo(file, "of a " + file.model + " camera has neither a ROS model nor a rectification: "
+                        "use --to mrcal or kalibr");
+  std::optional<Rectification> rect;
+  if (!file.mono) rect = PinholeRectification(c.rig);
+  for (size_t i = 0; i < c.models.size(); ++i) {
+    const CameraModel& m = *c.models[i];
+    RosCameraInfo info;
+    info.name = kNames[i];
+    std::vector<std::string> comments{Header(file, ExportFormat::kRos)};
+    const cv::Matx33d K(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1);
+    if (rect) {
+      const double tx = i == 0 ? 0 : -rect->f * rect->baseline;
+      info.P = cv::Matx34d(rect->f, 0, rect->cx, tx, 0, rect->f, rect->cy, 0, 0, 0, 1, 0);
+    } else {
+      info.P = cv::Matx34d(m.fx, 0, m.cx, 0, 0, m.fy, m.cy, 0, 0, 0, 1, 0);
+    }
+    if (all_exact) {
+      info.width = m.image_width, info.height = m.image_height;
+      info.K = K;
+      info.distortion_model = exact[i]->name;
+      info.D = exact[i]->coeffs;
+      info.R = rect ? (i == 0 ? rect->R_left : rect->R_right) : cv::Matx33d::eye();
+      report->lines.push_back(info.name + ": ROS's " + info.distortion_model + ", exactly");
+    } else {
+      info.width = rect->size.width, info.height = rect->size.height;
+      info.K = info.P.get_minor<3, 3>(0, 0);
+      info.distortion_model = "plumb_bob";
+      info.D.assign(5, 0.0);
+      info.R = cv::Matx33d::eye();
+      comments.push_back("NOT THE RAW CAMERA: " + file.model + " is not a ROS distortion model. This is "
+                         "the " + info.name + " rectified camera: remap the raw images with maps.yml.gz "
+                         "(cv::remap, map1_" + info.name + ", map2_" + info.name + ") and publish those");
+      report->lines.push_back(info.name + ": " + file.model + " is not a ROS distortion model: wrote the "
+                              "rectified camera; remap the raw images with maps.yml.gz first (within " +
+                              Px(kMapErrorPx) + ")");
+    }
+    WriteRosCameraInfo(out + "/" + info.name + ".yaml", info, comments);
+    report->files.push_back(info.name + ".yaml");
+  }
+  if (!all_exact) {
+    report->exact = false;
+    report->max_error_px = kMapErrorPx;
+    WriteRectificationMaps(out + "/maps.yml.gz", *rect);
+    report->files.push_back("maps.yml.gz");
+  }
+}
+
+void Kalibr(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+  const Cameras c = Of(file);
+  std::vector<CameraModel> fitted(c.models.size());
+  std::vector<KalibrCamera> cameras;
+  std::vector<std::string> comments{Header(file, ExportFormat::kKalibr)};
+  for (size_t i = 0; i < c.models.size(); ++i) {
+    const CameraModel& m = *c.models[i];
+    if (auto exact = ExactTargetModel(m, ExportFormat::kKalibr)) {
+      cameras.push_back({&m, *exact});
+      report->lines.push_back(std::string(kNames[i]) + ": Kalibr's pinhole-" + exact->name + ", exactly");
+      continue;
+    }
+    const Camera camera(m);
+    const std::string kind = camera.IsAngleModel() ? "kb4" : "radtan";
+    const ModelFit fit = FitSimplerModel(camera, kind);
+    fitted[i] = fit.model;
+    cameras.push_back({&fitted[i], *ExactTargetModel(fit.model, ExportFormat::kKalibr)});
+    report->exact = false;
+    report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
+    const std::string what = std::string(kNames[i]) + ": " + m.distortion.kind +
+                             " is not a Kalibr model: wrote the closest pinhole-" +
+                             cameras.back().distortion.name + ", off by up to " + Px(fit.error.max_px) +
+                             " (RMS " + Px(fit.error.rms_px) + ") over the observed field";
+    report->lines.push_back(what);
+    comments.push_back("NOT EXACT: " + what);
+  }
+  WriteKalibrCamchain(out + "/camchain.yaml", cameras, file.R, file.T, comments);
+  report->files = {"camchain.yaml"};
+}
+
+void Mrcal(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+  const Cameras c = Of(file);
+  for (size_t i = 0; i < c.models.size(); ++i) {
+    const CameraModel& m = *c.models[i];
+    std::vector<std::string> comments{Header(file, ExportFormat::kMrcal)};
+    MrcalCameraModel model;
+    if (auto exact = ExactTargetModel(m, ExportFormat::kMrcal)) {
+      model.lensmodel = exact->name;
+      model.intrinsics = {m.fx, m.fy, m.cx, m.cy};
+      model.intrinsics.insert(model.intrinsics.end(), exact->coeffs.begin(), exact->coeffs.end());
+      model.width = m.image_width, model.height = m.image_height;
+      report->lines.push_back(std::string(kNames[i]) + ": mrcal's " + exact->name + ", exactly");
+    } else {
+      const MrcalSplineFit fit = FitMrcalSpline(Camera(m));
+      model = fit.model;
+      report->exact = false;
+      report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
+      const std::string what = std::string(kNames[i]) + ": " + m.distortion.kind +
+                               " is not an mrcal model: wrote a fitted " + model.lensmodel +
+                               ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
+                               Px(fit.error.rms_px) + ") over " + std::to_string(fit.error.points) +
+                               " points of the observed field";
+      report->lines.push_back(what);
+      comments.push_back("NOT EXACT: " + what);
+    }
+    if (i == 1) {
+      const Eigen::AngleAxisd r(file.R);
+      const Eigen::Vector3d w = r.angle() * r.axis();
+      model.extrinsics = {w.x(), w.y(), w.z(), file.T.x(), file.T.y(), file.T.z()};
+    }
+    const std::string name = "camera-" + std::to_string(i) + ".cameramodel";
+    WriteMrcalCameraModel(out + "/" + name, model, comments);
+    report->files.push_back(name);
+  }
+}
+
+}  // namespace
+
+ExportReport ExportCalibration(const calib::CalibrationFile& file, ExportFormat format,
+                               const std::string& out) {
+  std::error_code error;
+  std::filesystem::create_directories(out, error);
+  if (!std::filesystem::is_directory(out))
+    throw std::runtime_error("cannot create the folder " + out + (error ? ": " + error.message() : ""));
+  ExportReport report;
+  switch (format) {
+    case ExportFormat::kOpenCv: OpenCv(file, out, &report); break;
+    case ExportFormat::kRos: Ros(file, out, &report); break;
+    case ExportFormat::kKalibr: Kalibr(file, out, &report); break;
+    case ExportFormat::kMrcal: Mrcal(file, out, &report); break;
+  }
+  return report;
+}
+
+}  // namespace ws

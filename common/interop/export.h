@@ -1,0 +1,41 @@
+// stereo-export: a widestereo calibration in another tool's format, written
+// into a folder (docs/export.md):
+//
+//   opencv-stereo  stereo.yaml (K D R T R1 R2 P1 P2 Q) and maps.yml.gz, the
+//                  pinhole rectification's remap tables (opencv_stereo_file.h)
+//   ros            left.yaml, right.yaml: camera_info (ros_camera_info.h);
+//                  for a model ROS has not, the rectified cameras, with
+//                  maps.yml.gz to rectify the raw images by first
+//   kalibr         camchain.yaml (kalibr_camchain.h); for a model Kalibr has
+//                  not, the closest pinhole-equi or pinhole-radtan (model_fit.h)
+//   mrcal          camera-0.cameramodel, camera-1.cameramodel
+//                  (mrcal_cameramodel.h); for a model mrcal has not, a
+//                  fitted LENSMODEL_SPLINED_STEREOGRAPHIC (mrcal_spline_fit.h)
+//
+// Exact where the format has the camera's model (exact_model.h); otherwise
+// the export says so, in the files and in its report, with the error of
+// what it wrote instead.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "calib/calib_file.h"
+#include "interop/exact_model.h"
+
+namespace ws {
+
+struct ExportReport {
+  std::vector<std::string> files;  // written, in `out`
+  std::vector<std::string> lines;  // what each camera became, and its error
+  bool exact = true;               // every camera as the format's own model
+  double max_error_px = 0;         // the largest error printed (0 when exact)
+};
+
+// Creates `out` when missing. Throws std::invalid_argument when the format
+// cannot hold the calibration at all (a one-camera file has no stereo
+// rectification) and std::runtime_error when a file cannot be written.
+ExportReport ExportCalibration(const calib::CalibrationFile& file, ExportFormat format,
+                               const std::string& out);
+
+}  // namespace ws

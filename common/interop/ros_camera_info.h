@@ -1,0 +1,36 @@
+// ROS camera_info YAML, the format camera_calibration_parsers reads and
+// camera_info_manager loads (sensor_msgs/CameraInfo's fields):
+//
+//   image_width: 800
+//   image_height: 503
+//   camera_name: left
+//   camera_matrix: {rows: 3, cols: 3, data: [...]}          K
+//   distortion_model: plumb_bob                              or equidistant, rational_polynomial
+//   distortion_coefficients: {rows: 1, cols: N, data: [...]} D
+//   rectification_matrix: {rows: 3, cols: 3, data: [...]}   R: camera -> rectified
+//   projection_matrix: {rows: 3, cols: 4, data: [...]}      P: rectified camera
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace ws {
+
+struct RosCameraInfo {
+  std::string name;
+  int width = 0, height = 0;
+  cv::Matx33d K;
+  std::string distortion_model;
+  std::vector<double> D;
+  cv::Matx33d R;
+  cv::Matx34d P;
+};
+
+// Every number at full precision, each line of `comments` first as a #
+// line. Throws std::runtime_error when it cannot write.
+void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
+                        const std::vector<std::string>& comments);
+
+}  // namespace ws

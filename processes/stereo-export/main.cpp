@@ -1,0 +1,47 @@
+// stereo-export: a calibration file (stereo-calibrate --out) in the format
+// of another tool, into a folder (interop/export.h, docs/export.md). Exact
+// where the tool has the camera's model; otherwise it says so and prints
+// the error of what it wrote instead.
+//
+//   stereo-export calib.yaml --to mrcal mrcal/
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "calib/calib_file.h"
+#include "interop/export.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Writes a calibration file (stereo-calibrate --out) in another tool's format into the folder "
+      "OUT: opencv-stereo (stereo.yaml: K D R T R1 R2 P1 P2 Q, and maps.yml.gz: the pinhole "
+      "rectification's cv::remap tables), ros (left.yaml, right.yaml: camera_info), kalibr "
+      "(camchain.yaml), mrcal (camera-0.cameramodel, camera-1.cameramodel). A camera whose model "
+      "the format has is written exactly; otherwise the export says so, in the files and here, "
+      "and prints the error of what it wrote instead (the maps; Kalibr's closest model; mrcal's "
+      "fitted LENSMODEL_SPLINED_STEREOGRAPHIC)."};
+  std::string in, format, out;
+  app.add_option("calibration", in, "the calibration file")->required()->check(CLI::ExistingFile);
+  app.add_option("--to", format, "opencv-stereo, ros, kalibr or mrcal")
+      ->required()
+      ->check(CLI::IsMember({"opencv-stereo", "ros", "kalibr", "mrcal"}));
+  app.add_option("out", out, "the folder to write into (created when missing)")->required();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const ws::calib::CalibrationFile file = ws::calib::ReadCalibrationFile(in);
+    const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out);
+    for (const std::string& line : report.lines) std::printf("%s\n", line.c_str());
+    std::printf("%s: %s into %s:", report.exact ? "exact" : "NOT EXACT", format.c_str(), out.c_str());
+    for (const std::string& name : report.files) std::printf(" %s", name.c_str());
+    if (!report.exact) std::printf(" (error up to %.4g px)", report.max_error_px);
+    std::printf("\n");
+  } catch (const std::exception& error) {
+    std::cerr << "stereo-export: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
