@@ -9,7 +9,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "match/rectified_pair_writer.h"
+#include "match/frame_image_writer.h"
 #include "match_fixtures.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
@@ -48,8 +48,8 @@ TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
   EXPECT_EQ(Messages<widestereo::disparity_t>(ReadLog(dir + "/out.lcmlog"), ws::channel::kStereoDisparity).size(),
             5u);
   for (int id = 0; id < 5; ++id) {
-    const std::string left = ws::RectifiedImagePath(out, "left", id);
-    const std::string right = ws::RectifiedImagePath(out, "right", id);
+    const std::string left = ws::FrameImagePath(out, "left", id);
+    const std::string right = ws::FrameImagePath(out, "right", id);
     EXPECT_EQ(std::filesystem::path(left).filename(), "left_00000" + std::to_string(id) + ".png");
     if (id % 2) {
       EXPECT_FALSE(std::filesystem::exists(left)) << left;
@@ -68,7 +68,7 @@ TEST(SaveRectified, SaveEveryNeedsAFolderAndAPositiveCount) {
   const std::string dir = TempDir("save-rectified-options");
   auto r = RunCommand({"stereo-match", "--log-dir", dir, "--save-every", "2"}, 30);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("--save-every requires --save-rectified"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--save-every requires --save-rectified or --save-disparity"), std::string::npos) << r.output;
   r = RunCommand({"stereo-match", "--log-dir", dir, "--save-rectified", dir + "/x", "--save-every", "0"}, 30);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("--save-every"), std::string::npos) << r.output;
