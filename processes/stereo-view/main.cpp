@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   int port = 8077;
   std::string address = "127.0.0.1", calib_file, three_dir = "/usr/share/javascript/three";
   ws::view::ViewOptions options;
-  app.add_option("--port", port, "TCP port of the page")->check(CLI::Range(1, 65535))->capture_default_str();
+  app.add_option("--port", port, "TCP port of the page (0: any free port, printed and logged)")->check(CLI::Range(0, 65535))->capture_default_str();
   app.add_option("--listen", address,
                  "Address to listen on: 127.0.0.1 (this host only), 0.0.0.0 (every network: anyone "
                  "who reaches the port sees the rig, and with the key can command it)")
@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
     if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
     ws::view::PageServer server(process, hub, node, address, port, three_dir);
     if (!cli.options().quiet)
-      std::printf("stereo-view: open http://%s:%d/\n", address == "0.0.0.0" ? "localhost" : address.c_str(), port);
+      std::printf("stereo-view: open http://%s:%d/\n", address == "0.0.0.0" ? "localhost" : address.c_str(), server.port()),
+          std::fflush(stdout);
     node.Start();
     return process.Run();
   } catch (const std::exception& e) {

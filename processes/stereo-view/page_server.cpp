@@ -33,11 +33,12 @@ PageServer::PageServer(Process& process, EventHub& hub, ViewNode& node, const st
       server_(std::make_unique<httplib::Server>()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kMaxStreams + 8); };
   Routes();
-  if (!server_->bind_to_port(address, port))
+  port_ = port == 0 ? server_->bind_to_any_port(address) : server_->bind_to_port(address, port) ? port : -1;
+  if (port_ <= 0)
     throw std::runtime_error("cannot listen on " + address + ":" + std::to_string(port) +
                              " (in use by another program? another --port)");
   thread_ = std::thread([this] { server_->listen_after_bind(); });
-  process_.log().Info("the page: http://" + address + ":" + std::to_string(port) + "/");
+  process_.log().Info("the page: http://" + address + ":" + std::to_string(port_) + "/");
 }
 
 PageServer::~PageServer() {

@@ -13,6 +13,7 @@
 // once (503 beyond), so that the page's files are always served.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <thread>
@@ -32,11 +33,13 @@ class PageServer {
   static constexpr int kMaxStreams = 8;
 
   // Reads three.js (throws naming the package when it is missing) and binds
-  // to address:port (throws when it cannot); serves from a thread of its own.
+  // to address:port, any free port for 0 (throws when it cannot); serves
+  // from a thread of its own.
   PageServer(Process& process, EventHub& hub, ViewNode& node, const std::string& address, int port,
              const std::string& three_dir);
   // Closes the streams and stops serving.
   ~PageServer();
+  int port() const { return port_; }
 
  private:
   void Routes();
@@ -46,6 +49,7 @@ class PageServer {
   ViewNode& node_;
   std::string three_js_, orbit_controls_js_;
   std::unique_ptr<httplib::Server> server_;
+  int port_ = 0;
   std::atomic<int> streams_{0};
   std::thread thread_;
 };
