@@ -225,7 +225,7 @@ function showHealth(health) {
 // y down, z ahead; seen from behind the cameras.
 const cloudView = (() => {
   const container = $("#cloud");
-  let renderer = null, camera, controls, scene, points = null, last = null;
+  let renderer = null, camera, controls, scene, points = null, last = null, framed = false, pointSize = 0.01;
   try {
     renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
     scene = new THREE.Scene();
@@ -272,11 +272,23 @@ const cloudView = (() => {
       const rgb = scaleColour(hi > lo ? (v - lo) / (hi - lo) : 0.5);
       for (let k = 0; k < 3; ++k) colours[3 * i + k] = rgb[k] / 255;
     });
+    if (!framed) {  // the first cloud: look at it from behind the cameras, above and to the left
+      framed = true;
+      let c = [0, 0, 0];
+      for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
+      let r = 0;
+      for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
+      r = Math.max(r, 0.1);
+      controls.target.set(c[0], c[1], c[2]);
+      camera.position.set(c[0] - 0.9 * r, c[1] - 0.8 * r, c[2] - 1.6 * r);
+      pointSize = r / 120;
+      controls.update();
+    }
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute("position", new THREE.BufferAttribute(xyz, 3));
     geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
     if (points) { scene.remove(points); points.geometry.dispose(); }
-    points = new THREE.Points(geometry, new THREE.PointsMaterial({ size: 0.01, vertexColors: THREE.VertexColors }));
+    points = new THREE.Points(geometry, new THREE.PointsMaterial({ size: pointSize, vertexColors: THREE.VertexColors }));
     scene.add(points);
     renderer.render(scene, camera);
   }
