@@ -22,7 +22,8 @@ namespace ws::view {
 
 // Topic "frame": both images (no "right" for a one-camera rig).
 std::string FrameEvent(const widestereo::stereo_frame_t& frame, int max_width);
-// Topic "corners": the corners found in each image, pixels of the full image.
+// The corners found in each image, pixels of the full image (topic
+// "detected": {"frame": a FrameEvent, "corners": this}).
 std::string CornersEvent(const widestereo::stereo_corners_t& corners);
 // Topic "coverage": stereo-calibrate's state, views, coverage grids, RMS and hint.
 std::string CoverageEvent(const widestereo::calibration_status_t& status);

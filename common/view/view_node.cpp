@@ -86,7 +86,13 @@ bool ViewNode::Due(int64_t& last_us) {
 
 void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
   Guarded(process_, channel::kStereoImages, [&] {
-    hub_.Publish("frame", FrameEvent(frame, options_.max_width));
+    std::string event = FrameEvent(frame, options_.max_width);
+    {
+      std::lock_guard<std::mutex> lock(recent_mutex_);
+      recent_[frame.frame_id] = event;
+      if (recent_.size() > kRecentFrames) recent_.erase(recent_.begin());
+    }
+    hub_.Publish("frame", std::move(event));
     if (IsNoImage(frame.right)) return;
     std::shared_ptr<const Rectification> rect;
     {
@@ -109,6 +115,13 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
     hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width));
   });
+}
+
+void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
+  std::lock_guard<std::mutex> lock(recent_mutex_);
+  const auto frame = recent_.find(corners.frame_id);
+  if (frame != recent_.end())
+    hub_.Publish("detected", "{\"frame\":" + frame->second + ",\"corners\":" + CornersEvent(corners) + "}");
 }
 
 void ViewNode::PublishView() {
@@ -148,7 +161,7 @@ void ViewNode::Start() {
       },
       2);
   process_.Subscribe<widestereo::stereo_corners_t>(
-      channel::kStereoCorners, [this](const auto& m) { hub_.Publish("corners", CornersEvent(m)); });
+      channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
   process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
     hub_.Publish("coverage", CoverageEvent(m));

@@ -2,7 +2,9 @@
 // EventHub (view/event_hub.h) and the page's buttons into commands.
 //
 //  - STEREO_IMAGES at most `image_hz` (JPEG, both images; with a calibration
-//    also the rectified pair), STEREO_CORNERS, CALIBRATION_STATUS,
+//    also the rectified pair); STEREO_CORNERS with the image they were found
+//    in (when that frame was one of the last kRecentFrames shown: the
+//    corners of other frames are not drawn), CALIBRATION_STATUS,
 //    CALIBRATION_RESULT: the calibration view;
 //  - STEREO_DISPARITY (colours and legend, at most image_hz),
 //    STEREO_CLOUD_FILTERED (at most image_hz), CLOUD_STATS,
@@ -19,6 +21,7 @@
 // arguments (the page names no file); sent signed, and only with the rig key.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -61,7 +64,10 @@ class ViewNode {
   std::string Command(const std::string& command);
 
  private:
+  static constexpr size_t kRecentFrames = 64;  // 16 s at 4 Hz: a slow detector's latency
+
   bool Due(int64_t& last_us);
+  void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
   void PublishView();
 
@@ -74,6 +80,8 @@ class ViewNode {
   std::optional<StereoRig> rig_;
   std::string rig_source_;
   std::shared_ptr<const Rectification> rect_;
+  std::mutex recent_mutex_;  // guards recent_
+  std::map<int64_t, std::string> recent_;  // the frames shown last, their "frame" events by frame id
   NewestFirst<widestereo::stereo_frame_t> frames_;
   NewestFirst<widestereo::disparity_t> disparities_;
   NewestFirst<widestereo::point_cloud_t> clouds_;

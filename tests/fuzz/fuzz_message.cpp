@@ -126,6 +126,7 @@ void Use(const stereo_corners_t& corners) {
   ws::calib::CalibrationSession session{ws::calib::SessionOptions{}};
   for (int i = 0; i < 2; ++i) session.Add(corners);  // the second one is a near duplicate
   session.Status(0, "collecting", -1);
+  ws::view::CornersEvent(corners);  // stereo-view draws them
   if (session.views() > 1) Violated("the same view was accepted twice");
 }
 

@@ -110,6 +110,7 @@ def browser():
                  "--enable-unsafe-swiftshader", "--use-angle=swiftshader"):
         options.add_argument(flag)
     driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    driver.set_script_timeout(120)  # a loaded machine's renderer may lag behind
     yield driver
     driver.quit()
 

@@ -3,7 +3,7 @@
 "use strict";
 
 const $ = (selector) => document.querySelector(selector);
-const state = { frame: null, corners: null, coverage: null };
+const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0 };
 
 // ---- tabs -------------------------------------------------------------------
 for (const tab of document.querySelectorAll(".tab")) {
@@ -34,11 +34,10 @@ function scaleColour(t) {
 function fmt(value, digits = 3) { return value === null || value === undefined ? "—" : Number(value).toFixed(digits); }
 
 // ---- calibration view -------------------------------------------------------
-async function drawCamera(side) {
+function drawCamera(side) {
   const figure = $("#cam-" + side), canvas = figure.querySelector("canvas");
-  const image = state.frame && state.frame[side];
-  if (!image) return;
-  const img = await loadImage(image.jpeg);
+  const image = state.frame && state.frame[side], img = state.images[side];
+  if (!image || !img) return;
   canvas.width = img.width; canvas.height = img.height;
   const ctx = canvas.getContext("2d");
   ctx.drawImage(img, 0, 0);
@@ -61,7 +60,8 @@ async function drawCamera(side) {
   // The corners of the newest detection.
   const corners = state.corners && state.corners[side];
   let drawn = 0;
-  if (corners && corners.width === image.width && corners.height === image.height) {
+  if (corners && state.corners.frame_id === state.frame.frame_id && corners.width === image.width &&
+      corners.height === image.height) {
     ctx.strokeStyle = "#00ff00";
     ctx.lineWidth = 2;
     for (const [u, v] of corners.points) {
@@ -75,10 +75,28 @@ async function drawCamera(side) {
   figure.dataset.frameId = state.frame.frame_id;
   figure.querySelector(".info").textContent =
     `frame ${state.frame.frame_id}, ${image.width}×${image.height}, ${drawn} corners` +
-    (state.corners ? ` (of frame ${state.corners.frame_id})` : "");
+    (state.corners ? "" : " (waiting for stereo-detect's corners of a frame)");
 }
 
-function drawPair() { drawCamera("left"); drawCamera("right"); }
+// At most one redraw per displayed frame, whatever the number of events.
+let redraw = null;
+function drawPair() {
+  if (redraw === null) redraw = requestAnimationFrame(() => { redraw = null; drawCamera("left"); drawCamera("right"); });
+}
+
+// Each image decoded once, when it comes. The calibration view shows the
+// newest frame with its corners (detected) and the newest frame only while
+// no corners come.
+async function showFrame(frame, corners) {
+  if (!corners && Date.now() - state.detectedAt < 10000) return;  // a slow detector's latency
+  const images = {};
+  for (const side of ["left", "right"]) if (frame[side]) images[side] = await loadImage(frame[side].jpeg);
+  state.frame = frame;
+  state.images = images;
+  state.corners = corners;
+  if (corners) state.detectedAt = Date.now();
+  drawPair();
+}
 
 function showCoverage(cov) {
   state.coverage = cov;
@@ -302,8 +320,8 @@ function connect() {
   const on = (topic, fn) => source.addEventListener(topic, (e) => fn(JSON.parse(e.data)));
   source.onopen = () => { $("#connection").textContent = "live"; $("#connection").className = "on"; };
   source.onerror = () => { $("#connection").textContent = "reconnecting…"; $("#connection").className = "off"; };
-  on("frame", (e) => { state.frame = e; drawPair(); });
-  on("corners", (e) => { state.corners = e; drawPair(); });
+  on("frame", (e) => showFrame(e, null));
+  on("detected", (e) => showFrame(e.frame, e.corners));
   on("coverage", showCoverage);
   on("result", showResult);
   on("status", showStatus);
