@@ -148,18 +148,23 @@ void ViewNode::PublishView() {
                              .dump());
 }
 
+template <class Msg>
+void ViewNode::SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage) {
+  process_.Subscribe<Msg>(
+      channel,
+      [this, channel, &last_us, &stage](const Msg& msg) {
+        if (Due(last_us))
+          stage.Offer(msg);
+        else
+          process_.Counters(channel).skipped++;
+      },
+      2);  // LCM's queue holds two big messages at most: the stage takes the newest
+}
+
 void ViewNode::Start() {
   const bool live = !process_.file_input();
   auto received = [this] { return process_.file_input() ? process_.Now() : WallMicros(); };
-  process_.Subscribe<widestereo::stereo_frame_t>(
-      channel::kStereoImages,
-      [this](const auto& frame) {
-        if (Due(last_frame_us_))
-          frames_.Offer(frame);
-        else
-          process_.Counters(channel::kStereoImages).skipped++;
-      },
-      2);
+  SubscribeSampled(channel::kStereoImages, last_frame_us_, frames_);
   process_.Subscribe<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
   process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
@@ -171,24 +176,8 @@ void ViewNode::Start() {
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(StereoRigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });
-  process_.Subscribe<widestereo::disparity_t>(
-      channel::kStereoDisparity,
-      [this](const auto& m) {
-        if (Due(last_disparity_us_))
-          disparities_.Offer(m);
-        else
-          process_.Counters(channel::kStereoDisparity).skipped++;
-      },
-      2);
-  process_.Subscribe<widestereo::point_cloud_t>(
-      channel::kStereoCloudFiltered,
-      [this](const auto& m) {
-        if (Due(last_cloud_us_))
-          clouds_.Offer(m);
-        else
-          process_.Counters(channel::kStereoCloudFiltered).skipped++;
-      },
-      2);
+  SubscribeSampled(channel::kStereoDisparity, last_disparity_us_, disparities_);
+  SubscribeSampled(channel::kStereoCloudFiltered, last_cloud_us_, clouds_);
   process_.Subscribe<widestereo::cloud_stats_t>(channel::kCloudStats, [this, received](const auto& m) {
     board_.Add(m, received());
     hub_.Publish("cloud_stats", CloudStatsEvent(m));

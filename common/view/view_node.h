@@ -67,6 +67,10 @@ class ViewNode {
   static constexpr size_t kRecentFrames = 64;  // 16 s at 4 Hz: a slow detector's latency
 
   bool Due(int64_t& last_us);
+  // Hands a message of `channel` to `stage` when at least 1 / image_hz has
+  // passed since `last_us`; else counts it as skipped.
+  template <class Msg>
+  void SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
   void PublishView();

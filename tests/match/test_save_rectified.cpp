@@ -25,7 +25,7 @@ cv::Mat Noise(int seed) {
   return image;
 }
 
-TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
+TEST(SaveRectified, WritesEveryNthFramesPairAndDisparityNamedByItsFrameId) {
   const std::string dir = TempDir("save-rectified");
   auto calibration = IdentityCalibration(96, 64, 80, 0.1);
   calibration.utime = 1;
@@ -40,8 +40,9 @@ TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
   }
   WriteLog(dir + "/in.lcmlog", events);
   const std::string out = dir + "/rectified";
+  const std::string disparities = dir + "/disparity";
   const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--num-disparities", "16", "--save-rectified", out,
-                             "--save-every", "2", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                             "--save-disparity", disparities, "--save-every", "2", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
                              "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
                             60);
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -51,6 +52,14 @@ TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
     const std::string left = ws::FrameImagePath(out, "left", id);
     const std::string right = ws::FrameImagePath(out, "right", id);
     EXPECT_EQ(std::filesystem::path(left).filename(), "left_00000" + std::to_string(id) + ".png");
+    const std::string disparity = ws::FrameImagePath(disparities, "disparity", id);
+    EXPECT_EQ(std::filesystem::exists(disparity), id % 2 == 0) << disparity;
+    if (id % 2 == 0) {  // in colour, the legend below the image
+      const cv::Mat colour = cv::imread(disparity, cv::IMREAD_UNCHANGED);
+      EXPECT_EQ(colour.type(), CV_8UC3) << disparity;
+      EXPECT_EQ(colour.cols, 96) << disparity;
+      EXPECT_GT(colour.rows, 64) << disparity;
+    }
     if (id % 2) {
       EXPECT_FALSE(std::filesystem::exists(left)) << left;
       EXPECT_FALSE(std::filesystem::exists(right)) << right;
