@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """One browser on stereo-view's page for the transport benchmark: Debian's
 headless Chromium (Selenium) opens the page's depth view and keeps it open,
 reading every update, until Ctrl-C (the launcher's stop).

@@ -120,7 +120,11 @@ std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat&
 
 std::string DisparityEvent(const widestereo::disparity_t& disparity, int max_width) {
   const DisparityLegend legend = MakeLegend(disparity);
-  const cv::Mat colour = ColourDisparity(ImageToMat(disparity.disparity), legend);
+  cv::Mat values = ImageToMat(disparity.disparity);
+  if (values.cols > max_width)  // coloured at the size shown: nearest, so no disparity is made up
+    cv::resize(values, values, {max_width, std::max(1, values.rows * max_width / values.cols)}, 0, 0,
+               cv::INTER_NEAREST);
+  const cv::Mat colour = ColourDisparity(values, legend);
   json ticks = json::array();
   for (const LegendTick& tick : legend.ticks)
     ticks.push_back({{"disparity", tick.disparity},

@@ -1,5 +1,8 @@
 #include "view/view_node.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "lcm_io/channels.h"
@@ -77,6 +80,18 @@ std::string ViewNode::Command(const std::string& command) {
   return "";
 }
 
+Rectification ShownRectification(const StereoRig& rig, int max_width) {
+  RectifyOptions options;
+  options.mode = RectificationMode::kAuto;
+  options.focal_scale = std::min(1.0, double(max_width) / rig.left.image_width);
+  Rectification rect = BuildRectification(rig, options);
+  if (rect.mode != RectificationMode::kPinhole || options.focal_scale == 1.0) return rect;
+  options.mode = RectificationMode::kPinhole;  // its size is the input's unless given
+  options.size = cv::Size(int(std::lround(rig.left.image_width * options.focal_scale)),
+                          int(std::lround(rig.left.image_height * options.focal_scale)));
+  return BuildRectification(rig, options);
+}
+
 bool ViewNode::Due(int64_t& last_us) {
   const int64_t now = process_.Now();
   if (last_us != INT64_MIN && now - last_us < int64_t(1e6 / options_.image_hz)) return false;
@@ -98,11 +113,7 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     {
       std::lock_guard<std::mutex> lock(rig_mutex_);
       if (!rig_) return;
-      if (!rect_) {
-        RectifyOptions rectify;
-        rectify.mode = RectificationMode::kAuto;
-        rect_ = std::make_shared<const Rectification>(BuildRectification(*rig_, rectify));
-      }
+      if (!rect_) rect_ = std::make_shared<const Rectification>(ShownRectification(*rig_, options_.max_width));
       rect = rect_;
     }
     const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);

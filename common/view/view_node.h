@@ -39,7 +39,7 @@
 namespace ws::view {
 
 struct ViewOptions {
-  double image_hz = 4;      // images, disparities and clouds shown per second at most
+  double image_hz = 3;      // images, disparities and clouds shown per second at most
   int max_width = 640;      // pixels across of the images sent to the page
   int cloud_points = 20000; // points of a cloud sent to the page at most
 };
@@ -47,6 +47,11 @@ struct ViewOptions {
 // The pseudo-channel of PROCESS_STATUS counting the page's events: published
 // (sent to a browser), skipped (replaced before a slow browser took it).
 inline constexpr const char* kBrowserCounters = "browsers";
+
+// The rectification the page shows: `auto` (stereo-match's default), at a
+// focal length scaled so that the rectified images are at most max_width
+// across (rectified that small, not shrunk after).
+Rectification ShownRectification(const StereoRig& rig, int max_width);
 
 class ViewNode {
  public:
@@ -64,7 +69,7 @@ class ViewNode {
   std::string Command(const std::string& command);
 
  private:
-  static constexpr size_t kRecentFrames = 64;  // 16 s at 4 Hz: a slow detector's latency
+  static constexpr size_t kRecentFrames = 64;  // 21 s at 3 Hz: a slow detector's latency
 
   bool Due(int64_t& last_us);
   // Hands a message of `channel` to `stage` when at least 1 / image_hz has

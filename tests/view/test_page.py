@@ -49,7 +49,8 @@ class Bus:
 
     def __init__(self, folder, channels):
         self.folder = str(folder)
-        self.url = "udpm://239.255.76.67:%d?ttl=0&recv_buf_size=16777216" % random.randrange(20000, 40000)
+        # Ports apart from the other tests' (tests/support UniqueUdpmUrl: 20000 to 39999).
+        self.url = "udpm://239.255.76.67:%d?ttl=0&recv_buf_size=16777216" % random.randrange(41000, 49000)
         self.log = os.path.join(self.folder, "bus.lcmlog")
         self.processes = []
         self.start("lcm-logger", ["-f", "-s", "--channel=" + channels, "--lcm-url=" + self.url, self.log], own=False)

@@ -84,11 +84,11 @@ function drawPair() {
   if (redraw === null) redraw = requestAnimationFrame(() => { redraw = null; drawCamera("left"); drawCamera("right"); });
 }
 
-// Each image decoded once, when it comes. The calibration view shows the
-// newest frame with its corners (detected) and the newest frame only while
-// no corners come.
+// Each image decoded once, when it comes. The calibration view shows what the
+// detector saw: each frame it has found corners in (or none), with them; the
+// newest frames only while no detection came for 30 s (no stereo-detect).
 async function showFrame(frame, corners) {
-  if (!corners && Date.now() - state.detectedAt < 10000) return;  // a slow detector's latency
+  if (!corners && Date.now() - state.detectedAt < 30000) return;
   const images = {};
   for (const side of ["left", "right"]) if (frame[side]) images[side] = await loadImage(frame[side].jpeg);
   state.frame = frame;
