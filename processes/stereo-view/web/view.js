@@ -115,7 +115,10 @@ function drawMap(title, rows, unit) {
   canvas.width = 32 * Math.max(1, ncols); canvas.height = 32 * Math.max(1, nrows);
   canvas.style.width = "320px";
   const ctx = canvas.getContext("2d");
-  const values = rows.flat().filter((v) => v >= 0), most = values.length ? Math.max(...values) : 0;
+  // The scale's top at the 95th percentile, so that a few extreme cells (the
+  // image's corners, far from any view) do not flatten the rest.
+  const values = rows.flat().filter((v) => v >= 0).sort((a, b) => a - b);
+  const most = values.length ? values[Math.floor(0.95 * (values.length - 1))] : 0;
   ctx.fillStyle = "#ccc";
   ctx.fillRect(0, 0, canvas.width, canvas.height);
   rows.forEach((row, r) => row.forEach((v, c) => {
@@ -125,7 +128,7 @@ function drawMap(title, rows, unit) {
     ctx.fillRect(c * 32, r * 32, 32, 32);
   }));
   const caption = document.createElement("figcaption");
-  caption.textContent = `${title}: up to ${fmt(most)} ${unit} (yellow), grey: none`;
+  caption.textContent = `${title}: yellow ${fmt(most)} ${unit} or more, up to ${fmt(values[values.length - 1])}; grey: none`;
   figure.append(canvas, caption);
   return figure;
 }
