@@ -15,7 +15,8 @@ FUZZ_SECONDS ?= 60
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Every Debian package the project uses (build, tests, demo, lcm-spy, plots,
-# and the benchmarks against mrcal: bench/real, bench/fisheye).
+# the benchmarks against mrcal: bench/real, bench/fisheye, and stereo-view's
+# server, its 3-D view and the page's tests in headless Chromium).
 DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java \
   libopencv-dev libopencv-contrib-dev opencv-doc \
@@ -23,7 +24,7 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 tmux xvfb clang libclang-rt-14-dev python3 python3-yaml time \
   libsodium-dev mrcal python3-mrcal python3-opencv pybind11-dev python3-pybind11 python3-numpy \
-  python3-pytest
+  python3-pytest libcpp-httplib-dev libjs-three chromium chromium-driver python3-selenium
 
 .PHONY: deps build built test test-asan fuzz demo spy clean
 

@@ -4,13 +4,19 @@
 //  - STEREO_IMAGES frames lost in transit (frame-id gaps seen here),
 //  - latency from capture (the pair's utime, this host's clock) to the
 //    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
-//  - every process's drop counters from PROCESS_STATUS.
+//  - every process's drop counters from PROCESS_STATUS,
+//  - every process's CPU share between its first and last heartbeat of the
+//    run (from /proc/PID/stat: the processes run on this host).
 // With --prepare DIR it instead writes the simulator's frames as left*/right*
 // PNG pairs for stereo-capture --source dir:DIR, and the rig's true
 // calibration.yaml for stereo-match.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -40,6 +46,22 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
   return 0;
 }
 
+// User plus system CPU time of a process of this host, seconds; negative when gone.
+double CpuSeconds(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t end = text.rfind(')');  // the name may hold spaces
+  if (end == std::string::npos) return -1;
+  std::istringstream fields(text.substr(end + 2));
+  std::string field;
+  unsigned long long user = 0, system = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) user = std::stoull(field);
+    if (i == 15) system = std::stoull(field);
+  }
+  return double(user + system) / double(sysconf(_SC_CLK_TCK));
+}
+
 double Percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -64,6 +86,7 @@ int main(int argc, char** argv) {
   std::map<std::string, widestereo::process_status_t> status;
   // Each process's first heartbeat after the first pair, and when it came.
   std::map<std::string, std::pair<widestereo::process_status_t, int64_t>> first_status, last_status;
+  std::map<std::string, double> first_cpu, last_cpu;  // CPU seconds at those heartbeats
   process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
     if (first_id < 0) first_id = f.frame_id, first_utime = ws::WallMicros();
     last_id = f.frame_id;
@@ -79,6 +102,8 @@ int main(int argc, char** argv) {
         if (first_id < 0) return;
         first_status.try_emplace(s.name, s, ws::WallMicros());
         last_status[s.name] = {s, ws::WallMicros()};
+        first_cpu.try_emplace(s.name, CpuSeconds(s.pid));
+        last_cpu[s.name] = CpuSeconds(s.pid);
       });
   process.Every(200000, [&] {
     if (first_id >= 0 && ws::WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
@@ -106,6 +131,12 @@ int main(int argc, char** argv) {
         std::printf("  %-16s %-22s %5.1f Hz\n", name.c_str(), c.channel.c_str(),
                     double(c.published - published_before) / seconds);
     }
+  }
+  std::printf("CPU (share of one core, between each process's first and last heartbeat of the run):\n");
+  for (const auto& [name, last] : last_status) {
+    const double seconds = (last.second - first_status.at(name).second) * 1e-6;
+    if (seconds > 0 && first_cpu[name] >= 0 && last_cpu[name] >= 0)
+      std::printf("  %-16s %5.1f %%\n", name.c_str(), 100 * (last_cpu[name] - first_cpu[name]) / seconds);
   }
   std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
               Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));

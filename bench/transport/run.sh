@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Transport benchmark (issue #7): 2 x 1280x960 GRAY8 pairs at 15 Hz over udpm
 # on this host, through stereo-match and stereo-cloud, for DURATION seconds
-# (default 60): frames lost in transit and latency from capture to
-# STEREO_CLOUD_FILTERED. Uses the receive-buffer size the launch files ask
-# for; the kernel grants at most net.core.rmem_max (see docs/launch.md).
+# (default 60): frames lost in transit, latency from capture to
+# STEREO_CLOUD_FILTERED and each process's CPU share. Then the same again with
+# stereo-view and one headless Chromium on its page (transport-view.yaml): the
+# first run is the second's baseline. Uses the receive-buffer size the launch
+# files ask for; the kernel grants at most net.core.rmem_max (see docs/launch.md).
 #   bench/transport/run.sh [DURATION]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -13,6 +15,16 @@ mkdir -p "$RUN/frames"
 echo "net.core.rmem_max = $(sysctl -n net.core.rmem_max)"
 build/bench/bench_transport --prepare "$RUN/frames" --sim config/sim/wall.yaml --log-dir "$RUN" --quiet
 mv "$RUN/frames/calibration.yaml" "$RUN/calibration.yaml"
-scripts/launch bench/transport/transport.yaml --run-dir "$RUN" --no-record \
-  --append "bench_transport=--duration=$DURATION" > "$RUN/launch.out"
-cat "$RUN/bench_transport.out"
+PORT=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+for variant in transport transport-view; do
+  mkdir -p "$RUN/$variant"
+  ln -sfn ../frames "$RUN/$variant/frames"
+  ln -sfn ../calibration.yaml "$RUN/$variant/calibration.yaml"
+  extra=()
+  [ "$variant" = transport-view ] &&
+    extra=(--append "stereo-view=--port=$PORT" --append "browser=http://127.0.0.1:$PORT/")
+  scripts/launch "bench/transport/$variant.yaml" --run-dir "$RUN/$variant" --no-record \
+    --append "bench_transport=--duration=$DURATION" "${extra[@]}" > "$RUN/$variant/launch.out"
+  echo "== $variant.yaml"
+  cat "$RUN/$variant/bench_transport.out"
+done

@@ -13,6 +13,7 @@
 #include "calib/calib_plots.h"
 #include "calib/calib_publish.h"
 #include "calib/report.h"
+#include "calib/result_message.h"
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
 #include "models/model_registry.h"
@@ -343,6 +344,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
                           std::string(channel::kStereoCalibration));
     else
       PublishCalibration(process_, ToMessage(primary, process_.Now()));
+    process_.Publish(channel::kCalibrationResult, ToResultMessage(results, process_.Now()));
     if (!options_.plot_dir.empty()) {
       try {  // a figure that cannot be drawn (no gnuplot) costs no calibration
         std::filesystem::create_directories(options_.plot_dir);

@@ -150,11 +150,34 @@ void Validate(const widestereo::calibration_health_t& msg) {
             "negative region match count");
 }
 
+void Validate(const widestereo::calibration_result_t& msg) {
+  const char* t = "calibration_result_t";
+  Require(msg.ncameras == 1 || msg.ncameras == 2, t, "one or two cameras");
+  for (const auto& model : msg.models) {
+    const double figures[] = {model.left_rms, model.left_heldout_rms, model.right_rms,
+                              model.right_heldout_rms, model.stereo_rms};
+    Require(AllFinite(figures), t, "non-finite RMS of model '" + model.model + "'");
+  }
+  for (const auto& camera : msg.cameras) {
+    Require(ImageSizeAcceptable(camera.image_width, camera.image_height), t,
+            "bad image size of camera '" + camera.name + "'");
+    // A map is a handful of cells a side; more is no viewer's business.
+    Require(camera.residual_rows >= 0 && camera.residual_cols >= 0 && camera.residual_rows <= 256 &&
+                camera.residual_cols <= 256 && camera.uncertainty_rows >= 0 &&
+                camera.uncertainty_cols >= 0 && camera.uncertainty_rows <= 256 &&
+                camera.uncertainty_cols <= 256,
+            t, "a map has 0 to 256 cells a side");
+    for (const auto& row : camera.residual_rms_px) Require(AllFinite(row), t, "non-finite residual map");
+    for (const auto& row : camera.uncertainty_px) Require(AllFinite(row), t, "non-finite uncertainty map");
+  }
+}
+
 void Validate(const widestereo::disparity_t& msg) {
   Validate(msg.disparity);
   Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,
           "disparity_t", "disparity must be FLOAT_GRAY32");
   Require(msg.num_disparities > 0, "disparity_t", "num_disparities must be positive");
+  Require(std::isfinite(msg.min_disparity), "disparity_t", "min_disparity must be finite");
   Require(msg.rectification == widestereo::disparity_t::RECTIFICATION_PINHOLE ||
               msg.rectification == widestereo::disparity_t::RECTIFICATION_LATLON,
           "disparity_t", "unknown rectification " + std::to_string(msg.rectification));
