@@ -200,10 +200,7 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
   std::vector<FinalSolve> candidates = {Keep(*s)};
   s->field_curve.push_back({0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
-  double best_heldout = s->heldout.rms_px[0];
-  int misses = 0;  // grids in a row that predicted no better than the best before them
   for (int cols : kFieldLadder) {
-    if (misses == 2) break;  // as --knots auto: the finer grids would only cost time
     const int rows = FieldRows(cols, p.width, p.height);
     Restore(candidates[0], s);
     try {
@@ -219,8 +216,6 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
       break;
     }
     s->field_curve.push_back({cols, rows, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
-    misses = s->heldout.rms_px[0] < best_heldout ? 0 : misses + 1;
-    best_heldout = std::min(best_heldout, s->heldout.rms_px[0]);
     Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
                      " field: rms " + Fixed(s->field_curve.back().rms_px) + " px, held-out " +
                      Fixed(s->heldout.rms_px[0]) + " px");

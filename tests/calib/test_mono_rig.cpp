@@ -55,7 +55,7 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
     EXPECT_EQ(c.right.image_width, 0);
   }
 
-  const auto run = CalibrateOnce(dir, corners, "mono", {"--model", "poly6"});
+  const auto run = CalibrateOnce(dir, corners, "mono", {"--model", "poly6", "--nonradial", "none"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json report = ReadJson(dir + "/mono.json");
   ASSERT_EQ(report["cameras"].size(), 1u);
@@ -75,8 +75,8 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
   const std::string stereo_dir = ws::test::TempDir("mono-rig-stereo");
   const std::string stereo_corners =
       CaptureAndDetect(stereo_dir, "dir:" + ws::test::OpenCvStereoSetDir(), kBoard);
-  const auto stereo_run =
-      CalibrateOnce(stereo_dir, stereo_corners, "stereo", {"--model", "poly6", "--flow", "paper"});
+  const auto stereo_run = CalibrateOnce(stereo_dir, stereo_corners, "stereo",
+                                        {"--model", "poly6", "--nonradial", "none", "--flow", "paper"});
   ASSERT_EQ(stereo_run.exit_code, 0) << stereo_run.output;
   const CalibrationFile stereo = ReadCalibrationFile(stereo_dir + "/stereo.yaml");
   EXPECT_EQ(report["cameras"][0]["views"], ReadJson(stereo_dir + "/stereo.json")["cameras"][0]["views"]);

@@ -60,7 +60,9 @@ std::vector<uint8_t> CollectedCommand(BusWatch& bus, const std::vector<std::stri
 // stereo-calibrate over udpm, poly6 (the quickest solve), and the bus seen from here.
 std::vector<std::string> CalibrateArgv(const std::string& dir, const std::string& url,
                                        const std::vector<std::string>& extra) {
-  std::vector<std::string> argv = {"stereo-calibrate", "--model", "poly6", "--log-dir", dir,
+  // poly6 and no non-radial field: a quick solve (what is checked here is
+  // what the process does with commands, not the lens model).
+  std::vector<std::string> argv = {"stereo-calibrate", "--model", "poly6", "--nonradial", "none", "--log-dir", dir,
                                    "--in-url",         url,       "--out-url", url};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;
