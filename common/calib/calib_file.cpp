@@ -15,9 +15,8 @@
 namespace ws::calib {
 namespace {
 
-const char* kHeader[] = {
-    "widestereo stereo calibration (docs/models.md). Pixel of a camera-frame point "
-    "(X,Y,Z):",
+const std::string kHeader[] = {
+    std::string(kCalibrationFileTitle) + " (docs/models.md). Pixel of a camera-frame point (X,Y,Z):",
     "  bspline, poly6, poly12: x = X/Z, y = Y/Z (Z > 0);",
     "  kb4, bspline_theta: x = theta X/rho, y = theta Y/rho, rho = sqrt(X^2 + Y^2),",
     "    theta = atan2(rho, Z) (the incidence angle, radians; rays beyond 90 degrees too);",
@@ -251,7 +250,7 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
   std::string text;
   {
     cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    for (const char* line : kHeader) fs.writeComment(line);
+    for (const std::string& line : kHeader) fs.writeComment(line);
     if (!file.note.empty()) fs.writeComment(file.note);
     fs << "model" << file.model;
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);

@@ -84,7 +84,7 @@ AnyRig LoadAnyRig(const std::string& path) {
   if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
   // widestereo's own: its header, or (a file edited by hand) its keys; a
   // file of ours cut short is then refused by our reader, saying so.
-  if (HasLineStartingWith(path, "# widestereo") ||
+  if (HasLineStartingWith(path, std::string("# ") + calib::kCalibrationFileTitle) ||
       (HasLineStartingWith(path, "left:") && HasLineStartingWith(path, "model:")))
     return FromCalibrationFile(path);
   return ReadOpenCvCalibration(path);
