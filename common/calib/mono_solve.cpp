@@ -176,10 +176,20 @@ int FieldRows(int cols, int width, int height) {
   return std::max(NonRadialField::kDegree + 1, int(std::lround(cols * double(height) / width)));
 }
 
-// --nonradial (options.h, FieldRule): a given grid; or, auto, every grid of
+// Whether `candidate` predicts worse than `best` beyond the fold-to-fold
+// noise: the mean of the paired per-fold differences exceeds its standard
+// error (the mirror of ChooseWithinNoise's test).
+bool WorseBeyondNoise(const FinalSolve& candidate, const FinalSolve& best) {
+  return ChooseCandidate({candidate, best}) == 1;  // not even the simpler within the noise
+}
+
+// --nonradial (options.h, FieldRule): a given grid; or, auto, the grids of
 // kFieldLadder solved from the radial camera with F = 0 on the same corners
 // and cross-validated (the held-out RMS need not fall steadily: a grid
-// whose knots miss the pattern can do worse than a coarser one); the grid
+// whose knots miss the pattern can do worse than a coarser one, and a
+// tilted sensor shows only at the finer grids), until two grids in a row
+// predict worse than the best so far beyond the fold-to-fold noise: finer
+// grids only add parameters to a field that already over-fits. The grid
 // of the lowest held-out RMS is kept if it beats no field beyond the
 // fold-to-fold noise (ChooseWithinNoise of the two).
 void ChooseField(const CalibrationOptions& options, const std::string& what, MonoState* s) {
@@ -200,7 +210,10 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
   std::vector<FinalSolve> candidates = {Keep(*s)};
   s->field_curve.push_back({0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
+  size_t best_so_far = 0;  // of candidates, none included
+  int worse_in_a_row = 0;
   for (int cols : kFieldLadder) {
+    if (worse_in_a_row == 2) break;
     const int rows = FieldRows(cols, p.width, p.height);
     Restore(candidates[0], s);
     try {
@@ -219,6 +232,10 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
     Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
                      " field: rms " + Fixed(s->field_curve.back().rms_px) + " px, held-out " +
                      Fixed(s->heldout.rms_px[0]) + " px");
+    const FinalSolve& newest = candidates.back();
+    worse_in_a_row = WorseBeyondNoise(newest, candidates[best_so_far]) ? worse_in_a_row + 1 : 0;
+    if (newest.heldout.rms_px[0] < candidates[best_so_far].heldout.rms_px[0])
+      best_so_far = candidates.size() - 1;
   }
   // The grid that predicts best, kept only if it beats no field beyond the
   // fold-to-fold noise.
