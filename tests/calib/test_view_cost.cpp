@@ -119,5 +119,23 @@ TEST_P(ViewCostJacobians, WithANonRadialFieldMatchCentralDifferences) {
                 field);
 }
 
+// A sensor tilt (models/sensor_tilt.h) alone and under the field: its two
+// angles ride in the Jet, the field then reads the tilted point.
+TEST_P(ViewCostJacobians, WithASensorTiltMatchCentralDifferences) {
+  const TestCamera& test = GetParam();
+  const auto intrinsics = test.model.Intrinsics();
+  const AnyDistortionModel model = MakeModel(test.model.distortion, test.which);
+  const std::vector<double> radial = std::visit(
+      [&](const auto& m) { return m.EstimatedCoeffs(test.model.distortion.coeffs); }, model);
+  for (const NonRadialField& field :
+       {NonRadialField(0, 0, {}, true), NonRadialField(7, 5, {-1.2, 1.2, -0.9, 0.9}, true)}) {
+    std::vector<double> coeffs = radial;
+    for (int k = 0; k < field.GridCoeffs(); ++k) coeffs.push_back(2e-3 * std::sin(1.3 * k));
+    coeffs.insert(coeffs.end(), {0.012, -0.007});
+    CheckBothWays(model, {intrinsics.begin(), intrinsics.end()}, coeffs,
+                  test.name + " with a tilt" + (field.grid() ? " and a field" : ""), field);
+  }
+}
+
 }  // namespace
 }  // namespace ws::calib
