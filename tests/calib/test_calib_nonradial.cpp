@@ -71,4 +71,21 @@ TEST(CalibNonRadial, ATiltedSensorIsRecoveredWhereTheRadialModelIsOff) {
   EXPECT_LE(worst[1], 0.05);
 }
 
+// --nonradial: every form it accepts, and the ones it refuses.
+TEST(CalibNonRadial, TheOptionNamesTheTiltAndTheGrid) {
+  CalibrationOptions o;
+  ParseFieldRule("tilt", &o);
+  EXPECT_TRUE(o.nonradial == FieldRule::kGrid && o.field_tilt && o.field_cols == 0);
+  ParseFieldRule("tilt+8x6", &o);
+  EXPECT_TRUE(o.nonradial == FieldRule::kGrid && o.field_tilt && o.field_cols == 8 && o.field_rows == 6);
+  ParseFieldRule("11x7", &o);
+  EXPECT_TRUE(o.nonradial == FieldRule::kGrid && !o.field_tilt && o.field_cols == 11 && o.field_rows == 7);
+  ParseFieldRule("none", &o);
+  EXPECT_TRUE(o.nonradial == FieldRule::kNone && !o.field_tilt && o.field_cols == 0);
+  ParseFieldRule("auto", &o);
+  EXPECT_TRUE(o.nonradial == FieldRule::kAuto);
+  for (const char* bad : {"tilt+", "tilts", "tilt8x6", "tilt+3x3", "8x6+tilt", "8x"})
+    EXPECT_THROW(ParseFieldRule(bad, &o), std::invalid_argument) << bad;
+}
+
 }  // namespace
