@@ -23,7 +23,8 @@ const std::string kHeader[] = {
     "  r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
-    "  (xf, yf) = (xd, yd) + F(xd, yd), F = 0 without 'nonradial'",
+    "  (xt, yt) = (x' / w', y' / w'), [x'; y'; w'] = M(tau) [xd; yd; 1], (xd, yd) without 'tilt'",
+    "  (xf, yf) = (xt, yt) + F(xt, yt), F = 0 without 'nonradial' 'cols'",
     "  u = fx xf + cx,  v = fy yf + cy   (pixel centres at integer coordinates, as in OpenCV)",
     "D(r): bspline: sum_i alpha_i N_{i,degree}(r), the de Boor-Cox B-spline basis on 'knots'",
     "      (clamped; beyond the last knot the last polynomial piece continues);",
@@ -33,6 +34,8 @@ const std::string kHeader[] = {
     "F(s, t): nonradial: sum_ij c_ij N_i(s) M_j(t), clamped uniform cubic B-splines of 'cols' x",
     "      'rows' control points over 'domain' [s0 s1 t0 t1] (outside it: its nearest point);",
     "      'coeffs' the x components c_ij at j cols + i, then the y components (docs/models.md).",
+    "M(tau): nonradial: 'tilt' [tau_x tau_y] (radians), OpenCV's tilted sensor (CALIB_TILTED_MODEL):",
+    "      M = [cx 0 0; -sx sy cy 0; sy -cy sx cy cx], cx = cos tau_x, sx = sin tau_x, cy, sy of tau_y.",
     "Stereo: X_right = R X_left + T (metres)."};
 
 bool IsSpline(const std::string& kind) {
@@ -50,8 +53,12 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
   if (!m.nonradial.empty()) {
     const NonRadial& f = m.nonradial;
-    fs << "nonradial" << "{" << "cols" << f.cols << "rows" << f.rows << "domain"
-       << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs << "}";
+    fs << "nonradial" << "{";
+    if (f.cols > 0)
+      fs << "cols" << f.cols << "rows" << f.rows << "domain"
+         << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs;
+    if (f.tilted()) fs << "tilt" << std::vector<double>(f.tilt.begin(), f.tilt.end());
+    fs << "}";
   }
   fs << "}";
 }
@@ -153,8 +160,15 @@ class Reader {
 // A camera's non-radial field: its grid (4 to 64 control points a side),
 // rectangle and 2 cols rows coefficients.
 NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::string& at) {
-  if (!node.isMap()) in.Fail(at.substr(0, at.size() - 1), "not a map of cols, rows, domain, coeffs");
+  if (!node.isMap() || (node["cols"].empty() && node["tilt"].empty()))
+    in.Fail(at.substr(0, at.size() - 1), "not a map of cols, rows, domain, coeffs and/or tilt");
   NonRadial f;
+  if (!node["tilt"].empty()) {
+    const std::vector<double> tilt = in.Reals(node, "tilt", at + "tilt", 2);
+    if (tilt.size() != 2) in.Fail(at + "tilt", "not the 2 numbers tau_x tau_y");
+    std::copy(tilt.begin(), tilt.end(), f.tilt.begin());
+  }
+  if (node["cols"].empty()) return f;
   f.cols = in.Int(node, "cols", at + "cols", 4);
   f.rows = in.Int(node, "rows", at + "rows", 4);
   if (f.cols > 64 || f.rows > 64) in.Fail(at + "cols", "at most 64 control points a side");

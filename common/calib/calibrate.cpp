@@ -49,17 +49,24 @@ int ParseKnots(const std::string& value) {
 
 void ParseFieldRule(const std::string& value, CalibrationOptions* options) {
   options->field_cols = options->field_rows = 0;
+  options->field_tilt = false;
   if (value == "auto" || value == "none") {
     options->nonradial = value == "auto" ? FieldRule::kAuto : FieldRule::kNone;
     return;
   }
+  options->nonradial = FieldRule::kGrid;
+  const std::string tilt = "tilt";
+  options->field_tilt = value.rfind(tilt, 0) == 0;
+  if (value == tilt) return;
+  const std::string grid = options->field_tilt && value.size() > tilt.size() && value[tilt.size()] == '+'
+                               ? value.substr(tilt.size() + 1)
+                               : value;
   int cols = 0, rows = 0;
   char x = 0, extra = 0;
-  if (std::sscanf(value.c_str(), "%d%c%d%c", &cols, &x, &rows, &extra) != 3 || x != 'x' ||
+  if (std::sscanf(grid.c_str(), "%d%c%d%c", &cols, &x, &rows, &extra) != 3 || x != 'x' ||
       cols < 4 || rows < 4 || cols > 64 || rows > 64)
-    throw std::invalid_argument("--nonradial must be auto, none or COLSxROWS (4 to 64 each, as 8x6), "
-                                "not '" + value + "'");
-  options->nonradial = FieldRule::kGrid;
+    throw std::invalid_argument("--nonradial must be auto, none, tilt, COLSxROWS or tilt+COLSxROWS "
+                                "(4 to 64 each, as 8x6), not '" + value + "'");
   options->field_cols = cols;
   options->field_rows = rows;
 }

@@ -46,13 +46,14 @@ CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& opti
 // r_max, everything free.
 CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
 
-// The same camera with a non-radial field of cols x rows control points
-// (nonradial_field.h; 0 x 0: none) over its image of width x height pixels
-// as the camera sees it (the distorted normalized rectangle, 1 % wider each
+// The same camera with a non-radial part (nonradial_field.h): a field of
+// cols x rows control points (0 x 0: none) over its image of width x height
+// pixels as the camera sees it (the normalized rectangle, 1 % wider each
 // side), starting at F = 0, with its prior (nonradial_prior.h) at the
-// camera's parameters and the smoothness weight lambda.
-CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, int width,
-                               int height, double lambda);
+// camera's parameters and the smoothness weight lambda; and, with `tilt`,
+// a sensor tilt (the camera's, or 0 if it has none).
+CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, bool tilt,
+                               int width, int height, double lambda);
 
 std::string Kind(const CameraBlock& camera);
 // A B-spline's field end r_max (its last knot); 0 for the polynomials.

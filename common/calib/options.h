@@ -80,24 +80,26 @@ inline constexpr int kContinuationKnots = 25;
 // The default smoothness prior weight lambda (smoothness_prior.h).
 inline constexpr double kDefaultSmoothness = 0.01;
 
-// The non-radial part of the lens model (models/nonradial_field.h).
+// The non-radial part of the lens model (models/nonradial_field.h): a
+// sensor tilt (models/sensor_tilt.h) and a field.
 enum class FieldRule {
   kNone,  // radial only
   // The default: per camera, after the radial model, its knots and the
-  // board's bow are settled, fields of each of kFieldLadder control points
-  // across (rows in proportion to the image) are solved and cross-validated
-  // on the same corners (a tilted sensor's field is invisible to the coarse
-  // ones, whose low orders the gauge gives to the pinhole and the pose, and
-  // appears at the finer ones), until two grids in a row predict worse than
-  // the best so far beyond the fold-to-fold noise (over-fitting: finer grids
-  // only add parameters); the grid of the lowest held-out RMS is kept where
-  // it beats no field beyond the fold-to-fold noise (ChooseWithinNoise of
-  // the two): whether the lens has a non-radial part is a test, how fine a
-  // grid it needs the best prediction. A radially symmetric lens comes out
-  // as none. With several models, the field is
-  // chosen for the model the radial comparison chose (calibrate.h).
+  // board's bow are settled, first the sensor tilt: solved and
+  // cross-validated on the same corners, kept where it beats no tilt beyond
+  // the fold-to-fold noise (ChooseWithinNoise of the two). Then, on top of
+  // what that kept, fields of each of kFieldLadder control points across
+  // (rows in proportion to the image) are solved and cross-validated in
+  // that order (a coarse one may miss what a finer one finds), until two
+  // grids in a row predict worse than the best so far beyond the
+  // fold-to-fold noise (over-fitting: finer grids only add parameters); the
+  // grid of the lowest held-out RMS is kept where it beats no field beyond
+  // the fold-to-fold noise. Whether the lens has a non-radial part is a
+  // test, how fine a grid it needs the best prediction. A radially
+  // symmetric lens comes out as none. With several models, the non-radial
+  // part is chosen for the model the radial comparison chose (calibrate.h).
   kAuto,
-  kGrid,  // field_cols x field_rows control points
+  kGrid,  // given: field_tilt, and field_cols x field_rows control points (0 x 0: no field)
 };
 inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
 
@@ -131,6 +133,7 @@ struct CalibrationOptions {
   bool covariance = true;  // parameter standard deviations
   FieldRule nonradial = FieldRule::kAuto;
   int field_cols = 0, field_rows = 0;  // FieldRule::kGrid
+  bool field_tilt = false;             // FieldRule::kGrid
   // The board's deflection (board_warp.h): estimated with each camera's
   // final solve and the joint solve, held flat, or chosen (WarpRule).
   WarpRule board_warp = WarpRule::kAuto;
@@ -153,9 +156,9 @@ void CheckOptions(const CalibrationOptions& options);
 // std::invalid_argument otherwise.
 int ParseKnots(const std::string& value);
 
-// --nonradial: "auto", "none", or "COLSxROWS" (kGrid, 4 to 64 each) into
-// options->nonradial, field_cols, field_rows; throws std::invalid_argument
-// otherwise.
+// --nonradial: "auto", "none", "tilt", "COLSxROWS" or "tilt+COLSxROWS"
+// (kGrid, 4 to 64 each) into options->nonradial, field_tilt, field_cols,
+// field_rows; throws std::invalid_argument otherwise.
 void ParseFieldRule(const std::string& value, CalibrationOptions* options);
 
 // --outlier-sigma: "auto" (kChauvenet), "off" or "0" (kOff), or a positive

@@ -96,11 +96,12 @@ Json CameraReport(const CameraCalibration& c) {
     const NonRadial& f = m.nonradial;
     j["nonradial"] = {{"cols", f.cols}, {"rows", f.rows},
                       {"domain", Numbers(std::vector<double>(f.domain.begin(), f.domain.end()))},
-                      {"coeffs", Numbers(f.coeffs)}};
+                      {"coeffs", Numbers(f.coeffs)},
+                      {"tilt", Numbers(std::vector<double>(f.tilt.begin(), f.tilt.end()))}};
   }
   Json field_curve = Json::array();
   for (const FieldTrial& t : c.field_curve)
-    field_curve.push_back({{"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
+    field_curve.push_back({{"tilt", t.tilt}, {"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
                            {"heldout_rms_px", t.heldout_rms_px}});
   j["field_curve"] = field_curve;
   j["field_chosen"] = c.field_chosen;

@@ -122,6 +122,9 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   Require(std::all_of(msg.field_coeffs.begin(), msg.field_coeffs.end(),
                       [](double c) { return std::abs(c) <= 1; }),
           t, "a non-radial field coefficient beyond 1 (the focal length)");
+  Require(std::all_of(msg.sensor_tilt, msg.sensor_tilt + 2,
+                      [](double tau) { return std::abs(tau) < kMaxSensorTilt; }),
+          t, "a sensor tilt angle not below kMaxSensorTilt (0.35 rad) or not finite");
 }
 
 void Validate(const widestereo::stereo_calibration_t& msg) {

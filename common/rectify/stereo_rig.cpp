@@ -23,6 +23,7 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   model.nonradial.rows = msg.field_rows;
   std::copy(msg.field_domain, msg.field_domain + 4, model.nonradial.domain.begin());
   model.nonradial.coeffs = msg.field_coeffs;
+  std::copy(msg.sensor_tilt, msg.sensor_tilt + 2, model.nonradial.tilt.begin());
   Camera check(model);  // throws std::invalid_argument when inconsistent
   return model;
 }
@@ -72,6 +73,7 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   std::copy(model.nonradial.domain.begin(), model.nonradial.domain.end(), msg.field_domain);
   msg.field_coeffs = model.nonradial.coeffs;
   msg.nfield = int32_t(msg.field_coeffs.size());
+  std::copy(model.nonradial.tilt.begin(), model.nonradial.tilt.end(), msg.sensor_tilt);
   return msg;
 }
 

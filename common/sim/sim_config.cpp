@@ -20,7 +20,6 @@
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
 #include "sim/ray_map.h"
-#include "sim/sensor_tilt.h"
 
 namespace ws {
 namespace {
@@ -308,11 +307,7 @@ std::pair<CameraModel, double> ParseCamera(Fields fields, const std::string& bas
   model.p2 = fields.Real("p2", 0, -0.1, 0.1);
   if (fields.Has("sensor_tilt_deg")) {
     const std::vector<double> tilt = fields.Reals("sensor_tilt_deg", 2, -5, 5);
-    try {
-      model = WithSensorTilt(model, {tilt[0] * M_PI / 180, tilt[1] * M_PI / 180});
-    } catch (const std::invalid_argument& e) {
-      fields.Fail(fields.Path("sensor_tilt_deg"), e.what());
-    }
+    model.nonradial.tilt = {tilt[0] * M_PI / 180, tilt[1] * M_PI / 180};
   }
   const bool angle = IsAngleModel(MakeModel(model.distortion, Coefficients::kAll));
   field_deg = fields.Real("field_deg", field_deg, 0, angle ? 360 : 180, true);

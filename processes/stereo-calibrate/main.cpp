@@ -99,9 +99,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   app.add_option("--nonradial", nonradial,
-                 "The lens model's non-radial part, a smooth 2-D field over the image: auto "
-                 "(grids of 4 to 16 control points across tried; the one of the lowest held-out RMS "
-                 "kept where it beats none beyond the fold-to-fold noise), none, or COLSxROWS")
+                 "The lens model's non-radial part, a sensor tilt (OpenCV's tauX, tauY) and a "
+                 "smooth 2-D field over the image: auto (the tilt kept where it lowers the "
+                 "held-out RMS beyond the fold-to-fold noise, then grids of 4 to 16 control points "
+                 "across tried; the one of the lowest held-out RMS kept where it beats none beyond "
+                 "that noise), none, tilt, COLSxROWS or tilt+COLSxROWS")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))

@@ -64,6 +64,7 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.nonradial.rows, b.nonradial.rows);
   EXPECT_EQ(a.nonradial.domain, b.nonradial.domain);
   EXPECT_EQ(a.nonradial.coeffs, b.nonradial.coeffs);
+  EXPECT_EQ(a.nonradial.tilt, b.nonradial.tilt);
 }
 
 TEST(CalibFile, EveryModelReadsBackBitForBit) {
@@ -99,6 +100,19 @@ TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
   const Camera a(read.left), b(written.left);
   const Eigen::Vector3d ray(0.3, -0.2, 1.0);
   EXPECT_EQ(*a.Project(ray), *b.Project(ray));
+}
+
+// A sensor tilt (models/sensor_tilt.h) alone, and with a field, reads back.
+TEST(CalibFile, ASensorTiltReadsBackBitForBit) {
+  const std::string path = test::TempDir("calib-file-tilt") + "/tilt.yaml";
+  CalibrationFile written = SampleFile("kb4");
+  written.left.nonradial.tilt = {0.0123, -0.00456};
+  written.right.nonradial = {4, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(32, 1e-3), {-0.002, 0.003}};
+  WriteCalibrationFile(path, written);
+  const CalibrationFile read = ReadCalibrationFile(path);
+  ExpectSameCamera(read.left, written.left);
+  ExpectSameCamera(read.right, written.right);
+  EXPECT_EQ(read.left.nonradial.cols, 0);
 }
 
 // The report calls a model's coefficients what the calibration file does

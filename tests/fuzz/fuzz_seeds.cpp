@@ -185,9 +185,9 @@ void CalibrationSeeds(Seeds& seeds) {
   seeds.Message("signed-poly6", poly6);
   seeds.Message("bspline", ws::MessageFromCameraModel(sim.left, "left"));
   seeds.Message("poly6", poly6.left);
-  // A fisheye model with a non-radial field.
+  // A fisheye model with a non-radial field and a sensor tilt.
   ws::CameraModel field = ws::DefaultSimConfig(0.1).left;
-  field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0)};
+  field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0), {0.004, -0.003}};
   for (size_t k = 0; k < field.nonradial.coeffs.size(); ++k) field.nonradial.coeffs[k] = 1e-3 * (k % 5);
   rig.left = rig.right = field;
   seeds.Message("bspline-field", ws::MessageFromStereoRig(rig, 1));

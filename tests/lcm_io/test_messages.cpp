@@ -332,8 +332,12 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   calib.field_domain[1] = calib.field_domain[3] = 2;
   calib.field_coeffs.assign(32, 1e-3);
   calib.nfield = 32;
+  calib.sensor_tilt[0] = 0.01;  // a sensor tilt: finite and below kMaxSensorTilt
+  calib.sensor_tilt[1] = -0.02;
   EXPECT_NO_THROW(ws::Validate(calib));
   for (auto bad : {+[](camera_calibration_t& c) { c.field_rows = 3; },
+                   +[](camera_calibration_t& c) { c.sensor_tilt[0] = 0.5; },
+                   +[](camera_calibration_t& c) { c.sensor_tilt[1] = std::nan(""); },
                    +[](camera_calibration_t& c) { c.field_coeffs.pop_back(), --c.nfield; },
                    +[](camera_calibration_t& c) { c.field_coeffs[5] = 2; },
                    +[](camera_calibration_t& c) { c.field_domain[1] = -2; },

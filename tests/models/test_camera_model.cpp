@@ -99,22 +99,55 @@ TEST(TheiaLikeCamera, HasAbout125DegreesHorizontalField) {
     EXPECT_NEAR(camera.DistortionCurve(table.ideal[i] / 1.3), d[i], 1e-9);
 }
 
-// poly6 is OpenCV's 5-coefficient model (k1, k2, p1, p2, k3): the same pixels.
-TEST(Poly6Camera, ProjectsAsOpenCvDoes) {
-  CameraModel model = testing::WithTangential(TheiaLikeCamera());
-  model.distortion = {"poly6", 0, {}, {0.021, -0.0043, 0.00021}};
+// The camera projects a grid of points as cv::projectPoints does with the
+// distortion vector `dist` and the camera's K.
+void ExpectProjectsAsOpenCv(const CameraModel& model, const std::vector<double>& dist) {
   const Camera camera(model);
   std::vector<cv::Point3d> points;
   for (double y = -1.5; y <= 1.5; y += 0.25)
     for (double x = -2.0; x <= 2.0; x += 0.25) points.emplace_back(2 * x, 2 * y, 2.0);
   const cv::Matx33d K(model.fx, 0, model.cx, 0, model.fy, model.cy, 0, 0, 1);
-  const std::vector<double> dist{0.021, -0.0043, model.p1, model.p2, 0.00021};
   std::vector<cv::Point2d> expected;
   cv::projectPoints(points, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, dist, expected);
   for (size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector2d pixel = *camera.Project({points[i].x, points[i].y, points[i].z});
     EXPECT_NEAR(pixel[0], expected[i].x, 1e-9);
     EXPECT_NEAR(pixel[1], expected[i].y, 1e-9);
+  }
+}
+
+// poly6 is OpenCV's 5-coefficient model (k1, k2, p1, p2, k3): the same pixels.
+TEST(Poly6Camera, ProjectsAsOpenCvDoes) {
+  CameraModel model = testing::WithTangential(TheiaLikeCamera());
+  model.distortion = {"poly6", 0, {}, {0.021, -0.0043, 0.00021}};
+  ExpectProjectsAsOpenCv(model, {0.021, -0.0043, model.p1, model.p2, 0.00021});
+}
+
+// A sensor tilt (models/sensor_tilt.h) is OpenCV's tilted model
+// (CALIB_TILTED_MODEL's tauX, tauY): the same pixels; and unprojection
+// inverts it, with a field on top, over the whole image.
+TEST(TiltedCamera, ProjectsAsOpenCvDoesAndUnprojectsEveryPixel) {
+  CameraModel model = testing::WithTangential(TheiaLikeCamera());
+  model.distortion = {"poly6", 0, {}, {0.021, -0.0043, 0.00021}};
+  model.nonradial.tilt = {0.02, -0.015};
+  std::vector<double> dist(14, 0.0);
+  dist[0] = 0.021, dist[1] = -0.0043, dist[2] = model.p1, dist[3] = model.p2, dist[4] = 0.00021;
+  dist[12] = model.nonradial.tilt[0], dist[13] = model.nonradial.tilt[1];
+  ExpectProjectsAsOpenCv(model, dist);
+  model.distortion = TheiaLikeCamera().distortion;
+  model.nonradial.cols = model.nonradial.rows = 4;
+  model.nonradial.domain = {-2, 2, -1.5, 1.5};
+  for (int k = 0; k < 32; ++k) model.nonradial.coeffs.push_back(1e-3 * std::cos(0.7 * k));
+  for (const CameraModel& m : {CameraModel(TheiaLikeCamera()), model}) {
+    CameraModel tilted = m;
+    tilted.nonradial.tilt = {0.02, -0.015};
+    const Camera c(tilted);
+    for (int v = 0; v <= 960; v += 40)
+      for (int u = 0; u <= 1280; u += 40) {
+        const std::optional<Eigen::Vector3d> ray = c.Unproject({u, v});
+        ASSERT_TRUE(ray) << u << ", " << v;
+        EXPECT_LT((*c.Project(*ray) - Eigen::Vector2d(u, v)).norm(), 1e-6) << u << ", " << v;
+      }
   }
 }
 
