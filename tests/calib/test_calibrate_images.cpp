@@ -220,6 +220,7 @@ TEST_F(FirstMistakes, ACalibrationFileCutShortSaysSo) {
   ASSERT_EQ(CalibrateImages(images_, dir_ + "/whole.yaml", {"--model", "poly6", "--nonradial", "none"}).exit_code, 0);
   const std::string text = ReadFileText(dir_ + "/whole.yaml");
   for (size_t length : {text.size() / 3, text.size() * 2 / 3, text.size() - 10}) {
+    while (text[length - 1] == '\n') --length;  // cut mid-line, as a write stopped part-way leaves it
     std::ofstream(dir_ + "/cut.yaml", std::ios::trunc) << text.substr(0, length);
     ExpectRefused(RunCommand({"stereo-compare", dir_ + "/cut.yaml", dir_ + "/whole.yaml"}),
                   {dir_ + "/cut.yaml", "the file ends mid-line: it was cut short"});
