@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-
 #include "auth/rig_key.h"
 #include "launch_fixture.h"
 #include "lcm_io/channels.h"
