@@ -86,7 +86,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     }
     ++result.read;
     result.names[id] = pair->label;
-    widestereo::stereo_frame_t frame;
+    widestereo::stereo_frame_t frame{};
     frame.frame_id = id;
     frame.utime = (id + 1) * 100000;
     frame.left = MatToImage(pair->left, frame.utime);

@@ -48,7 +48,7 @@ StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method)
     : board_(std::move(board)), detector_(MakeCornerDetector(board_, method)) {}
 
 widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_frame_t& frame) const {
-  widestereo::stereo_corners_t corners;
+  widestereo::stereo_corners_t corners{};
   corners.utime = frame.utime;
   corners.frame_id = frame.frame_id;
   corners.left = FindInImage(frame.left);

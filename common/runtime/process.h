@@ -5,8 +5,9 @@
 // log-to-log filter.
 //
 // Authentication. With --key-file, every message type that carries an
-// auth_t (commands, calibrations) is signed by Publish and checked by
-// Subscribe (auth/message_auth.h): one that fails is rejected with the reason.
+// auth_t (commands, calibrations, corners, images) is signed by Publish and
+// checked by Subscribe (auth/message_auth.h): one that fails is rejected with
+// the reason.
 // Without a key they go unsigned and unchecked, and the log says so at start.
 //
 // Batch runs. With a file:// input (or files the process reads itself,
@@ -66,7 +67,7 @@ class Process {
                  int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
-  // dropped. A command or calibration is signed first (with a rig key).
+  // dropped. A message that carries an auth_t is signed (with a rig key).
   template <class Msg>
   void Publish(const std::string& channel, const Msg& msg);
 
@@ -120,8 +121,6 @@ class Process {
 
   // The input LCM, opened on first use; null for an empty input log.
   lcm::LCM* Input();
-  template <class Msg>
-  void PublishEncoded(const std::string& channel, const Msg& msg);
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
   // The heartbeat, with `state` instead of the process's own if given.
   void PublishStatus(const char* state = nullptr);
@@ -186,7 +185,8 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
           const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
           if constexpr (auth::IsAuthenticated<Msg>::value)
-            if (self->auth_) self->auth_->Check(ch, msg, self->Now());
+            if (self->auth_)
+              self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
           if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
           ctx->second(msg);
         } catch (const std::exception& e) {
@@ -199,24 +199,16 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
 
 template <class Msg>
 void Process::Publish(const std::string& channel, const Msg& msg) {
-  if constexpr (auth::IsAuthenticated<Msg>::value) {
-    Msg stamped = msg;
-    if (auth_)
-      auth::Sign(auth_->key(), channel, sender_, Now(), stamped);
+  std::vector<uint8_t> bytes;
+  try {
+    if constexpr (auth::IsAuthenticated<Msg>::value)
+      bytes = auth_ ? auth::EncodeSigned(auth_->key(), channel, sender_, Now(), msg)
+                    : auth::EncodeWithAuth(msg, widestereo::auth_t{});
     else
-      auth::ClearAuth(stamped);
-    PublishEncoded(channel, stamped);
-  } else {
-    PublishEncoded(channel, msg);
-  }
-}
-
-template <class Msg>
-void Process::PublishEncoded(const std::string& channel, const Msg& msg) {
-  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
-  if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0) {
+      bytes = EncodeMessage(msg);
+  } catch (const std::invalid_argument& e) {
     Counters(channel).dropped++;
-    ReportError(channel + ": message does not encode");
+    ReportError(channel + ": " + e.what());
     return;
   }
   PublishBytes(channel, bytes);

@@ -20,7 +20,7 @@ using namespace ws::calib;
 using namespace ws::calib::test;
 
 widestereo::stereo_corners_t Message(const SyntheticRig& rig, int v, const std::string& board) {
-  widestereo::stereo_corners_t msg;
+  widestereo::stereo_corners_t msg{};
   msg.utime = 1000 * v;
   msg.frame_id = v;
   msg.left = ToCornersMessage(rig.data.left.views[v], board, 1280, 960);

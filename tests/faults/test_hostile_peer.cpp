@@ -7,9 +7,12 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <memory>
+
+#include <Eigen/Geometry>
 
 #include "auth/message_auth.h"
 #include "bad_messages.h"
@@ -18,10 +21,12 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/decode.h"
 #include "match_fixtures.h"
+#include "rectify/stereo_rig.h"
 #include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_calibration_t.hpp"
+#include "widestereo/stereo_corners_t.hpp"
 
 namespace {
 
@@ -74,17 +79,28 @@ widestereo::calibration_status_t LastCalibrationStatus(BusWatch& bus) {
   return ws::DecodeMessage<widestereo::calibration_status_t>(statuses.back().data(), int(statuses.back().size()));
 }
 
-// Sends the 30 views of logs/sim-corners.lcmlog; returns how many views
-// stereo-calibrate kept (0, and a failure, if it never counted them all).
-int SendViews(BusWatch& bus) {
+// The 30 views of logs/sim-corners.lcmlog.
+std::vector<widestereo::stereo_corners_t> RealViews() {
+  std::vector<widestereo::stereo_corners_t> views;
+  for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog"))
+    if (e.channel == ch::kStereoCorners)
+      views.push_back(ws::DecodeMessage<widestereo::stereo_corners_t>(e.data.data(), int(e.data.size())));
+  return views;
+}
+
+// Sends the 30 views of logs/sim-corners.lcmlog, signed as stereo-detect
+// signs them where a key is given; returns how many views stereo-calibrate
+// kept (0, and a failure, if it never counted them all).
+int SendViews(BusWatch& bus, const ws::auth::RigKey* key = nullptr) {
+  const int64_t received = bus.Counters(ch::kStereoCorners).received;
   int sent = 0;
-  for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog")) {
-    if (e.channel != ch::kStereoCorners) continue;
-    bus.Publish(ch::kStereoCorners, e.data);
+  for (widestereo::stereo_corners_t view : RealViews()) {
+    if (key) ws::auth::Sign(*key, ch::kStereoCorners, "stereo-detect test", ws::WallMicros(), view);
+    bus.Publish(ch::kStereoCorners, Encoded(view));
     bus.Listen(0.02);
     ++sent;
   }
-  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).received == sent; }));
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).received == received + sent; }));
   bus.Listen(1.5);  // a CALIBRATION_STATUS after the last view
   return LastCalibrationStatus(bus).views_stereo;
 }
@@ -290,7 +306,8 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   BusWatch calibrate_bus(url, "stereo-calibrate");
   calibrate_bus.Collect(ch::kCalibrationStatus);
   ASSERT_TRUE(calibrate_bus.ListenUntil(20, [&] { return calibrate_bus.status().has_value(); })) << calibrate.Output();
-  ASSERT_GT(SendViews(calibrate_bus), 10);
+  const ws::auth::RigKey rig_key = ws::auth::RigKey::FromFile(key);
+  ASSERT_GT(SendViews(calibrate_bus, &rig_key), 10);
   RunStereoCommand(dir, url, {"solve", "--key-file", key});
   ASSERT_TRUE(bus.ListenUntil(180, [&] { return bus.status()->state == "matching"; })) << calibrate.Output();
   EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 2);
@@ -306,6 +323,67 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 3);
   const std::string log = ReadFileText(dir + "/stereo-match.log");
   EXPECT_EQ(log.find("rectification maps for"), log.rfind("rectification maps for")) << "maps built once";
+}
+
+// The views of a peer without the key, sent before the real ones: every
+// view with its right image turned 1 degree about the image centre (a
+// calibration of R off by 1 degree, at a low RMS), and one of another board
+// (whose id would make the session refuse the real board). With the key
+// neither enters the session: the real, signed views that follow are all
+// kept, and the solve's R is the real rig's.
+TEST(HostilePeer, WithTheRigKeyUnsignedCornersNeverEnterTheSession) {
+  const std::string dir = TempDir("hostile-keyed-corners");
+  const std::string key = WriteKeyFile(dir, "rig.key");
+  const std::string url = UniqueUdpmUrl(22);
+  Command calibrate(CalibrateArgv(dir, url, {"--key-file", key, "--state", dir + "/views.lcmlog"}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  bus.Collect(ch::kStereoCalibration);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << calibrate.Output();
+
+  const double turn = M_PI / 180;
+  std::vector<widestereo::stereo_corners_t> attack = RealViews();
+  for (auto& view : attack) {
+    const double cx = view.right.image_width / 2.0, cy = view.right.image_height / 2.0;
+    for (auto& p : view.right.image_points) {
+      const double x = p[0] - cx, y = p[1] - cy;
+      p[0] = cx + std::cos(turn) * x - std::sin(turn) * y;
+      p[1] = cy + std::sin(turn) * x + std::cos(turn) * y;
+    }
+  }
+  attack.push_back(attack.front());
+  attack.back().left.board_id = attack.back().right.board_id = "chessboard:9x6:0.1";
+  for (const auto& view : attack) {
+    bus.Publish(ch::kStereoCorners, Encoded(view));
+    bus.Listen(0.02);
+  }
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == int64_t(attack.size()); }))
+      << bus.Counters(ch::kStereoCorners).rejected;
+  EXPECT_NE(bus.status()->last_error.find("STEREO_CORNERS: refused: unsigned"), std::string::npos)
+      << bus.status()->last_error;
+
+  const ws::auth::RigKey rig_key = ws::auth::RigKey::FromFile(key);
+  int left = 0, right = 0, stereo = 0;
+  for (const auto& view : RealViews()) {
+    left += view.left.n > 0;
+    right += view.right.n > 0;
+    stereo += view.left.n > 0 && view.right.n > 0;
+  }
+  EXPECT_EQ(SendViews(bus, &rig_key), stereo) << "a real view refused as a near duplicate or another board";
+  EXPECT_EQ(LastCalibrationStatus(bus).views_left, left);
+  EXPECT_EQ(LastCalibrationStatus(bus).views_right, right);
+  EXPECT_EQ(bus.Counters(ch::kStereoCorners).rejected, int64_t(attack.size()));
+  RunStereoCommand(dir, url, {"solve", "--key-file", key});
+  ASSERT_TRUE(bus.ListenUntil(180, [&] { return Solved(LastCalibrationStatus(bus)); })) << calibrate.Output();
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); }));
+  const auto& published = bus.Payloads(ch::kStereoCalibration).back();
+  const ws::StereoRig solved = ws::StereoRigFromMessage(
+      ws::DecodeMessage<widestereo::stereo_calibration_t>(published.data(), int(published.size())));
+  // The simulated rig's R is the identity (logs/sim-images.truth.yaml).
+  const double off_deg = Eigen::AngleAxisd(solved.R).angle() * 180 / M_PI;
+  EXPECT_LT(off_deg, 0.25) << "R is off by the attack's turn";
+  calibrate.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
 }
 
 }  // namespace

@@ -32,7 +32,28 @@ void Use(const image_t& image) {
              " image");
 }
 
+// A receiver with a rig key checks every command, calibration, corners
+// message and image pair (the MAC over the message re-encoded, the key, the
+// time, the nonce); the same message signed anew with the key passes that
+// check.
+template <class Msg>
+void Authenticate(const Msg& msg, const char* channel) {
+  ws::auth::AuthCheck check(FuzzKey());
+  try {
+    check.Check(channel, msg, msg.auth.utime);
+  } catch (const ws::auth::AuthError&) {
+  }
+  Msg resigned = msg;
+  ws::auth::Sign(FuzzKey(), channel, msg.auth.sender, msg.auth.utime, resigned);
+  try {
+    check.Check(channel, resigned, msg.auth.utime);
+  } catch (const ws::auth::AuthError& e) {
+    Violated(std::string("a message signed with the key is refused: ") + e.what());
+  }
+}
+
 void Use(const stereo_frame_t& frame) {
+  Authenticate(frame, ws::channel::kStereoImages);
   Use(frame.left);
   if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
 }
@@ -59,25 +80,6 @@ void Use(const camera_calibration_t& calibration) {
     if (!back || !((*back - pixel).norm() <= 1e-6 * scale * (1 + distorted)))
       Violated("pixel (" + std::to_string(pixel.x()) + ", " + std::to_string(pixel.y()) +
                ") unprojects to a ray that does not project back onto it");
-  }
-}
-
-// A receiver with a rig key checks every command and calibration (the MAC
-// over the message re-encoded, the key, the time, the nonce); the same
-// message signed anew with the key passes that check.
-template <class Msg>
-void Authenticate(const Msg& msg, const char* channel) {
-  ws::auth::AuthCheck check(FuzzKey());
-  try {
-    check.Check(channel, msg, msg.auth.utime);
-  } catch (const ws::auth::AuthError&) {
-  }
-  Msg resigned = msg;
-  ws::auth::Sign(FuzzKey(), channel, msg.auth.sender, msg.auth.utime, resigned);
-  try {
-    check.Check(channel, resigned, msg.auth.utime);
-  } catch (const ws::auth::AuthError& e) {
-    Violated(std::string("a message signed with the key is refused: ") + e.what());
   }
 }
 
@@ -123,6 +125,7 @@ void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
 // stereo-calibrate adds every corners message to its session (the view, the
 // coverage grids, the near-duplicate check) and publishes the status.
 void Use(const stereo_corners_t& corners) {
+  Authenticate(corners, ws::channel::kStereoCorners);
   ws::calib::CalibrationSession session{ws::calib::SessionOptions{}};
   for (int i = 0; i < 2; ++i) session.Add(corners);  // the second one is a near duplicate
   session.Status(0, "collecting", -1);

@@ -129,7 +129,7 @@ void ImageSeeds(Seeds& seeds) {
 }
 
 stereo_frame_t Frame(const std::string& pair, ws::Compression compression, cv::Size size) {
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.utime = frame.frame_id = 1;
   for (auto [side, image] : {std::pair{"left", &frame.left}, std::pair{"right", &frame.right}}) {
     cv::Mat gray = cv::imread(kOpenCvData + side + pair + ".jpg", cv::IMREAD_GRAYSCALE);
@@ -148,6 +148,9 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
   stereo_frame_t mono = Frame("01", ws::Compression::none, small);  // stereo-capture --mono's
   mono.right = ws::NoImage(mono.utime);
   seeds.Message("mono", mono);
+  stereo_frame_t signed_frame = Frame("01", ws::Compression::jpeg, small);
+  ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoImages, "stereo-capture@robot pid 42", 1000000, signed_frame);
+  seeds.Message("signed-jpeg", signed_frame);
   log_frames->push_back(Frame("01", ws::Compression::none, {16, 12}));
 
   const ws::StereoCornerFinder finder(ws::ParseBoardSpec("chessboard:9x6:0.025"),
@@ -157,6 +160,10 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
     if (corners.left.n == 0 || corners.right.n == 0)
       throw std::runtime_error(std::string("no corners found in pair ") + pair);
     seeds.Message(std::string("pair") + pair, corners);
+    stereo_corners_t signed_corners = corners;
+    ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoCorners, "stereo-detect@robot pid 42", 1000000,
+                   signed_corners);
+    seeds.Message(std::string("signed-pair") + pair, signed_corners);
     seeds.Message(std::string("left") + pair, corners.left);
     log_corners->push_back(corners);
   }

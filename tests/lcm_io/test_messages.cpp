@@ -65,7 +65,7 @@ camera_calibration_t Calibration(const std::string& name) {
 }
 
 TEST(Messages, EveryTypeRoundTrips) {
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.utime = 1;
   frame.frame_id = 7;
   frame.left = Gray(4, 3, 1);
@@ -78,7 +78,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   ExpectRoundTrip(frame);
   ExpectRoundTrip(frame.left);
 
-  stereo_corners_t corners;
+  stereo_corners_t corners{};
   corners.utime = 2;
   corners.frame_id = 7;
   corners.left = Corners();
@@ -199,7 +199,7 @@ TEST(Messages, ImageWhoseSizesDisagreeIsRejected) {
   msg.pixelformat = 12345;
   EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
   // Through the wire: a stereo frame carrying such an image.
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.left = Gray(4, 3, 0);
   frame.right = Gray(4, 3, 0);
   frame.right.height = 30;
