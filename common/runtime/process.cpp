@@ -76,11 +76,13 @@ Process::Process(const ProcessOptions& options)
             log_.path() + ")");
   if (auth_)
     log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
-              "): commands and calibrations are signed, and refused unless signed with it");
+              "): commands, calibrations, corners and images are signed, and refused unless signed "
+              "with it");
   else if (file_input_)  // a batch run obeys no peer: only the log file needs to say it
-    log_.Detail("no --key-file: commands and calibrations are unauthenticated");
+    log_.Detail("no --key-file: commands, calibrations, corners and images are unauthenticated");
   else
-    log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
+    log_.Info("no --key-file: commands, calibrations, corners and images are unauthenticated (any "
+              "peer on the bus may send them)");
 }
 
 Process::~Process() {
