@@ -108,14 +108,26 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
     std::ofstream(state, std::ios::app | std::ios::binary)
         << std::string("\xED\xA1\xDA\x01partial", 11);
   }
+  const std::string damaged = ws::test::ReadFileText(state);
   {
     CalibrationSession session(options);
     EXPECT_EQ(session.Restore(), 5);
+    // Kept, never truncated: the damaged file is archived with its bytes.
+    const std::string damage = session.StateDamage();
+    const size_t quote = damage.find("kept as '") + 9;
+    const std::string archive = damage.substr(quote, damage.find('\'', quote) - quote);
+    EXPECT_NE(archive.find("/views-damaged-"), std::string::npos) << damage;
+    EXPECT_EQ(ws::test::ReadFileText(archive), damaged);
+    EXPECT_NE(damage.find("intact events recovered: 5 (5 views restored); events lost: 1 (11 of " +
+                          std::to_string(damaged.size()) + " bytes)"),
+              std::string::npos)
+        << damage;
     EXPECT_EQ(session.Add(Message(rig, 2, board)), CalibrationSession::Outcome::kDuplicate);
     EXPECT_EQ(session.Add(Message(rig, 5, board)), CalibrationSession::Outcome::kAccepted);
   }
   CalibrationSession session(options);
   EXPECT_EQ(session.Restore(), 6);
+  EXPECT_EQ(session.StateDamage(), "");  // the new state file is intact
   const StereoData data = session.Data();
   ASSERT_EQ(data.size(), 6);
   EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
