@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -131,6 +132,29 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
   const StereoData data = session.Data();
   ASSERT_EQ(data.size(), 6);
   EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
+}
+
+// A state file with nothing recoverable is archived all the same, never
+// deleted, and the session starts with an empty one.
+TEST_F(CalibSession, AStateFileWithNothingRecoverableIsArchivedNotDeleted) {
+  const std::string dir = ws::test::TempDir("calib-session-garbage");
+  SessionOptions options;
+  options.state_path = dir + "/views.lcmlog";
+  const std::string garbage = "not an LCM log at all";
+  std::ofstream(options.state_path, std::ios::binary) << garbage;
+  CalibrationSession session(options);
+  EXPECT_EQ(session.Restore(), 0);
+  EXPECT_NE(session.StateDamage().find("intact events recovered: 0 (0 views restored); events lost: 1 (21 of 21 bytes)"),
+            std::string::npos)
+      << session.StateDamage();
+  std::vector<std::string> archives;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().rfind("views-damaged-", 0) == 0) archives.push_back(entry.path());
+  ASSERT_EQ(archives.size(), 1u);
+  EXPECT_EQ(ws::test::ReadFileText(archives[0]), garbage);
+  EXPECT_EQ(ws::test::ReadFileText(options.state_path), "");
+  EXPECT_EQ(session.Add(Message(rig, 0, board)), CalibrationSession::Outcome::kAccepted);
+  EXPECT_EQ(CalibrationSession(options).Restore(), 1);
 }
 
 // reset archives the state file under a timestamp (never truncates it) and
