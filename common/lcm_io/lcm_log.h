@@ -1,4 +1,5 @@
-// Reading the structure of an LCM log file without trusting it.
+// Reading LCM log files without trusting them: their structure, and every
+// intact event of a damaged one.
 #pragma once
 
 #include <cstdint>
