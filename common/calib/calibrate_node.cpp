@@ -61,6 +61,7 @@ void CalibrateNode::Start() {
   if (!options_.session.state_path.empty())
     process_.log().Info("views kept in " + options_.session.state_path + " (" +
                         std::to_string(restored) + " restored)");
+  ReportStateDamage();
   process_.Subscribe<widestereo::stereo_corners_t>(channel::kStereoCorners,
                                                    [this](const auto& msg) { OnCorners(msg); });
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
@@ -87,6 +88,12 @@ void CalibrateNode::Start() {
     return line.str();
   });
   process_.SetState("collecting");
+}
+
+// In the text log and the status's last error: an operator sees the damage
+// and where the damaged file is.
+void CalibrateNode::ReportStateDamage() {
+  if (const std::string damage = session_.StateDamage(); !damage.empty()) process_.ReportError(damage);
 }
 
 void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
@@ -164,6 +171,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
                                                 " ('restore' brings them back)");
     } else {
       const std::string archive = session_.RestoreLastArchive(WallMicros());
+      ReportStateDamage();
       process_.log().Info("restore: " + std::to_string(session_.views()) + " views back from " + archive +
                           (views ? ", the " + std::to_string(views) + " before it archived" : ""));
     }

@@ -75,6 +75,8 @@ class CalibrateNode {
   void OnCorners(const widestereo::stereo_corners_t& msg);
   void OnCommand(const widestereo::command_t& msg);
   void PublishStatus();
+  // Reports what the session's last read of its state file found damaged.
+  void ReportStateDamage();
   void Solve(std::vector<std::string> models, CalibrationOptions options);
   // Solves the views (`frames`: the frame id of each), writes every output
   // and publishes; false (after reporting why) when the solve or writing the

@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
                  "The rig's name in the figures' titles (default: the --out file's name)");
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
-                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back); 'none' for none. Default: "
+                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back; a damaged one is kept as "
+                 "NAME-damaged-<UTC time>.lcmlog and its intact views recovered); 'none' for none. Default: "
                  "LOG_DIR/stereo-calibrate-views.lcmlog live, none when replaying a log");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 

@@ -331,6 +331,14 @@ void LogSeeds(Seeds& seeds, const std::vector<stereo_frame_t>& frames,
   const fs::path cut = seeds.Path("fuzz_lcm_log", "cut.lcmlog");
   fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
   fs::resize_file(cut, fs::file_size(cut) - 100);
+  // One byte flipped in the second event's sync word: the recovery's path.
+  const fs::path flipped = seeds.Path("fuzz_lcm_log", "flipped.lcmlog");
+  fs::copy_file(path, flipped, fs::copy_options::overwrite_existing);
+  const int64_t second = 4 + 8 + 8 + 4 + 4 + int64_t(std::string(ws::channel::kProcessStatus).size()) +
+                         int64_t(Seeds::Encode(StatusMessage()).size());
+  std::fstream file(flipped, std::ios::in | std::ios::out | std::ios::binary);
+  file.seekp(second);
+  file.put('\x00');
 }
 
 void ConfigSeeds(Seeds& seeds, const fs::path& source) {
