@@ -77,6 +77,8 @@ struct Target {
   const char* ready_state;   // after the calibration ("" for none needed)
 };
 
+void PrintTo(const Target& target, std::ostream* out) { *out << target.process; }
+
 class HugeJpegFrame : public ::testing::TestWithParam<Target> {};
 
 // Publishes `frame` and waits until the process counted it, rejected or
