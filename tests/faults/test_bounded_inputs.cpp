@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 #include <opencv2/imgproc.hpp>
@@ -216,10 +217,11 @@ INSTANTIATE_TEST_SUITE_P(BoundedInputs, AbsurdCalibration, ::testing::Values("st
                            return name.substr(name.find('-') + 1);
                          });
 
-// Waits until `path` holds `text` (the process's text log), at most `seconds`.
-bool FileSays(const std::string& path, const std::string& text, double seconds) {
+// Waits until `read()` (a text log, a process's output) holds `text`, at
+// most `seconds`.
+bool Says(const std::function<std::string()>& read, const std::string& text, double seconds) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (ReadFileText(path).find(text) == std::string::npos) {
+  while (read().find(text) == std::string::npos) {
     if (std::chrono::steady_clock::now() > end) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
@@ -233,7 +235,8 @@ TEST(BoundedInputs, SigtermDuringALongSolveExitsPromptlyWritingNothing) {
   Command calibrate({"stereo-calibrate", "--in-url", "file://" + SourceDir() + "/logs/sim-corners.lcmlog?speed=0",
                      "--once", "--model", "all", "--knots", "auto", "--out", dir + "/calib.yaml", "--report",
                      dir + "/report.json", "--state", "none", "--log-dir", dir});
-  ASSERT_TRUE(FileSays(dir + "/stereo-calibrate.log", "solving 30 views", 60)) << calibrate.Output();
+  ASSERT_TRUE(Says([&] { return ReadFileText(dir + "/stereo-calibrate.log"); }, "solving 30 views", 60))
+      << calibrate.Output();
   calibrate.Signal(SIGTERM);
   const auto stopped = std::chrono::steady_clock::now();
   const CommandResult r = calibrate.Wait(60);
@@ -250,6 +253,33 @@ TEST(BoundedInputs, SigtermDuringALongSolveExitsPromptlyWritingNothing) {
                                                           ch::kStereoCalibration)
                   .empty())
       << "a stopped solve published a calibration";
+}
+
+// Debian's 13 pairs, each linked 20 times: stereo-calibrate --images
+// stopped as it finds the boards of the 260 pairs.
+TEST(BoundedInputs, SigtermWhileReadingAnImageFolderExitsPromptlyWritingNothing) {
+  const std::string dir = TempDir("sigterm-images");
+  fs::create_directories(dir + "/images");
+  fs::create_directories(dir + "/out");
+  for (const auto& entry : fs::directory_iterator(OpenCvStereoSetDir())) {
+    const std::string name = entry.path().filename().string();  // left01.jpg
+    const size_t digits = name.find_first_of("0123456789");
+    for (int copy = 10; copy < 30; ++copy)
+      fs::create_symlink(fs::read_symlink(entry.path()),
+                         dir + "/images/" + name.substr(0, digits) + std::to_string(copy) + name.substr(digits));
+  }
+  Command calibrate({"stereo-calibrate", "--images", dir + "/images", "--board", "chessboard:9x6:0.025", "--out",
+                     dir + "/out/calib.yaml", "--log-dir", dir});
+  ASSERT_TRUE(Says([&] { return calibrate.Output(); }, "finding the board: ", 60)) << calibrate.Output();
+  calibrate.Signal(SIGTERM);
+  const auto stopped = std::chrono::steady_clock::now();
+  const CommandResult r = calibrate.Wait(60);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stopped).count();
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_LT(seconds, 20) << "the folder was read on after SIGTERM";
+  EXPECT_EQ(r.output.find("finding the board: 520 of 520"), std::string::npos) << r.output;
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))  // the run's own log of its heartbeats only
+    EXPECT_EQ(entry.path().filename(), "calib.lcmlog") << "a stopped read left " << entry.path();
 }
 
 }  // namespace
