@@ -289,7 +289,11 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   const Reader in(path);
   cv::FileStorage fs;
   try {
-    OpenOpenCvYaml(fs, path);  // refuses the layouts OpenCV's reader hangs or crashes on
+    // Refuses the layouts OpenCV's reader hangs or crashes on, and files far
+    // larger than a calibration (two cameras of kMaxKnots knots and
+    // coefficients and a field of NonRadialField::kMaxCoeffs: 500 KB).
+    constexpr size_t kMaxCalibrationFileBytes = size_t(4) << 20;
+    OpenOpenCvYaml(fs, path, kMaxCalibrationFileBytes);
   } catch (const YamlFileError& e) {
     in.Fail("(file)", e.what());
   }

@@ -19,6 +19,7 @@
 #include "models/model_registry.h"
 #include "runtime/escaped.h"
 #include "runtime/output_folder.h"
+#include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
 
 namespace ws::calib {
@@ -75,7 +76,7 @@ void CalibrateNode::Start() {
                               "(COLSxROWS counts inner corners: a board of 10x7 squares is 9x6)");
       std::vector<int64_t> frames;
       const StereoData data = session_.Data(&frames);
-      if (!SolveNow(data, frames, options_.models, options_.calibration))
+      if (!SolveNow(data, frames, options_.models, options_.calibration) && !StopRequested())
         process_.Fatal("no calibration from the views of the log");
     });
   process_.SetProgress([this] {
@@ -230,7 +231,7 @@ void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions op
   if (worker_.joinable()) worker_.join();
   worker_ = std::thread([this, data = std::move(data), frames = std::move(frames), models, options] {
     const bool ok = SolveNow(data, frames, models, options);
-    if (options_.once) ok ? process_.Stop() : process_.Fatal("the solve failed");
+    if (options_.once) ok || StopRequested() ? process_.Stop() : process_.Fatal("the solve failed");
   });
 }
 
@@ -373,12 +374,14 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
     rms = primary.rms_px;
     heldout = HeldOutRms(primary);
     ok = true;
+  } catch (const Stopped&) {
+    process_.log().Info("solve stopped on request: nothing written or published");
   } catch (const std::exception& e) {
     process_.ReportError(std::string("solve failed: ") + e.what());
   }
   // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;
-  SetState(ok ? "solved" : "failed", rms, heldout);
+  SetState(ok ? "solved" : StopRequested() ? "stopped" : "failed", rms, heldout);
   PublishStatus();
   return ok;
 }

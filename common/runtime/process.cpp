@@ -13,14 +13,13 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
 
 namespace ws {
 namespace {
 
-std::atomic<bool> g_stop{false};
-
-void OnSignal(int) { g_stop = true; }
+void OnSignal(int) { RequestStop(); }
 
 void InstallSignalHandlers() {
   struct sigaction action {};
@@ -120,9 +119,9 @@ void Process::Every(int64_t period_us, std::function<void()> fn) {
 
 void Process::AtEndOfInput(std::function<void()> fn) { at_end_.push_back(std::move(fn)); }
 
-bool Process::Stopping() const { return g_stop || exit_code_ != 0; }
+bool Process::Stopping() const { return StopRequested() || exit_code_ != 0; }
 
-void Process::Stop() { g_stop = true; }
+void Process::Stop() { RequestStop(); }
 
 void Process::Fatal(const std::string& error) {
   ReportError(error);
@@ -165,7 +164,7 @@ int Process::Finish() {
   PublishStatus(exit_code_ ? "failed" : "exited");  // the last heartbeat says it ends
   log_.Detail("final: " + ProgressLine());
   ShowProgress();
-  log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
+  log_.Info(exit_code_ ? "exiting on error" : StopRequested() ? "stopped" : "done");
   return exit_code_;
 }
 

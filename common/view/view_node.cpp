@@ -7,6 +7,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "rectify/calibration_size.h"
 #include "runtime/wall_clock.h"
 #include "view/page_events.h"
 #include "widestereo/command_t.hpp"
@@ -113,15 +114,12 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     {
       std::lock_guard<std::mutex> lock(rig_mutex_);
       if (!rig_) return;
+      // Before any map is built or pixel decoded.
+      RequireFrameSize(frame, cv::Size(rig_->left.image_width, rig_->left.image_height), "the calibration");
       if (!rect_) rect_ = std::make_shared<const Rectification>(ShownRectification(*rig_, options_.max_width));
       rect = rect_;
     }
     const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
-    if (left.size() != rect->input_size || right.size() != rect->input_size)
-      throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + " is " +
-                                  std::to_string(left.cols) + "x" + std::to_string(left.rows) +
-                                  ", the calibration's images " + std::to_string(rect->input_size.width) +
-                                  "x" + std::to_string(rect->input_size.height));
     cv::Mat left_rect, right_rect;
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
     hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width));

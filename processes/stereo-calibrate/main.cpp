@@ -14,6 +14,7 @@
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"
 #include "runtime/process_cli.h"
+#include "runtime/stop_request.h"
 
 namespace {
 
@@ -188,9 +189,13 @@ int main(int argc, char** argv) {
     ws::Process process(options);
     if (finder) {
       const std::string corners = ws::LcmFileUrlPath(options.in_url);
-      const auto found = ws::calib::DetectFolder(images, mono, *finder,
-                                                 std::max(1, int(std::thread::hardware_concurrency())),
-                                                 corners, process.log());
+      ws::calib::FolderCorners found;
+      try {
+        found = ws::calib::DetectFolder(images, mono, *finder, std::max(1, int(std::thread::hardware_concurrency())),
+                                        corners, process.log());
+      } catch (const ws::Stopped&) {
+        return process.Finish();  // SIGTERM or Ctrl-C: nothing solved, nothing written
+      }
       node.frame_names = found.names;
       process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
                          corners + "?speed=0' --once)");

@@ -83,7 +83,7 @@ struct Running {
 };
 
 widestereo::stereo_corners_t CornersMessage(const SyntheticRig& rig, int v) {
-  widestereo::stereo_corners_t msg;
+  widestereo::stereo_corners_t msg{};
   msg.utime = 1000 * v;
   msg.frame_id = v;
   msg.left = ToCornersMessage(rig.data.left.views[v], "chessboard:12x9:0.04", 1280, 960);

@@ -15,6 +15,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "monitor/status_board.h"
+#include "rectify/calibration_size.h"
 #include "rectify/stereo_rig.h"
 #include "view/page_events.h"
 
@@ -89,7 +90,10 @@ void Use(const stereo_calibration_t& calibration) {
   Authenticate(calibration, ws::channel::kStereoCalibration);
   Use(calibration.left);
   Use(calibration.right);
-  ws::StereoRigFromMessage(calibration);
+  // stereo-match and stereo-health check its sizes and geometry before any map.
+  ws::RectifyOptions options;
+  options.mode = ws::RectificationMode::kAuto;
+  ws::CalibrationGeometry(ws::StereoRigFromMessage(calibration), options, ws::kDefaultMaxImagePixels, "it");
 }
 
 // stereo-status shows every status it hears.
