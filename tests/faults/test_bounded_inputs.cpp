@@ -130,7 +130,9 @@ TEST_P(HugeJpegFrame, IsRefusedBeforeDecodingAndRealFramesGoOn) {
   const long peak_kb = ResidentKb(bus.status()->pid, "VmHWM");
   std::printf("%s: peak resident %ld MB before the attack, %ld MB after\n", target.process, baseline_kb / 1024,
               peak_kb / 1024);
-  if (kMemoryBoundsMeaningful) EXPECT_LT(peak_kb - baseline_kb, kGrowthBoundKb);
+  if (kMemoryBoundsMeaningful) {
+    EXPECT_LT(peak_kb - baseline_kb, kGrowthBoundKb);
+  }
   process.Signal(SIGTERM);
   EXPECT_EQ(process.Wait(30).exit_code, 0);
 }
@@ -174,7 +176,9 @@ TEST_P(AbsurdCalibration, MessageIsRefusedAtOnceWithTheReason) {
   const long peak_kb = ResidentKb(bus.status()->pid, "VmHWM");
   std::printf("%s: peak resident %ld MB before the calibration, %ld MB after\n", name.c_str(), baseline_kb / 1024,
               peak_kb / 1024);
-  if (ws::test::kMemoryBoundsMeaningful) EXPECT_LT(peak_kb - baseline_kb, kGrowthBoundKb);
+  if (ws::test::kMemoryBoundsMeaningful) {
+    EXPECT_LT(peak_kb - baseline_kb, kGrowthBoundKb);
+  }
   process.Signal(SIGTERM);
   EXPECT_EQ(process.Wait(30).exit_code, 0);
 }
