@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
 
@@ -180,9 +181,21 @@ TEST(HostilePeer, StereoCalibrateSavesOnlyIntoTheFoldersOfOutAndReport) {
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 8);
   SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=again.yaml", "report=again.json"})));
   SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=calib.yaml", "overwrite=1"})));
+  // Symlinks planted in the folder, to a file outside it: at the temporary
+  // name a save once used, and at the final name.
+  std::ofstream(dir + "/victim.yaml") << "victim\n";
+  fs::create_symlink(dir + "/victim.yaml", out + "/planted.yaml.tmp");
+  fs::create_symlink(dir + "/victim.yaml", out + "/linked.yaml");
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=planted.yaml"})));
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=linked.yaml", "overwrite=1"})));
   process.Signal(SIGINT);
   EXPECT_EQ(process.Wait(30).exit_code, 0);
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 8);
+  EXPECT_EQ(ReadFileText(dir + "/victim.yaml"), "victim\n") << "a save wrote through a planted symlink";
+  EXPECT_FALSE(fs::is_symlink(out + "/planted.yaml"));
+  EXPECT_FALSE(fs::is_symlink(out + "/linked.yaml"));
+  EXPECT_EQ(ReadFileText(out + "/planted.yaml"), ReadFileText(out + "/calib.yaml"));
+  EXPECT_EQ(ReadFileText(out + "/linked.yaml"), ReadFileText(out + "/calib.yaml"));
   EXPECT_EQ(ReadFileText(state), views);
   EXPECT_FALSE(fs::exists(out + "/calibration.yaml"));
   EXPECT_EQ(ReadFileText(out + "/calib.yaml.1.bak"), calib) << "the overwritten calibration kept";
@@ -257,6 +270,14 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
   EXPECT_TRUE(fs::exists(dir + "/pcd/signed.pcd"));
   fs::remove(dir + "/pcd/signed.pcd");
 
+  // Signed by a sender whose clock runs 20 s fast: refused, so that its
+  // bytes cannot be replayed to a process started after it was sent.
+  widestereo::command_t ahead = CommandMessage("save", "stereo-cloud", {"path=ahead.pcd"});
+  ws::auth::Sign(ws::auth::RigKey::FromFile(key), ch::kStereoCommand, "fast clock", ws::WallMicros() + 20'000'000,
+                 ahead);
+  error = SendAndCount(bus, ch::kStereoCommand, Encoded(ahead));
+  EXPECT_NE(error.find("refused: dated 20"), std::string::npos) << error;
+
   const std::vector<uint8_t> signed_save = CollectedCommand(bus, {"path=signed.pcd"});
   error = SendAndCount(bus, ch::kStereoCommand, signed_save);  // byte for byte
   EXPECT_NE(error.find("refused: replayed"), std::string::npos) << error;
@@ -268,8 +289,8 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
 
   process->Signal(SIGINT);
   EXPECT_EQ(process->Wait(30).exit_code, 0);
-  EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 5);
-  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 6);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 5);
 
   // Restarted, it knows none of the nonces it accepted: what was signed before its start is refused.
   process = std::make_unique<Command>(argv);
@@ -323,6 +344,47 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 3);
   const std::string log = ReadFileText(dir + "/stereo-match.log");
   EXPECT_EQ(log.find("rectification maps for"), log.rfind("rectification maps for")) << "maps built once";
+}
+
+// Corner floods: boards of 10^5 points are refused as they arrive (a board
+// has its own corners at most), and the session keeps at most --max-views
+// views; each refusal is counted with its reason, and the views file holds
+// only the views kept.
+TEST(HostilePeer, CornerFloodsAreRefusedAndTheSessionCapped) {
+  const std::string dir = TempDir("hostile-corner-flood");
+  const std::string url = UniqueUdpmUrl(23) + "&recv_buf_size=8388608";
+  const std::string state = dir + "/views.lcmlog";
+  Command calibrate(CalibrateArgv(dir, url, {"--state", state, "--max-views", "5"}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << calibrate.Output();
+
+  const std::vector<widestereo::stereo_corners_t> real = RealViews();
+  for (int i = 0; i < 8; ++i) {
+    widestereo::stereo_corners_t flood = real[size_t(i)];
+    flood.left.n = 100000;
+    flood.left.ids.resize(100000, 0);
+    flood.left.image_points.resize(100000, flood.left.image_points[0]);
+    flood.left.object_points.resize(100000, flood.left.object_points[0]);
+    bus.Publish(ch::kStereoCorners, Encoded(flood));
+    ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == i + 1; }))
+        << bus.Counters(ch::kStereoCorners).rejected;
+  }
+  EXPECT_NE(bus.status()->last_error.find("100000 corners on a board of 54"), std::string::npos)
+      << bus.status()->last_error;
+
+  SendViews(bus);
+  const int64_t beyond = int64_t(real.size()) - 5;
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == 8 + beyond; }))
+      << bus.Counters(ch::kStereoCorners).rejected;
+  EXPECT_NE(bus.status()->last_error.find("maximum of 5 views (--max-views)"), std::string::npos)
+      << bus.status()->last_error;
+  calibrate.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
+  int kept = 0;
+  for (const LogEvent& e : ReadLog(state)) kept += e.channel == ch::kStereoCorners;
+  EXPECT_EQ(kept, 5);
+  EXPECT_LT(fs::file_size(state), uintmax_t(5 * real.front().getEncodedSize() + 5000));
 }
 
 // The views of a peer without the key, sent before the real ones: every

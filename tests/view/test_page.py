@@ -143,8 +143,9 @@ def key_file(folder):
 def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, browser, tmp_path):
     key = key_file(tmp_path)
     report = os.path.join(bus.folder, "report.json")
-    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop"])
-    bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05"])
+    # A keyed rig: every process has the key (images and corners are signed).
+    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key])
+    bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
                                    "--report", report, "--key-file", key])
