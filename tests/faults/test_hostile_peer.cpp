@@ -384,7 +384,7 @@ TEST(HostilePeer, CornerFloodsAreRefusedAndTheSessionCapped) {
   int kept = 0;
   for (const LogEvent& e : ReadLog(state)) kept += e.channel == ch::kStereoCorners;
   EXPECT_EQ(kept, 5);
-  EXPECT_LT(fs::file_size(state), uintmax_t(5 * real.front().getEncodedSize() + 5000));
+  EXPECT_LT(fs::file_size(state), 100000u) << "a flooded view (4.4 MB) was kept";
 }
 
 // The views of a peer without the key, sent before the real ones: every
