@@ -97,12 +97,6 @@ void Sign(const RigKey& key, const std::string& channel, const std::string& send
   if (msg.decode(bytes.data(), 0, int(bytes.size())) < 0) throw std::logic_error("a signed message does not decode");
 }
 
-// What a process without a key sends: every auth_t field zero or empty.
-template <class Msg>
-void ClearAuth(Msg& msg) {
-  msg.auth = widestereo::auth_t{};
-}
-
 // The receiving side: the key, and the nonces accepted within the window.
 // Thread-safe.
 class AuthCheck {
@@ -121,7 +115,8 @@ class AuthCheck {
   template <class Msg>
   void Check(const std::string& channel, const Msg& msg, const uint8_t* encoded, size_t size, int64_t now_us) {
     if (msg.auth.key_id == 0) throw AuthError("refused: unsigned, and this process requires the rig key's MAC");
-    if (size < sizeof msg.auth.mac || !std::equal(std::begin(msg.auth.mac), std::end(msg.auth.mac), encoded + size - 32))
+    constexpr size_t kMacBytes = sizeof msg.auth.mac;
+    if (size < kMacBytes || !std::equal(std::begin(msg.auth.mac), std::end(msg.auth.mac), encoded + size - kMacBytes))
       throw AuthError("refused: not a message of this type as encoded");
     CheckSigned(channel, msg.auth, encoded, size, now_us);
   }

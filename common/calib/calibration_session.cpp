@@ -173,8 +173,7 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
   left_grid_.Add(left, data_.left.image_width, data_.left.image_height);
   right_grid_.Add(right, data_.right.image_width, data_.right.image_height);
   if (save && state_) {
-    std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
-    msg.encode(bytes.data(), 0, int(bytes.size()));
+    std::vector<uint8_t> bytes = EncodeMessage(msg);
     lcm::LogEvent event;
     event.eventnum = state_events_++;
     event.timestamp = msg.utime;
