@@ -35,18 +35,19 @@ void Guarded(Process& process, const char* channel, Fn fn) {
 
 }  // namespace
 
-ViewNode::ViewNode(Process& process, EventHub& hub, ViewOptions options)
+ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options)
     : process_(process),
       hub_(hub),
+      blobs_(blobs),
       options_(options),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
         Guarded(process_, channel::kStereoDisparity,
-                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width)); });
+                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width, blobs_)); });
       })),
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
-        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points));
+        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points, blobs_));
       })) {}
 
 ViewNode::~ViewNode() = default;
@@ -102,7 +103,7 @@ bool ViewNode::Due(int64_t& last_us) {
 
 void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
   Guarded(process_, channel::kStereoImages, [&] {
-    std::string event = FrameEvent(frame, options_.max_width);
+    std::string event = FrameEvent(frame, options_.max_width, blobs_);
     {
       std::lock_guard<std::mutex> lock(recent_mutex_);
       recent_[frame.frame_id] = event;
@@ -122,7 +123,7 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
     cv::Mat left_rect, right_rect;
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
-    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width));
+    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width, blobs_));
   });
 }
 

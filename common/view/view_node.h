@@ -31,7 +31,9 @@
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
+#include "view/blob_store.h"
 #include "view/event_hub.h"
+#include "view/page_events.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -55,7 +57,7 @@ Rectification ShownRectification(const StereoRig& rig, int max_width);
 
 class ViewNode {
  public:
-  ViewNode(Process& process, EventHub& hub, ViewOptions options);
+  ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options);
   ~ViewNode();
 
   // The calibration the depth view rectifies with until a STEREO_CALIBRATION comes.
@@ -69,7 +71,7 @@ class ViewNode {
   std::string Command(const std::string& command);
 
  private:
-  static constexpr size_t kRecentFrames = 64;  // 21 s at 3 Hz: a slow detector's latency
+  static constexpr size_t kRecentFrames = kFramesKept;  // view/page_events.h
 
   bool Due(int64_t& last_us);
   // Hands a message of `channel` to `stage` when at least 1 / image_hz has
@@ -82,6 +84,7 @@ class ViewNode {
 
   Process& process_;
   EventHub& hub_;
+  BlobStore& blobs_;
   ViewOptions options_;
   StatusBoard board_;
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;

@@ -62,7 +62,8 @@ void Use(const stereo_frame_t& frame) {
 // stereo-view colours every disparity it shows (stereo-match --save-disparity likewise).
 void Use(const disparity_t& disparity) {
   Use(disparity.disparity);
-  ws::view::DisparityEvent(disparity, 64);
+  ws::view::BlobStore blobs;
+  ws::view::DisparityEvent(disparity, 64, blobs);
 }
 
 // stereo-match turns a calibration into camera models and unprojects every
