@@ -6,10 +6,12 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
@@ -233,21 +235,23 @@ void Process::HandleRejected(const std::string& channel, const std::string& why)
 }
 
 // Frame ids as unsigned, wrap-safe counters: the frames missed between two
-// ids are (id - last - 1) mod 2^64. An id that repeats or steps back a
-// little (a sender started anew) starts the count again; one that jumps
-// further than kMaxFrameGap either way (a sender's reset, a peer's forged
-// id) does too, and is reported, not counted as lost frames.
+// ids are (id - last - 1) mod 2^64, less those that came and were skipped
+// undecoded. An id that repeats or steps back a little (a sender started
+// anew) starts the count again; one that jumps further than kMaxFrameGap
+// either way (a sender's reset, a peer's forged id) does too, and is
+// reported, not counted as lost frames.
 void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
   constexpr uint64_t kMaxFrameGap = 1'000'000;  // 9 h at 30 Hz
   bool reset = false;
   int64_t last = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    const uint64_t skipped = uint64_t(std::exchange(undecoded_skips_[channel], 0));
     auto it = last_frame_id_.find(channel);
     if (it != last_frame_id_.end()) {
       last = it->second;
       const uint64_t missed = uint64_t(frame_id) - uint64_t(last) - 1;
-      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed);
+      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed - std::min(missed, skipped));
       else reset = missed < uint64_t(-1) - kMaxFrameGap;  // not a repeat or a small step back
     }
     last_frame_id_[channel] = frame_id;
@@ -255,6 +259,12 @@ void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
   if (reset)
     ReportError(channel + ": frame id jumped from " + std::to_string(last) + " to " + std::to_string(frame_id) +
                 ": counted as the sender's reset, not as lost frames");
+}
+
+void Process::SkipUndecoded(const std::string& channel) {
+  Counters(channel).skipped++;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++undecoded_skips_[channel];
 }
 
 void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes) {

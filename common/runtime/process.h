@@ -65,6 +65,14 @@ class Process {
   template <class Msg>
   void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
                  int queue_capacity = 0);
+  // As Subscribe, for a consumer that samples the stream (stereo-view shows a
+  // few of the image pairs that arrive): a message that comes while `due()`
+  // is false is counted as skipped and not handled. Live it is skipped
+  // before it is even decoded; from a file:// log once its time is observed
+  // (the log's clock). Frame-id gaps are counted net of those skips.
+  template <class Msg>
+  void SubscribeSampled(const std::string& channel, std::function<bool()> due,
+                        std::function<void(const Msg&)> handler, int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
   // dropped. A message that carries an auth_t is signed (with a rig key).
@@ -128,6 +136,8 @@ class Process {
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();
   void CountFrameGap(const std::string& channel, int64_t frame_id);
+  // Counts a message skipped before it was decoded (SubscribeSampled).
+  void SkipUndecoded(const std::string& channel);
 
   ProcessOptions options_;
   TextLog log_;
@@ -152,6 +162,7 @@ class Process {
   std::string last_error_;
   std::map<std::string, std::unique_ptr<ChannelCounters>> counters_;
   std::map<std::string, int64_t> last_frame_id_;
+  std::map<std::string, int64_t> undecoded_skips_;  // since the channel's last frame id
   std::map<std::string, int64_t> last_reject_log_us_;
   std::vector<Timer> timers_;
   std::vector<std::function<void()>> at_end_;
@@ -170,17 +181,28 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 template <class Msg>
 void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
                         int queue_capacity) {
+  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity);
+}
+
+template <class Msg>
+void Process::SubscribeSampled(const std::string& channel, std::function<bool()> due,
+                               std::function<void(const Msg&)> handler, int queue_capacity) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
-  using Context = std::pair<Process*, std::function<void(const Msg&)>>;
-  auto context = std::make_shared<Context>(this, std::move(handler));
+  struct Context {
+    Process* self;
+    std::function<bool()> due;  // null: every message is handled
+    std::function<void(const Msg&)> handler;
+  };
+  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler)});
   handler_contexts_.push_back(context);
   lcm::Subscription* subscription = in->subscribeFunction(
       channel,
       +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
-        Process* self = ctx->first;
+        Process* self = ctx->self;
         self->Counters(ch).received++;
+        if (ctx->due && !self->file_input_ && !ctx->due()) return self->SkipUndecoded(ch);
         try {
           const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
@@ -188,7 +210,11 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
             if (self->auth_)
               self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
           if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
-          ctx->second(msg);
+          if (ctx->due && self->file_input_ && !ctx->due()) {
+            self->Counters(ch).skipped++;
+            return;
+          }
+          ctx->handler(msg);
         } catch (const std::exception& e) {
           self->HandleRejected(ch, e.what());
         }

@@ -160,14 +160,8 @@ void ViewNode::PublishView() {
 
 template <class Msg>
 void ViewNode::SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage) {
-  process_.Subscribe<Msg>(
-      channel,
-      [this, channel, &last_us, &stage](const Msg& msg) {
-        if (Due(last_us))
-          stage.Offer(msg);
-        else
-          process_.Counters(channel).skipped++;
-      },
+  process_.SubscribeSampled<Msg>(
+      channel, [this, &last_us] { return Due(last_us); }, [&stage](const Msg& msg) { stage.Offer(msg); },
       2);  // LCM's queue holds two big messages at most: the stage takes the newest
 }
 

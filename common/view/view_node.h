@@ -13,9 +13,10 @@
 //
 // The images, disparities and clouds are turned into events on threads of
 // their own (runtime/newest_first.h), so the input thread only hands them
-// over: one that arrives within 1 / image_hz of the last shown, or is
-// replaced by a newer one before its thread took it, is counted as skipped
-// on its channel. From a file:// log everything runs in line.
+// over: one that arrives within 1 / image_hz of the last shown (live, not
+// even decoded: Process::SubscribeSampled), or is replaced by a newer one
+// before its thread took it, is counted as skipped on its channel. From a
+// file:// log everything runs in line.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file); sent signed, and only with the rig key.

@@ -31,8 +31,12 @@ PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, 
       hub_(hub),
       blobs_(blobs),
       node_(node),
-      three_js_(ReadFile(three_dir + "/build/three.min.js")),
-      orbit_controls_js_(ReadFile(three_dir + "/examples/js/controls/OrbitControls.js")),
+      assets_{{"/", {kIndexHtml, "text/html; charset=utf-8"}},
+              {"/view.js", {kViewJs, "text/javascript"}},
+              {"/view.css", {kViewCss, "text/css"}},
+              {"/three.min.js", {ReadFile(three_dir + "/build/three.min.js"), "text/javascript"}},
+              {"/OrbitControls.js",
+               {ReadFile(three_dir + "/examples/js/controls/OrbitControls.js"), "text/javascript"}}},
       server_(std::make_unique<httplib::Server>()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kMaxStreams + 8); };
   server_->set_socket_options([](int sock) {
@@ -61,17 +65,8 @@ PageServer::~PageServer() {
 }
 
 void PageServer::Routes() {
-  auto serve = [this](const char* path, const std::string& body, const char* type) {
-    server_->Get(path, [&body, type](const httplib::Request&, httplib::Response& res) {
-      res.set_content(body, type);
-    });
-  };
-  static const std::string index_html = kIndexHtml, view_js = kViewJs, view_css = kViewCss;
-  serve("/", index_html, "text/html; charset=utf-8");
-  serve("/view.js", view_js, "text/javascript");
-  serve("/view.css", view_css, "text/css");
-  serve("/three.min.js", three_js_, "text/javascript");
-  serve("/OrbitControls.js", orbit_controls_js_, "text/javascript");
+  for (const auto& [path, asset] : assets_)
+    server_->Get(path, [&asset = asset](const httplib::Request& req, httplib::Response& res) { asset.Serve(req, res); });
 
   // The id is at most 18 digits, so it always fits an int64.
   server_->Get(R"(/blob/(\d{1,18}))", [this](const httplib::Request& req, httplib::Response& res) {

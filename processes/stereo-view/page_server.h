@@ -19,8 +19,11 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "runtime/process.h"
+#include "static_asset.h"
 #include "view/blob_store.h"
 #include "view/event_hub.h"
 #include "view/view_node.h"
@@ -52,7 +55,7 @@ class PageServer {
   EventHub& hub_;
   const BlobStore& blobs_;
   ViewNode& node_;
-  std::string three_js_, orbit_controls_js_;
+  std::vector<std::pair<std::string, StaticAsset>> assets_;  // path, file
   std::unique_ptr<httplib::Server> server_;
   int port_ = 0;
   std::atomic<int> streams_{0};

@@ -120,7 +120,8 @@ void Use(const calibration_health_t& health) { Show(health); }
 // stereo-cloud runs its filter chain on every cloud; stereo-view shows it.
 void Use(const point_cloud_t& cloud) {
   static const ws::CloudFilter filter{ws::CloudFilterConfig{}};
-  ws::view::CloudEvent(cloud, 100);
+  ws::view::BlobStore blobs;
+  ws::view::CloudEvent(cloud, 100, blobs);
   filter.Run(cloud);
 }
 
