@@ -99,7 +99,7 @@ void HealthNode::Check(const widestereo::stereo_frame_t& frame) {
   if (!checker_) BuildChecker();
   FrameCheck check;
   try {
-    check = checker_->Check(ImageToMat(frame.left), ImageToMat(frame.right), source_);
+    check = checker_->Check(ImageView(frame.left), ImageView(frame.right), source_);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + ": " + e.what());
   }

@@ -101,6 +101,11 @@ void ValidateImage(const image_t& msg) {
 }
 
 cv::Mat ImageToMat(const image_t& msg, int64_t max_pixels) {
+  const cv::Mat image = ImageView(msg, max_pixels);
+  return image.data == msg.data.data() ? image.clone() : image;
+}
+
+cv::Mat ImageView(const image_t& msg, int64_t max_pixels) {
   ValidateImage(msg);
   RequireAtMostPixels(msg.width, msg.height, max_pixels);
   if (IsCompressed(msg.pixelformat)) {
@@ -120,12 +125,10 @@ cv::Mat ImageToMat(const image_t& msg, int64_t max_pixels) {
   RawLayoutOf(msg.pixelformat, &layout);
   cv::Mat view(msg.height, msg.width, layout.cv_type, const_cast<uint8_t*>(msg.data.data()),
                size_t(msg.row_stride));
-  cv::Mat out;
-  if (msg.pixelformat == image_t::PIXEL_FORMAT_RGB)
-    cv::cvtColor(view, out, cv::COLOR_RGB2BGR);
-  else
-    out = view.clone();
-  return out;
+  if (msg.pixelformat != image_t::PIXEL_FORMAT_RGB) return view;
+  cv::Mat bgr;
+  cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
 }
 
 image_t MatToImage(const cv::Mat& mat, int64_t utime, Compression compression, int jpeg_quality) {

@@ -53,6 +53,11 @@ void ValidateImage(const widestereo::image_t& msg);
 // max_pixels is refused before it is decoded. The result owns its pixels.
 // Throws DecodeError.
 cv::Mat ImageToMat(const widestereo::image_t& msg, int64_t max_pixels = kDefaultMaxImagePixels);
+// As ImageToMat, but a raw GRAY, LE_GRAY16, BGR or FLOAT_GRAY32 image is not
+// copied: the result shares the message's pixels, and is valid while the
+// message lives unchanged (for a reader that is done with the pixels before
+// the message goes: a remap, an encoder). Other formats are decoded.
+cv::Mat ImageView(const widestereo::image_t& msg, int64_t max_pixels = kDefaultMaxImagePixels);
 
 // Encodes a CV_8UC1, CV_16UC1, CV_8UC3 (BGR) or CV_32FC1 Mat; with jpeg or
 // png compression the payload is that file (JPEG: 8-bit only).

@@ -17,7 +17,7 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source) {
   RequireFrameSize(frame, rect->input_size, calibration_source);
-  const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
+  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);

@@ -28,7 +28,7 @@ cv::Mat To8Bit(const cv::Mat& image) {
 }
 
 json Image(const widestereo::image_t& image, int max_width, BlobStore& blobs) {
-  const cv::Mat mat = ImageToMat(image);
+  const cv::Mat mat = ImageView(image);
   return {{"width", image.width}, {"height", image.height}, {"src", blobs.Put("frame", 2 * kFramesKept, Jpeg(To8Bit(mat), max_width))}};
 }
 
@@ -121,7 +121,7 @@ std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat&
 
 std::string DisparityEvent(const widestereo::disparity_t& disparity, int max_width, BlobStore& blobs) {
   const DisparityLegend legend = MakeLegend(disparity);
-  cv::Mat values = ImageToMat(disparity.disparity);
+  cv::Mat values = ImageView(disparity.disparity);
   if (values.cols > max_width)  // coloured at the size shown: nearest, so no disparity is made up
     cv::resize(values, values, {max_width, std::max(1, values.rows * max_width / values.cols)}, 0, 0,
                cv::INTER_NEAREST);

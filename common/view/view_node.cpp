@@ -120,7 +120,7 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
       if (!rect_) rect_ = std::make_shared<const Rectification>(ShownRectification(*rig_, options_.max_width));
       rect = rect_;
     }
-    const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
+    const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
     cv::Mat left_rect, right_rect;
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
     hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width, blobs_));
