@@ -27,4 +27,5 @@ for variant in transport transport-view; do
     --append "bench_transport=--duration=$DURATION" "${extra[@]}" > "$RUN/$variant/launch.out"
   echo "== $variant.yaml"
   cat "$RUN/$variant/bench_transport.out"
+  grep -h "^browser: Chromium" "$RUN/$variant/browser.out" 2>/dev/null || true
 done

@@ -108,7 +108,10 @@ def bus(tmp_path, request):
 def browser():
     options = webdriver.ChromeOptions()
     for flag in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1400,1200",
-                 "--enable-unsafe-swiftshader", "--use-angle=swiftshader"):
+                 "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
+                 # WebGL in SwiftShader, the page composited in software: SwiftShader's
+                 # compositing alone took two thirds of a core here.
+                 "--disable-gpu-compositing"):
         options.add_argument(flag)
     driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
     driver.set_script_timeout(120)  # a loaded machine's renderer may lag behind
