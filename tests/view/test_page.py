@@ -9,6 +9,7 @@ import signal
 import socket
 import subprocess
 import time
+import urllib.error
 import urllib.request
 
 import cv2
@@ -230,6 +231,15 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
                 baseline: l.dataset.baseline,
                 ticks: [...l.querySelectorAll('span')].map(s => [s.dataset.disparity, s.dataset.metres])};""")
     screenshot(browser, bus, "depth.png")
+    src = browser.execute_script("return document.querySelector('#disparity').src")
+    assert "/blob/" in src and urllib.request.urlopen(src, timeout=5).headers["Content-Type"] == "image/jpeg"
+    with pytest.raises(urllib.error.HTTPError, match="404"):
+        urllib.request.urlopen("http://127.0.0.1:%d/blob/999999999" % port, timeout=5)
+
+    # A second stereo-view on the same port is refused, not handed half the browsers.
+    second = bus.start("stereo-view", ["--port", str(port)])
+    assert second.wait(timeout=30) == 1
+    assert "cannot listen on 127.0.0.1:%d" % port in bus.output("stereo-view")
 
     # A browser that stops reading: its events are skipped, the input goes on.
     stalled = socket.socket()
