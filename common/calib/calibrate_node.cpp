@@ -27,9 +27,9 @@ namespace ws::calib {
 namespace {
 
 // calib.yaml and "poly6" -> calib.poly6.yaml
-std::string ModelFilePath(const std::string& yaml, const std::string& model) {
+std::string ModelFilePath(const std::string& yaml, ModelKind model) {
   const std::filesystem::path path(yaml);
-  return (path.parent_path() / (path.stem().string() + "." + model + path.extension().string())).string();
+  return (path.parent_path() / (path.stem().string() + "." + ModelName(model) + path.extension().string())).string();
 }
 
 // The folder of an output file (--out, --report), where `save` may write; ""
@@ -42,12 +42,13 @@ std::string FolderOf(const std::string& file) {
 
 }  // namespace
 
-std::vector<std::string> ParseModelList(const std::string& spec) {
-  const auto kinds = ModelKinds();
-  if (spec == "all") return kinds;
-  if (std::find(kinds.begin(), kinds.end(), spec) == kinds.end())
-    throw CalibrationError("unknown model '" + spec + "' (bspline, poly6, poly12, kb4, bspline_theta or all)");
-  return {spec};
+std::vector<ModelKind> ParseModelList(const std::string& spec) {
+  if (spec == "all") return ModelKinds();
+  try {
+    return {ParseModelKind(spec)};
+  } catch (const std::invalid_argument&) {
+    throw CalibrationError("unknown model '" + spec + "' (" + KnownModelNames() + " or all)");
+  }
 }
 
 CalibrateNode::CalibrateNode(Process& process, NodeOptions options)
@@ -126,7 +127,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     throw std::invalid_argument("unknown command '" + msg.command +
                                 "' (stereo-calibrate knows: solve, reset, restore, save)");
   }
-  std::vector<std::string> models = options_.models;
+  std::vector<ModelKind> models = options_.models;
   CalibrationOptions calibration = options_.calibration;
   CommandOutput yaml{FolderOf(options_.out_yaml), "", ".yaml"}, json{FolderOf(options_.report_json), "", ".json"};
   for (const auto& arg : msg.args) {
@@ -219,7 +220,7 @@ void CalibrateNode::SetState(const std::string& state, double rms, double heldou
   process_.SetState(state);
 }
 
-void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions options) {
+void CalibrateNode::Solve(std::vector<ModelKind> models, CalibrationOptions options) {
   if (solving_.exchange(true)) return process_.ReportError("solve ignored: a solve is running");
   std::vector<int64_t> frames;
   StereoData data = session_.Data(&frames);
@@ -295,12 +296,12 @@ void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::ve
 }
 
 bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
-                             const std::vector<std::string>& models, const CalibrationOptions& options) {
+                             const std::vector<ModelKind>& models, const CalibrationOptions& options) {
   solving_ = true;
   SetState("solving", -1);
   PublishStatus();
   std::string names;
-  for (const auto& m : models) names += (names.empty() ? "" : ", ") + m;
+  for (const ModelKind m : models) names += (names.empty() ? "" : ", ") + ModelName(m);
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
   double rms = -1, heldout = -1;
@@ -330,11 +331,11 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
              << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right}) {
-        if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
+        if (!camera->knot_curve.empty()) process_.log().Info(ModelName(r.model) + " " + KnotChoiceLine(*camera));
         for (const std::string& line : {OutlierLine(*camera), WarpChoiceLine(*camera)})
-          if (!line.empty()) process_.log().Info(r.model + " " + line);
+          if (!line.empty()) process_.log().Info(ModelName(r.model) + " " + line);
         if (camera->uncertainty.median_px >= 0)
-          process_.log().Info(r.model + " " + UncertaintyLine(*camera));
+          process_.log().Info(ModelName(r.model) + " " + UncertaintyLine(*camera));
       }
       for (const auto* camera : {&r.left, &r.right})
         for (const auto& skipped : camera->skipped)
