@@ -15,7 +15,7 @@
 #include "detect/corner_detector.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "sim/sim_source.h"
+#include "source/sim_source.h"
 #include "sim/simulator.h"
 #include "source/make_source.h"
 #include "test_support.h"
