@@ -43,6 +43,7 @@
 
 #include "calib/calibrate.h"
 #include "calib/calibration_session.h"
+#include "runtime/command_dispatcher.h"
 #include "runtime/process.h"
 #include "widestereo/command_t.hpp"
 
@@ -73,7 +74,8 @@ class CalibrateNode {
 
  private:
   void OnCorners(const widestereo::stereo_corners_t& msg);
-  void OnCommand(const widestereo::command_t& msg);
+  CommandDispatcher Commands();
+  void OnCommand(const CommandArgs& args);
   void PublishStatus();
   // Reports what the session's last read of its state file found damaged.
   void ReportStateDamage();
@@ -96,6 +98,7 @@ class CalibrateNode {
   Process& process_;
   NodeOptions options_;
   CalibrationSession session_;
+  CommandDispatcher commands_;
   std::mutex mutex_;  // guards state_, rms_, last_
   std::string state_ = "collecting";
   double rms_ = -1;
