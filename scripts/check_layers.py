@@ -159,9 +159,10 @@ def check(common, allowed_edges, solver_core, solver_allowed, out):
     failures = []
 
     out.write("folder include graph of %s:\n" % common)
+    width = max(map(len, folders), default=0)
     for folder in folders:
         if graph[folder]:
-            out.write("  %-10s -> %s\n" % (folder, ", ".join(sorted(graph[folder]))))
+            out.write("  %-*s -> %s\n" % (width, folder, ", ".join(sorted(graph[folder]))))
 
     layered = {a: {b: who for b, who in edges.items() if (a, b) not in allowed_edges}
                for a, edges in graph.items()}
