@@ -38,18 +38,15 @@ const std::string kHeader[] = {
     "      M = [cx 0 0; -sx sy cy 0; sy -cy sx cy cx], cx = cos tau_x, sx = sin tau_x, cy, sy of tau_y.",
     "Stereo: X_right = R X_left + T (metres)."};
 
-bool IsSpline(const std::string& kind) {
-  return kind == BsplineDistortion::Kind() || kind == BsplineThetaDistortion::Kind();
-}
-
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
                  int views) {
   fs << name << "{";
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
-  fs << "model" << m.distortion.kind << "degree" << m.distortion.degree;
-  if (IsSpline(m.distortion.kind)) fs << "knots" << m.distortion.knots;
-  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
+  const ModelTraits& traits = Traits(m.distortion.kind);
+  fs << "model" << traits.name << "degree" << m.distortion.degree;
+  if (traits.spline) fs << "knots" << m.distortion.knots;
+  fs << traits.coeff_key << m.distortion.coeffs;
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
   if (!m.nonradial.empty()) {
     const NonRadial& f = m.nonradial;
@@ -187,6 +184,16 @@ NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::s
   return f;
 }
 
+// The model kind named by node's "model" (`field` in messages).
+ModelKind ReadModelKind(const Reader& in, const cv::FileNode& node, const std::string& field) {
+  const std::string name = in.String(node, "model", field);
+  try {
+    return ParseModelKind(name);
+  } catch (const std::invalid_argument&) {
+    in.Fail(field, "unknown model '" + name + "' (known: " + KnownModelNames() + ")");
+  }
+}
+
 CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::string& name,
                        double* rms, int* views) {
   const cv::FileNode node = in.Required(root, name, name);
@@ -204,28 +211,26 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
   m.cx = K(0, 2);
   m.cy = K(1, 2);
   Distortion& d = m.distortion;
-  d.kind = in.String(node, "model", at + "model");
-  const auto kinds = ModelKinds();
-  if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end())
-    in.Fail(at + "model", "unknown model '" + d.kind + "' (bspline, poly6 or poly12)");
-  const std::string coeffs_key = CoefficientKey(d.kind);
-  for (const std::string key : {"alpha", "k"})
-    if (key != coeffs_key && !node[key].empty())
-      in.Fail(at + key, "not a coefficient of a " + d.kind + " model");
-  if (IsSpline(d.kind)) {
+  d.kind = ReadModelKind(in, node, at + "model");
+  const ModelTraits& traits = Traits(d.kind);
+  const std::string coeffs_key = traits.coeff_key;
+  for (const ModelTraits& other : kModelTraits)
+    if (other.coeff_key != coeffs_key && !node[other.coeff_key].empty())
+      in.Fail(at + other.coeff_key, "not a coefficient of a " + ModelName(d.kind) + " model");
+  if (traits.spline) {
     d.degree = in.Int(node, "degree", at + "degree", 1);
     d.knots = in.Reals(node, "knots", at + "knots", kMaxKnots);
   } else {
     if (!node["degree"].empty() && in.Int(node, "degree", at + "degree", 0) != 0)
-      in.Fail(at + "degree", "must be 0 for " + d.kind);
+      in.Fail(at + "degree", "must be 0 for " + ModelName(d.kind));
     if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots", kMaxKnots).empty())
-      in.Fail(at + "knots", "must be empty for " + d.kind);
+      in.Fail(at + "knots", "must be empty for " + ModelName(d.kind));
   }
   d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key, kMaxKnots);
   try {
     MakeModel(d, Coefficients::kAll);
   } catch (const std::exception& e) {
-    in.Fail(at + (IsSpline(d.kind) ? "knots" : "model"), e.what());
+    in.Fail(at + (traits.spline ? "knots" : "model"), e.what());
   }
   m.p1 = in.Real(node, "p1", at + "p1");
   m.p2 = in.Real(node, "p2", at + "p2");
@@ -266,7 +271,7 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
     cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     for (const std::string& line : kHeader) fs.writeComment(line);
     if (!file.note.empty()) fs.writeComment(file.note);
-    fs << "model" << file.model;
+    fs << "model" << ModelName(file.model);
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
     if (!file.mono) {
       WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
@@ -300,20 +305,21 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   const cv::FileNode root = fs.root();
   if (!root.isMap()) in.Fail("(file)", "not a map of fields");
   CalibrationFile f;
-  f.model = in.String(root, "model", "model");
+  f.model = ReadModelKind(in, root, "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
   // A one-camera file has neither "right" nor "stereo".
   f.mono = root["right"].empty() && root["stereo"].empty();
   if (f.mono) {
     if (f.left.distortion.kind != f.model)
-      in.Fail("model", "'" + f.model + "', but the camera's model is '" + f.left.distortion.kind + "'");
+      in.Fail("model", "'" + ModelName(f.model) + "', but the camera's model is '" +
+                           ModelName(f.left.distortion.kind) + "'");
     return f;
   }
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
   for (const auto* camera : {&f.left, &f.right})
     if (camera->distortion.kind != f.model)
       in.Fail("model",
-              "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
+              "'" + ModelName(f.model) + "', but a camera's model is '" + ModelName(camera->distortion.kind) + "'");
   const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
   if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
   f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);

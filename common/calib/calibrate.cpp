@@ -18,17 +18,10 @@
 namespace ws::calib {
 
 void CheckOptions(const CalibrationOptions& options) {
-  const auto kinds = ModelKinds();
-  if (std::find(kinds.begin(), kinds.end(), options.model) == kinds.end()) {
-    std::string known;
-    for (const auto& kind : kinds) known += (known.empty() ? "" : ", ") + kind;
-    throw CalibrationError("unknown model '" + options.model + "' (known: " + known + ")");
-  }
   if (options.knots != kAutoKnots && (options.knots < 2 || options.knots > 64))
     throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
                            std::to_string(options.knots));
-  const bool spline = options.model.rfind("bspline", 0) == 0;  // bspline, bspline_theta
-  if (spline && options.knots == kAutoKnots && options.cv_folds < 2)
+  if (Traits(options.model).spline && options.knots == kAutoKnots && options.cv_folds < 2)
     throw CalibrationError("--knots auto needs cross-validation (at least 2 folds)");
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
   if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
@@ -175,7 +168,7 @@ int ChooseModel(const std::vector<StereoCalibration>& solved) {
 
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
-                                           const std::vector<std::string>& kinds) {
+                                           const std::vector<ModelKind>& kinds) {
   ModelCalibrations results;
   // Several models are compared radially; the chosen one then gets its
   // non-radial field.
@@ -187,7 +180,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     try {
       results.solved.push_back(CalibrateStereo(data, o));
     } catch (const CalibrationError& e) {
-      results.failed.push_back({kind, e.what()});
+      results.failed.push_back({ModelName(kind), e.what()});
     }
   }
   if (results.solved.empty() && !results.failed.empty())
@@ -199,7 +192,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     try {
       results.solved[results.chosen] = CalibrateStereo(data, o);
     } catch (const CalibrationError& e) {  // the radial solution stands
-      results.failed.push_back({o.model + " with a non-radial field", e.what()});
+      results.failed.push_back({ModelName(o.model) + " with a non-radial field", e.what()});
     }
   }
   return results;

@@ -89,7 +89,7 @@ struct CameraCalibration {
 };
 
 struct StereoCalibration {
-  std::string model;  // the model kind
+  ModelKind model = ModelKind::kBspline;
   // A one-camera rig (no right view at all): `right` empty, no R, T.
   bool mono = false;
   StereoFlow flow = StereoFlow::kJoint;
@@ -170,7 +170,7 @@ double HeldOutRms(const StereoCalibration& calibration);
 // still solved; throws the first model's CalibrationError when every one fails.
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
-                                           const std::vector<std::string>& kinds);
+                                           const std::vector<ModelKind>& kinds);
 
 // The residuals a known camera and known board poses give on the views
 // (e.g. the RMS of the true model on synthetic data): every corner of every

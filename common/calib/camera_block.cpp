@@ -38,7 +38,7 @@ std::vector<double> RefitSpline(const CameraBlock& from, const Spline& to, doubl
 
 }  // namespace
 
-CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
+CameraBlock PinholeBlock(ModelKind kind, const CalibrationOptions& options, double fx,
                          double fy, double cx, double cy) {
   CameraBlock camera(MakeCalibrationModel(kind, SetupFor(options, 1.0)));
   camera.intrinsics = {fx, fy, cx, cy, 0, 0};
@@ -93,10 +93,6 @@ CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, bo
   return out;
 }
 
-std::string Kind(const CameraBlock& camera) {
-  return std::visit([](const auto& m) { return m.Kind(); }, camera.model);
-}
-
 double FieldEnd(const CameraBlock& camera) {
   return std::visit(
       [](const auto& m) {
@@ -104,11 +100,6 @@ double FieldEnd(const CameraBlock& camera) {
         return 0.0;
       },
       camera.model);
-}
-
-bool IsSpline(const CameraBlock& camera) {
-  return std::visit([](const auto& m) { return kIsBspline<std::decay_t<decltype(m)>>; },
-                    camera.model);
 }
 
 std::vector<std::string> ParamNames(const CameraBlock& camera) {

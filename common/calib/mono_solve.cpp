@@ -338,7 +338,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   s->inliers.assign(p.views.size(), {});
   for (size_t v = 0; v < p.views.size(); ++v) s->inliers[v].assign(p.views[v].size(), 1);
   s->init_method = init.pinhole.method;
-  const std::string what = p.name + " camera (" + options.model + ")";
+  const std::string what = p.name + " camera (" + ModelName(options.model) + ")";
   const int min_points = options.min_points_per_view;
 
   // A pinhole on the central disc.
@@ -378,7 +378,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     r_max = needed;
     camera = ForField(camera, options, r_max);
   };
-  const bool global_coeffs = !IsSpline(camera);
+  const bool global_coeffs = !Traits(KindOf(camera.model)).spline;
   for (int stage = 1; !everything; ++stage) {
     fraction *= 1.4;
     MarkDisc(pinhole, p, fraction, min_points, &disc, &everything);
@@ -416,7 +416,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
-  if (auto_knots && IsSpline(s->problem.cameras[0])) ChooseKnots(choosing, what, s);
+  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(choosing, what, s);
   if (requested.board_warp == WarpRule::kAuto) ChooseWarp(choosing, what, s);
   if (requested.nonradial != FieldRule::kNone) ChooseField(choosing, what, s);
   // The final solve: the chosen model, its outliers left out.

@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "models/model_kind.h"
+
 namespace ws::calib {
 
 // How the stereo rig is solved.
@@ -104,7 +106,7 @@ enum class FieldRule {
 inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
 
 struct CalibrationOptions {
-  std::string model = "bspline";  // a registered kind: bspline, poly6, poly12
+  ModelKind model = ModelKind::kBspline;
   // Distinct B-spline knots on [0, r_max]: knots - 1 uniform spans, knots + 2
   // basis functions of which `knots` are estimated (alpha_0 = alpha_1 = 0);
   // kAutoKnots: chosen by cross-validation (above).
@@ -148,8 +150,8 @@ struct CalibrationOptions {
   std::function<void(const std::string&)> progress;
 };
 
-// Throws CalibrationError for options no calibration can use (unknown model,
-// knots out of range, min_views below 3).
+// Throws CalibrationError for options no calibration can use (knots out of
+// range, min_views below 3).
 void CheckOptions(const CalibrationOptions& options);
 
 // "auto" (kAutoKnots) or a count from 2 to 64 (--knots, knots=N); throws

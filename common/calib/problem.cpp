@@ -152,7 +152,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
     } else {
       std::vector<int> held_intrinsics, held_coeffs;
-      if (!HasTangential(camera.model)) {  // kb4: p1 = p2 = 0 by definition
+      if (!Traits(KindOf(camera.model)).tangential) {  // kb4: p1 = p2 = 0 by definition
         held_intrinsics = {kP1, kP2};
         cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
       }

@@ -69,12 +69,12 @@ Json CameraReport(const CameraCalibration& c) {
   j["p1"] = m.p1;
   j["p2"] = m.p2;
   j["knots"] = Numbers(m.distortion.knots);
-  j[CoefficientKey(m.distortion.kind)] = Numbers(m.distortion.coeffs);
+  j[Traits(m.distortion.kind).coeff_key] = Numbers(m.distortion.coeffs);
   Json stddev = Json::object();
   for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
     stddev[c.param_names[i]] = c.stddev[i];
   j["stddev"] = stddev;
-  j["model"] = m.distortion.kind;
+  j["model"] = ModelName(m.distortion.kind);
   j["degree"] = m.distortion.degree;
   j["invalid_points"] = c.invalid_points;
   j["view_rms"] = ViewRmsJson(c.view_rms);
@@ -147,7 +147,7 @@ Json CameraReport(const CameraCalibration& c) {
 
 Json StereoReport(const StereoCalibration& s) {
   Json j;
-  j["model"] = s.model;
+  j["model"] = ModelName(s.model);
   j["cameras"] = {CameraReport(s.left)};
   j["flow"] = FlowName(s.flow);
   j["solve_seconds"] = s.solve_seconds;
@@ -196,7 +196,7 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
                      {"coeffs", row.coeffs},
                      {"chosen", row.chosen}});
   j["table_ii"] = table;
-  j["chosen"] = calibrations.solved.empty() ? Json() : Json(Chosen(calibrations).model);
+  j["chosen"] = calibrations.solved.empty() ? Json() : Json(ModelName(Chosen(calibrations).model));
   j["solve_seconds"] = seconds;
   return j;
 }

@@ -25,7 +25,10 @@ std::string Fixed(double value, int digits = 3) {
 }  // namespace
 
 HealthNode::HealthNode(Process& process, HealthConfig config)
-    : process_(process), config_(std::move(config)), window_(config_.verdict) {
+    : process_(process),
+      commands_(process.options().name, {{"refine", "refine", {}, [this](const CommandArgs&) { RefineCommand(); }}}),
+      config_(std::move(config)),
+      window_(config_.verdict) {
   process_.SetState("waiting for calibration");
 }
 
@@ -37,7 +40,7 @@ void HealthNode::Start(const std::string& calib_file) {
   process_.Subscribe<widestereo::stereo_frame_t>(
       channel::kStereoImages, [this](const auto& msg) { OnFrame(msg); }, 2);
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
-                                            [this](const auto& msg) { OnCommand(msg); });
+                                            [this](const auto& msg) { commands_.Dispatch(msg); });
   process_.Counters(channel::kCalibrationHealth);
   process_.AtEndOfInput([this] { AtEnd(); });
   process_.SetProgress([this] {
@@ -178,13 +181,7 @@ RefineResult HealthNode::Refine() {
   return r;
 }
 
-void HealthNode::OnCommand(const widestereo::command_t& msg) {
-  if (!msg.target.empty() && msg.target != process_.options().name) return;
-  if (msg.command != "refine") {
-    if (msg.target.empty()) return;  // meant for another process
-    throw std::invalid_argument("unknown command '" + msg.command + "' (stereo-health knows: refine)");
-  }
-  if (!msg.args.empty()) throw std::invalid_argument("refine takes no arguments");
+void HealthNode::RefineCommand() {
   const RefineResult r = Refine();
   if (!r.applied) throw std::runtime_error("refine refused: " + r.refused);
 }

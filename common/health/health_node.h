@@ -28,6 +28,7 @@
 #include "health/frame_checker.h"
 #include "health/verdict.h"
 #include "lcm_io/image_codec.h"
+#include "runtime/command_dispatcher.h"
 #include "runtime/process.h"
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -64,7 +65,8 @@ class HealthNode {
   void BuildChecker();
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   void OnFrame(const widestereo::stereo_frame_t& frame);
-  void OnCommand(const widestereo::command_t& msg);
+  // refine: the calibration from the kept matches; throws when refused.
+  void RefineCommand();
   void Check(const widestereo::stereo_frame_t& frame);
   widestereo::calibration_health_t Health(int64_t utime, int64_t frame_id) const;
   // Refines from the kept matches; applied, publishes and uses the result.
@@ -72,6 +74,7 @@ class HealthNode {
   void AtEnd();
 
   Process& process_;
+  const CommandDispatcher commands_;
   HealthConfig config_;
   std::optional<calib::CalibrationFile> calibration_;
   StereoRig rig_;

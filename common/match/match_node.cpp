@@ -102,7 +102,7 @@ void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
     calibration_source_ = source;
   }
   process_.log().Info("using " + source + " (" + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                      ", " + rig.left.distortion.kind + " model); its maps are built for its first frame of that size");
+                      ", " + ModelName(rig.left.distortion.kind) + " model); its maps are built for its first frame of that size");
   process_.SetState("matching");
 }
 
@@ -123,7 +123,7 @@ std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_fr
   process_.log().Info("rectification maps for " + *source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                       std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) +
                       " rectification, baseline = " + std::to_string(rect.baseline) + " m, " +
-                      rig->left.distortion.kind + " model");
+                      ModelName(rig->left.distortion.kind) + " model");
   auto built = std::make_shared<const Rectification>(std::move(rect));
   std::lock_guard<std::mutex> lock(rect_mutex_);
   if (rig_ == rig) {  // not replaced meanwhile

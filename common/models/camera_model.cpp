@@ -28,8 +28,8 @@ Camera::Camera(CameraModel model)
       distortion_(model_.distortion),
       field_(NonRadialField::FromData(model_.nonradial)),
       coeffs_(model_.distortion.coeffs) {
-  if (!HasTangential(distortion_.model()) && (model_.p1 != 0 || model_.p2 != 0))
-    throw std::invalid_argument(model_.distortion.kind + " has no tangential terms: p1 = p2 = 0");
+  if (!Traits(model_.distortion.kind).tangential && (model_.p1 != 0 || model_.p2 != 0))
+    throw std::invalid_argument(ModelName(model_.distortion.kind) + " has no tangential terms: p1 = p2 = 0");
   const std::vector<double>& field = model_.nonradial.coeffs;
   if (int(field.size()) != field_.GridCoeffs())
     throw std::invalid_argument("the non-radial field has " + std::to_string(field.size()) +

@@ -15,7 +15,7 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   model.cy = msg.cy;
   model.p1 = msg.p1;
   model.p2 = msg.p2;
-  model.distortion.kind = msg.model;
+  model.distortion.kind = ParseModelKind(msg.model);  // throws std::invalid_argument
   model.distortion.degree = msg.degree;
   model.distortion.knots = msg.knots;
   model.distortion.coeffs = msg.coeffs;
@@ -56,7 +56,7 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   msg.name = name;
   msg.image_width = model.image_width;
   msg.image_height = model.image_height;
-  msg.model = model.distortion.kind;
+  msg.model = ModelName(model.distortion.kind);
   msg.degree = model.distortion.degree;
   msg.knots = model.distortion.knots;
   msg.nknots = int32_t(msg.knots.size());

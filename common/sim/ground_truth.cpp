@@ -13,10 +13,10 @@ namespace {
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double max_theta) {
   fs << "{";
   fs << "name" << name;
-  fs << "kind" << m.distortion.kind;
+  fs << "kind" << ModelName(m.distortion.kind);
   fs << "degree" << m.distortion.degree;
   fs << "knots" << m.distortion.knots;
-  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
+  fs << Traits(m.distortion.kind).coeff_key << m.distortion.coeffs;
   fs << "fx" << m.fx << "fy" << m.fy << "cx" << m.cx << "cy" << m.cy << "p1" << m.p1 << "p2" << m.p2;
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   if (m.nonradial.tilted())  // a tilted sensor (models/sensor_tilt.h)
@@ -104,10 +104,10 @@ CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::str
     *max_theta = field_deg / 2 * M_PI / 180;
   }
   CameraModel m;
-  m.distortion.kind = r.Text(node, "kind", where);
+  m.distortion.kind = ParseModelKind(r.Text(node, "kind", where));
   m.distortion.degree = r.Int(node, "degree", where);
   m.distortion.knots = r.Reals(node, "knots", where);
-  m.distortion.coeffs = r.Reals(node, CoefficientKey(m.distortion.kind), where);
+  m.distortion.coeffs = r.Reals(node, Traits(m.distortion.kind).coeff_key, where);
   m.fx = r.Real(node, "fx", where);
   m.fy = r.Real(node, "fy", where);
   m.cx = r.Real(node, "cx", where);

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
                  "With --images: chessboard:COLSxROWS:SQUARE or charuco:COLSxROWS:SQUARE:MARKER:DICT "
                  "(inner corners, metres), as stereo-detect's");
   app.add_flag("--mono", mono, "With --images: every image of the folder alone, a one-camera rig");
-  std::vector<std::string> models = ws::ModelKinds();
+  std::vector<std::string> models = ws::ModelNames();
   models.push_back("all");
   app.add_option("--model", model,
                  "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "

@@ -43,7 +43,7 @@ TEST(CalibNonRadial, ATiltedSensorIsRecoveredWhereTheRadialModelIsOff) {
   double worst[2] = {0, 0};  // radial only, then the defaults
   for (const FieldRule rule : {FieldRule::kNone, FieldRule::kAuto}) {
     CalibrationOptions options;
-    options.model = "bspline";
+    options.model = ModelKind::kBspline;
     options.nonradial = rule;
     options.covariance = false;
     const StereoCalibration solved = CalibrateStereo(data, options);

@@ -98,11 +98,11 @@ INSTANTIATE_TEST_SUITE_P(Models, ViewCostJacobians, ::testing::ValuesIn(TestCame
 
 // Many knots: a corner reads 4 of 31 coefficients, every span is used.
 TEST(ViewCostJacobians, ThirtyOneCoefficientSplineMatchesCentralDifferences) {
-  for (const std::string kind : {"bspline", "bspline_theta"}) {
+  for (const ModelKind kind : {ModelKind::kBspline, ModelKind::kBsplineTheta}) {
     const AnyDistortionModel model = MakeCalibrationModel(kind, CalibrationSetup{1.6, 30, 3});
     std::vector<double> coeffs(31);
     for (size_t i = 0; i < coeffs.size(); ++i) coeffs[i] = 0.02 * std::sin(0.7 * i) - 0.003 * i;
-    CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, kind + " 31");
+    CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, ModelName(kind) + " 31");
   }
 }
 

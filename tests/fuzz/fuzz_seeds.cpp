@@ -178,7 +178,7 @@ void CalibrationSeeds(Seeds& seeds) {
   rig.left = rig.right = sim.left;
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
   seeds.Message("bspline", ws::MessageFromStereoRig(rig, 1));
-  rig.left.distortion = rig.right.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
+  rig.left.distortion = rig.right.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.004}};
   stereo_calibration_t poly6 = ws::MessageFromStereoRig(rig, 1);
   // With the quality figures a solver fills in.
   poly6.rms = 0.06;
