@@ -15,6 +15,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/large_message_heap.h"
 #include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
 
@@ -54,6 +55,7 @@ Process::Process(const ProcessOptions& options)
     : options_(options),
       log_(options.name, options.log_dir, options.quiet),
       start_wall_us_(WallMicros()) {
+  KeepLargeMessagesInHeap();
   InstallSignalHandlers();
   input_log_ = LcmFileUrlPath(options.in_url);
   file_input_ = message_clock_ = !input_log_.empty();
