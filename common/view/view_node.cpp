@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,10 +36,12 @@ void Guarded(Process& process, const char* channel, Fn fn) {
 
 }  // namespace
 
-ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options)
+ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audience& audience,
+                   ViewOptions options)
     : process_(process),
       hub_(hub),
       blobs_(blobs),
+      audience_(audience),
       options_(options),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
@@ -103,14 +106,16 @@ bool ViewNode::Due(int64_t& last_us) {
 
 void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
   Guarded(process_, channel::kStereoImages, [&] {
-    std::string event = FrameEvent(frame, options_.max_width, blobs_);
-    {
-      std::lock_guard<std::mutex> lock(recent_mutex_);
-      recent_[frame.frame_id] = event;
-      if (recent_.size() > kRecentFrames) recent_.erase(recent_.begin());
+    if (audience_.Watching(PageView::kCalibration)) {
+      std::string event = FrameEvent(frame, options_.max_width, blobs_);
+      {
+        std::lock_guard<std::mutex> lock(recent_mutex_);
+        recent_[frame.frame_id] = event;
+        if (recent_.size() > kRecentFrames) recent_.erase(recent_.begin());
+      }
+      hub_.Publish("frame", std::move(event));
     }
-    hub_.Publish("frame", std::move(event));
-    if (IsNoImage(frame.right)) return;
+    if (!audience_.Watching(PageView::kDepth) || IsNoImage(frame.right)) return;
     std::shared_ptr<const Rectification> rect;
     {
       std::lock_guard<std::mutex> lock(rig_mutex_);
@@ -159,16 +164,23 @@ void ViewNode::PublishView() {
 }
 
 template <class Msg>
-void ViewNode::SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage) {
+void ViewNode::SubscribeSampled(const char* channel, std::initializer_list<PageView> views, int64_t& last_us,
+                                NewestFirst<Msg>& stage) {
+  auto watched = [this, views = std::vector<PageView>(views)] {
+    for (PageView view : views)
+      if (audience_.Watching(view)) return true;
+    return false;
+  };
   process_.SubscribeSampled<Msg>(
-      channel, [this, &last_us] { return Due(last_us); }, [&stage](const Msg& msg) { stage.Offer(msg); },
+      channel, [this, watched, &last_us] { return watched() && Due(last_us); },
+      [&stage](const Msg& msg) { stage.Offer(msg); },
       2);  // LCM's queue holds two big messages at most: the stage takes the newest
 }
 
 void ViewNode::Start() {
   const bool live = !process_.file_input();
   auto received = [this] { return process_.file_input() ? process_.Now() : WallMicros(); };
-  SubscribeSampled(channel::kStereoImages, last_frame_us_, frames_);
+  SubscribeSampled(channel::kStereoImages, {PageView::kCalibration, PageView::kDepth}, last_frame_us_, frames_);
   process_.Subscribe<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
   process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
@@ -180,8 +192,8 @@ void ViewNode::Start() {
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(StereoRigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });
-  SubscribeSampled(channel::kStereoDisparity, last_disparity_us_, disparities_);
-  SubscribeSampled(channel::kStereoCloudFiltered, last_cloud_us_, clouds_);
+  SubscribeSampled(channel::kStereoDisparity, {PageView::kDepth}, last_disparity_us_, disparities_);
+  SubscribeSampled(channel::kStereoCloudFiltered, {PageView::kDepth}, last_cloud_us_, clouds_);
   process_.Subscribe<widestereo::cloud_stats_t>(channel::kCloudStats, [this, received](const auto& m) {
     board_.Add(m, received());
     hub_.Publish("cloud_stats", CloudStatsEvent(m));

@@ -16,7 +16,9 @@
 // over: one that arrives within 1 / image_hz of the last shown (live, not
 // even decoded: Process::SubscribeSampled), or is replaced by a newer one
 // before its thread took it, is counted as skipped on its channel. From a
-// file:// log everything runs in line.
+// file:// log everything runs in line. A view's frames are made only while
+// some browser shows that view (view/audience.h); the others are skipped
+// undecoded, as sampled ones are.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file); sent signed, and only with the rig key.
@@ -32,6 +34,7 @@
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
+#include "view/audience.h"
 #include "view/blob_store.h"
 #include "view/event_hub.h"
 #include "view/page_events.h"
@@ -58,7 +61,7 @@ Rectification ShownRectification(const StereoRig& rig, int max_width);
 
 class ViewNode {
  public:
-  ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options);
+  ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audience& audience, ViewOptions options);
   ~ViewNode();
 
   // The calibration the depth view rectifies with until a STEREO_CALIBRATION comes.
@@ -75,10 +78,12 @@ class ViewNode {
   static constexpr size_t kRecentFrames = kFramesKept;  // view/page_events.h
 
   bool Due(int64_t& last_us);
-  // Hands a message of `channel` to `stage` when at least 1 / image_hz has
-  // passed since `last_us`; else counts it as skipped.
+  // Hands a message of `channel` to `stage` when a browser shows one of
+  // `views` and at least 1 / image_hz has passed since `last_us`; else
+  // counts it as skipped.
   template <class Msg>
-  void SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage);
+  void SubscribeSampled(const char* channel, std::initializer_list<PageView> views, int64_t& last_us,
+                        NewestFirst<Msg>& stage);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
   void PublishView();
@@ -86,6 +91,7 @@ class ViewNode {
   Process& process_;
   EventHub& hub_;
   BlobStore& blobs_;
+  const Audience& audience_;
   ViewOptions options_;
   StatusBoard board_;
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;

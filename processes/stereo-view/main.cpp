@@ -63,9 +63,10 @@ int main(int argc, char** argv) {
     ws::Process process(cli.options());
     ws::view::EventHub hub;
     ws::view::BlobStore blobs;
-    ws::view::ViewNode node(process, hub, blobs, options);
+    ws::view::Audience audience;
+    ws::view::ViewNode node(process, hub, blobs, audience, options);
     if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
-    ws::view::PageServer server(process, hub, blobs, node, address, port, three_dir);
+    ws::view::PageServer server(process, hub, blobs, audience, node, address, port, three_dir);
     if (!cli.options().quiet)
       std::printf("stereo-view: open http://%s:%d/\n", address == "0.0.0.0" ? "localhost" : address.c_str(), server.port()),
           std::fflush(stdout);

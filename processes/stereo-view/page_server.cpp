@@ -25,11 +25,12 @@ std::string ReadFile(const std::string& path) {
 
 }  // namespace
 
-PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, ViewNode& node,
+PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, Audience& audience, ViewNode& node,
                        const std::string& address, int port, const std::string& three_dir)
     : process_(process),
       hub_(hub),
       blobs_(blobs),
+      audience_(audience),
       node_(node),
       assets_{{"/", {kIndexHtml, "text/html; charset=utf-8"}},
               {"/view.js", {kViewJs, "text/javascript"}},
@@ -79,7 +80,14 @@ void PageServer::Routes() {
     res.set_content(reinterpret_cast<const char*>(blob->bytes.data()), blob->bytes.size(), blob->content_type.c_str());
   });
 
-  server_->Get("/events", [this](const httplib::Request&, httplib::Response& res) {
+  server_->Get("/events", [this](const httplib::Request& req, httplib::Response& res) {
+    Audience::Views views;
+    try {
+      views = Audience::Parse(req.get_param_value("view"));
+    } catch (const std::invalid_argument& e) {
+      res.status = 400;
+      return res.set_content(e.what(), "text/plain");
+    }
     if (++streams_ > kMaxStreams) {
       --streams_;
       res.status = 503;
@@ -89,6 +97,7 @@ void PageServer::Routes() {
     res.set_header("Cache-Control", "no-cache");
     auto cursor = std::make_shared<EventHub::Cursor>();
     auto& browsers = process_.Counters(kBrowserCounters);
+    audience_.Join(views);
     res.set_chunked_content_provider(
         "text/event-stream",
         [this, cursor, &browsers](size_t, httplib::DataSink& sink) {
@@ -102,8 +111,9 @@ void PageServer::Routes() {
           browsers.published += int64_t(events.size());
           return true;
         },
-        [this, cursor, &browsers](bool) {
+        [this, cursor, &browsers, views](bool) {
           browsers.skipped += hub_.Unsent(*cursor);
+          audience_.Leave(views);
           --streams_;
         });
   });

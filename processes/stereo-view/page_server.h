@@ -2,7 +2,9 @@
 // from Debian's libjs-three, the live events by Server-Sent Events, and the
 // page's commands.
 //
-//   GET  /                 the page            GET /events   the event stream
+//   GET  /                 the page
+//   GET  /events?view=V    the event stream of a page showing view V
+//                          (calibration or depth; none: both), 400 for another
 //   GET  /view.js, /view.css, /three.min.js, /OrbitControls.js
 //   GET  /blob/ID          an image or a cloud an event names (view/blob_store.h);
 //                          404 once forgotten
@@ -24,6 +26,7 @@
 
 #include "runtime/process.h"
 #include "static_asset.h"
+#include "view/audience.h"
 #include "view/blob_store.h"
 #include "view/event_hub.h"
 #include "view/view_node.h"
@@ -42,8 +45,8 @@ class PageServer {
   // Reads three.js (throws naming the package when it is missing) and binds
   // to address:port, any free port for 0 (throws when it cannot); serves
   // from a thread of its own.
-  PageServer(Process& process, EventHub& hub, const BlobStore& blobs, ViewNode& node, const std::string& address,
-             int port, const std::string& three_dir);
+  PageServer(Process& process, EventHub& hub, const BlobStore& blobs, Audience& audience, ViewNode& node,
+             const std::string& address, int port, const std::string& three_dir);
   // Closes the streams and stops serving.
   ~PageServer();
   int port() const { return port_; }
@@ -54,6 +57,7 @@ class PageServer {
   Process& process_;
   EventHub& hub_;
   const BlobStore& blobs_;
+  Audience& audience_;
   ViewNode& node_;
   std::vector<std::pair<std::string, StaticAsset>> assets_;  // path, file
   std::unique_ptr<httplib::Server> server_;

@@ -235,6 +235,15 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     assert "/blob/" in src and urllib.request.urlopen(src, timeout=5).headers["Content-Type"] == "image/jpeg"
     with pytest.raises(urllib.error.HTTPError, match="404"):
         urllib.request.urlopen("http://127.0.0.1:%d/blob/999999999" % port, timeout=5)
+    with pytest.raises(urllib.error.HTTPError, match="400"):
+        urllib.request.urlopen("http://127.0.0.1:%d/events?view=everything" % port, timeout=5)
+
+    # While the page shows depth, stereo-view makes no images of the calibration view.
+    calibration_frame = attribute(browser, "#cam-left", "data-frame-id")
+    first = int(attribute(browser, "#disparity-figure", "data-frame-id"))
+    until(lambda: int(attribute(browser, "#disparity-figure", "data-frame-id")) >= first + 10, 60,
+          "ten frames more of the depth view")
+    assert attribute(browser, "#cam-left", "data-frame-id") == calibration_frame
 
     # A second stereo-view on the same port is refused, not handed half the browsers.
     second = bus.start("stereo-view", ["--port", str(port)])

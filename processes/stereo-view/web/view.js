@@ -11,6 +11,7 @@ for (const tab of document.querySelectorAll(".tab")) {
     for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t === tab);
     for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== tab.dataset.view;
     if (tab.dataset.view === "depth") cloudView.resize();
+    connect();  // stereo-view makes only the shown view's images
   });
 }
 
@@ -331,8 +332,12 @@ const cloudView = (() => {
 })();
 
 // ---- the event stream ---------------------------------------------------------
+// One stream, for the view shown: stereo-view makes a view's images,
+// disparities and clouds only while some page shows it.
+let source = null;
 function connect() {
-  const source = new EventSource("events");
+  if (source) source.close();
+  source = new EventSource("events?view=" + document.querySelector(".tab.active").dataset.view);
   const on = (topic, fn) => source.addEventListener(topic, (e) => fn(JSON.parse(e.data)));
   source.onopen = () => { $("#connection").textContent = "live"; $("#connection").className = "on"; };
   source.onerror = () => { $("#connection").textContent = "reconnecting…"; $("#connection").className = "off"; };
