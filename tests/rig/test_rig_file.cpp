@@ -9,11 +9,11 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 
-#include "calib/calib_file.h"
 #include "calib/report.h"
-#include "models/model_registry.h"
 #include "calib/synthetic_rig.h"
+#include "models/model_registry.h"
 #include "opencv_fisheye.h"
+#include "rig/rig_file.h"
 #include "test_support.h"
 
 namespace {
@@ -47,9 +47,8 @@ CameraModel SampleCamera(ModelKind model, int variant) {
   return BarrelTestCamera(variant);
 }
 
-CalibrationFile SampleFile(ModelKind model) {
-  CalibrationFile f;
-  f.model = model;
+Rig SampleRig(ModelKind model) {
+  Rig f;
   f.left = SampleCamera(model, 0);
   f.right = SampleCamera(model, 1);
   f.left_rms = 0.1234;
@@ -80,14 +79,14 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.nonradial.tilt, b.nonradial.tilt);
 }
 
-TEST(CalibFile, EveryModelReadsBackBitForBit) {
+TEST(RigFile, EveryModelReadsBackBitForBit) {
   const std::string dir = test::TempDir("calib-file-roundtrip");
   for (const ModelKind model : ModelKinds()) {
-    const CalibrationFile written = SampleFile(model);
+    const Rig written = SampleRig(model);
     const std::string path = dir + "/" + ModelName(model) + ".yaml";
     WriteCalibrationFile(path, written);
-    const CalibrationFile read = ReadCalibrationFile(path);
-    EXPECT_EQ(read.model, model);
+    const Rig read = ReadCalibrationFile(path);
+    EXPECT_EQ(read.kind(), model);
     ExpectSameCamera(read.left, written.left);
     ExpectSameCamera(read.right, written.right);
     EXPECT_EQ(read.left_rms, written.left_rms);
@@ -100,13 +99,13 @@ TEST(CalibFile, EveryModelReadsBackBitForBit) {
 }
 
 // A camera with a non-radial field (models/nonradial_field.h) keeps it.
-TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
+TEST(RigFile, ANonRadialFieldReadsBackBitForBit) {
   const std::string path = test::TempDir("calib-file-field") + "/field.yaml";
-  CalibrationFile written = SampleFile(ModelKind::kBsplineTheta);
+  Rig written = SampleRig(ModelKind::kBsplineTheta);
   written.left.nonradial = {5, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(40)};
   for (size_t k = 0; k < 40; ++k) written.left.nonradial.coeffs[k] = 1e-3 * std::sin(0.3 * k);
   WriteCalibrationFile(path, written);
-  const CalibrationFile read = ReadCalibrationFile(path);
+  const Rig read = ReadCalibrationFile(path);
   ExpectSameCamera(read.left, written.left);
   ExpectSameCamera(read.right, written.right);
   EXPECT_TRUE(read.right.nonradial.empty());
@@ -116,13 +115,13 @@ TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
 }
 
 // A sensor tilt (models/sensor_tilt.h) alone, and with a field, reads back.
-TEST(CalibFile, ASensorTiltReadsBackBitForBit) {
+TEST(RigFile, ASensorTiltReadsBackBitForBit) {
   const std::string path = test::TempDir("calib-file-tilt") + "/tilt.yaml";
-  CalibrationFile written = SampleFile(ModelKind::kKb4);
+  Rig written = SampleRig(ModelKind::kKb4);
   written.left.nonradial.tilt = {0.0123, -0.00456};
   written.right.nonradial = {4, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(32, 1e-3), {-0.002, 0.003}};
   WriteCalibrationFile(path, written);
-  const CalibrationFile read = ReadCalibrationFile(path);
+  const Rig read = ReadCalibrationFile(path);
   ExpectSameCamera(read.left, written.left);
   ExpectSameCamera(read.right, written.right);
   EXPECT_EQ(read.left.nonradial.cols, 0);
@@ -130,12 +129,12 @@ TEST(CalibFile, ASensorTiltReadsBackBitForBit) {
 
 // The report calls a model's coefficients what the calibration file does
 // (models/model_kind.h, coeff_key), and holds the same numbers under it.
-TEST(CalibFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
+TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
   const std::string dir = test::TempDir("calib-file-keys");
   std::set<std::string> keys;
   for (const ModelKind model : ModelKinds()) keys.insert(Traits(model).coeff_key);
   for (const ModelKind model : ModelKinds()) {
-    const CalibrationFile written = SampleFile(model);
+    const Rig written = SampleRig(model);
     const std::string path = dir + "/" + ModelName(model) + ".yaml";
     WriteCalibrationFile(path, written);
     cv::FileStorage fs(path, cv::FileStorage::READ);
@@ -155,9 +154,9 @@ TEST(CalibFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
   }
 }
 
-TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
+TEST(RigFile, OpenCvReadsTheMatricesDirectly) {
   const std::string path = test::TempDir("calib-file-opencv") + "/calib.yaml";
-  const CalibrationFile f = SampleFile(ModelKind::kBspline);
+  const Rig f = SampleRig(ModelKind::kBspline);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -179,9 +178,9 @@ TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
 
 // A kb4 file is cv::fisheye's K and D: OpenCV projects with them exactly as
 // the file's model does, rays beyond OpenCV's 90 degrees aside.
-TEST(CalibFile, Kb4LoadsIntoOpenCvFisheye) {
+TEST(RigFile, Kb4LoadsIntoOpenCvFisheye) {
   const std::string path = test::TempDir("calib-file-kb4") + "/kb4.yaml";
-  const CalibrationFile f = SampleFile(ModelKind::kKb4);
+  const Rig f = SampleRig(ModelKind::kKb4);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -204,10 +203,10 @@ struct Damage {
   std::string from, to, field, reason;
 };
 
-TEST(CalibFile, EachDamagedFieldIsNamed) {
+TEST(RigFile, EachDamagedFieldIsNamed) {
   const std::string dir = test::TempDir("calib-file-damage");
   const std::string good = dir + "/good.yaml";
-  WriteCalibrationFile(good, SampleFile(ModelKind::kBspline));
+  WriteCalibrationFile(good, SampleRig(ModelKind::kBspline));
   const std::string text = test::ReadFileText(good);
   ASSERT_NO_THROW(ReadCalibrationFile(good));
   std::vector<Damage> damages = {
@@ -253,9 +252,9 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
   }
 }
 
-TEST(CalibFile, RejectsARotationThatIsNot) {
+TEST(RigFile, RejectsARotationThatIsNot) {
   const std::string path = test::TempDir("calib-file-rotation") + "/calib.yaml";
-  CalibrationFile f = SampleFile(ModelKind::kPoly6);
+  Rig f = SampleRig(ModelKind::kPoly6);
   f.R(0, 0) *= 1.01;
   WriteCalibrationFile(path, f);
   try {
@@ -267,7 +266,7 @@ TEST(CalibFile, RejectsARotationThatIsNot) {
   }
 }
 
-TEST(CalibFile, MissingOrNonYamlFilesSayWhich) {
+TEST(RigFile, MissingOrNonYamlFilesSayWhich) {
   const std::string dir = test::TempDir("calib-file-missing");
   EXPECT_THROW(ReadCalibrationFile(dir + "/none.yaml"), CalibrationFileError);
   Spit(dir + "/garbage.yaml", "%YAML:1.0\n---\nleft: [ unclosed\n");
