@@ -10,10 +10,12 @@
 #include <opencv2/core.hpp>
 
 #include "calib/report.h"
+#include "calib/solved_rig.h"
 #include "calib/synthetic_rig.h"
 #include "models/model_registry.h"
 #include "opencv_fisheye.h"
 #include "rig/rig_file.h"
+#include "runtime/json_file.h"
 #include "test_support.h"
 
 namespace {
@@ -128,29 +130,52 @@ TEST(RigFile, ASensorTiltReadsBackBitForBit) {
 }
 
 // The report calls a model's coefficients what the calibration file does
-// (models/model_kind.h, coeff_key), and holds the same numbers under it.
+// (models/model_kind.h, coeff_key) and holds the same numbers under it, and
+// the same knots: a solve's result of every model written both ways as
+// stereo-calibrate writes them (calib/solved_rig.h's ToRig and the file;
+// calib/report.h's StereoReport and runtime/json_file.h), then read back.
 TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
-  const std::string dir = test::TempDir("calib-file-keys");
+  const std::string dir = test::TempDir("rig-file-keys");
   std::set<std::string> keys;
   for (const ModelKind model : ModelKinds()) keys.insert(Traits(model).coeff_key);
   for (const ModelKind model : ModelKinds()) {
-    const Rig written = SampleRig(model);
-    const std::string path = dir + "/" + ModelName(model) + ".yaml";
-    WriteCalibrationFile(path, written);
-    cv::FileStorage fs(path, cv::FileStorage::READ);
-    CameraCalibration camera;
-    camera.name = "left";
-    camera.model = written.left;
-    const Json report = CameraReport(camera);
-    EXPECT_EQ(report["model"], static_cast<std::string>(fs["left"]["model"])) << model;
-    for (const std::string& key : keys)
-      EXPECT_EQ(!fs["left"][key].empty(), report.contains(key)) << model << ": " << key;
-    const std::string key = Traits(model).coeff_key;
-    ASSERT_TRUE(report.contains(key)) << model;
-    std::vector<double> in_file;
-    fs["left"][key] >> in_file;
-    EXPECT_EQ(report[key].get<std::vector<double>>(), in_file) << model;
-    EXPECT_EQ(in_file, written.left.distortion.coeffs) << model;
+    const Rig sample = SampleRig(model);
+    StereoCalibration result;
+    result.model = model;
+    result.left.name = "left";
+    result.left.model = sample.left;
+    result.right.name = "right";
+    result.right.model = sample.right;
+    result.R = sample.R;
+    result.T = sample.T;
+    const std::string yaml = dir + "/" + ModelName(model) + ".yaml";
+    const std::string json = dir + "/" + ModelName(model) + ".json";
+    WriteCalibrationFile(yaml, ToRig(result));
+    WriteJsonFile(json, StereoReport(result));
+
+    const Rig read = ReadCalibrationFile(yaml);
+    cv::FileStorage file(yaml, cv::FileStorage::READ);
+    const nlohmann::json report = nlohmann::json::parse(test::ReadFileText(json));
+    EXPECT_EQ(report["model"], static_cast<std::string>(file["model"])) << model;
+    ASSERT_EQ(report["cameras"].size(), 2u) << model;
+    for (int c = 0; c < 2; ++c) {
+      const nlohmann::json& in_report = report["cameras"][c];
+      const std::string name = in_report["name"].get<std::string>();
+      const cv::FileNode in_file = file[name];
+      const CameraModel& camera = c == 0 ? read.left : read.right;
+      const std::string at = ModelName(model) + " " + name;
+      EXPECT_EQ(in_report["model"], static_cast<std::string>(in_file["model"])) << at;
+      for (const std::string& key : keys)
+        EXPECT_EQ(!in_file[key].empty(), in_report.contains(key)) << at << ": " << key;
+      const std::string key = Traits(model).coeff_key;
+      ASSERT_TRUE(in_report.contains(key)) << at;
+      std::vector<double> coeffs;
+      in_file[key] >> coeffs;
+      EXPECT_EQ(in_report[key].get<std::vector<double>>(), coeffs) << at;
+      EXPECT_EQ(coeffs, camera.distortion.coeffs) << at;
+      EXPECT_EQ(in_report["knots"].get<std::vector<double>>(), camera.distortion.knots) << at;
+      EXPECT_EQ(in_report["degree"].get<int>(), static_cast<int>(in_file["degree"])) << at;
+    }
   }
 }
 
