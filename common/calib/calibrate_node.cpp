@@ -138,7 +138,7 @@ void CalibrateNode::OnCommand(const CommandArgs& args) {
       if (arg.key == "model")
         models = ParseModelList(arg.value);
       else if (arg.key == "knots")
-        calibration.knots = ParseKnots(arg.value);
+        calibration.spline.knots = ParseKnots(arg.value);
       else if (arg.key == "path")
         yaml.name = arg.value;
       else if (arg.key == "report")

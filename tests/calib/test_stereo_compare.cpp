@@ -45,7 +45,7 @@ const Files& RigFiles() {
     rig.R = f.truth_file.R;
     rig.T = f.truth_file.T;
     CalibrationOptions options;
-    options.knots = 13;
+    options.spline.knots = 13;
     options.covariance = false;
     options.cv_folds = 0;
     f.calibration_file = ToRig(CalibrateStereo(MakeSyntheticRig(rig).data, options));
