@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
     return argc == 2 ? 0 : 2;
   }
   try {
-    const ws::StereoRig rig = ws::StereoRigFromFile(argv[1]);
+    const ws::Rig rig = ws::StereoRigFromFile(argv[1]);
     const ws::Camera left(rig.left), right(rig.right);
     const Eigen::Vector2d centre((rig.left.image_width - 1) / 2.0, (rig.left.image_height - 1) / 2.0);
     const Eigen::Vector3d point = 2.0 * left.Unproject(centre).value();
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
     const Eigen::Vector3d back =
         ws::TriangulatePixels(left, right, rig.R, rig.T, in_left, in_right).value();
     const ws::Rectification rect = ws::BuildRectification(rig);
-    std::printf("%s: %s, baseline %.4f m\n", argv[1], ws::ModelName(rig.left.distortion.kind).c_str(), rig.T.norm());
+    std::printf("%s: %s, baseline %.4f m\n", argv[1], ws::ModelName(rig.kind()).c_str(), rig.T.norm());
     std::printf("point (%.4f, %.4f, %.4f) m: left pixel (%.3f, %.3f), right pixel (%.3f, %.3f)\n",
                 point.x(), point.y(), point.z(), in_left.x(), in_left.y(), in_right.x(), in_right.y());
     std::printf("triangulated back (%.4f, %.4f, %.4f) m, off by %.3g m\n", back.x(), back.y(), back.z(),

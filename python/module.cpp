@@ -17,7 +17,7 @@
 #include "rectify/pair_triangulation.h"
 #include "rectify/ray_triangulation.h"
 #include "rectify/rectification.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_message.h"
 
 namespace py = pybind11;
 
@@ -111,7 +111,7 @@ struct PyRig {
     widestereo::stereo_calibration_t msg;
     if (msg.decode(data.data(), 0, int(data.size())) != int(data.size()))
       throw std::invalid_argument("not an encoded stereo_calibration_t");
-    const StereoRig stereo = StereoRigFromMessage(msg);
+    const Rig stereo = RigFromMessage(msg);
     PyRig out;
     out.rig.format = "message";
     out.rig.left = std::make_shared<WidestereoProjection>(stereo.left);
@@ -129,13 +129,13 @@ struct PyRig {
     options.mode = ParseRectificationMode(mode);
     options.focal_scale = focal_scale;
     if (size) options.size = cv::Size(size->first, size->second);
-    const StereoRig stereo = rig.AsStereoRig();
+    const Rig stereo = rig.AsStereoRig();
     py::gil_scoped_release release;
     return BuildRectification(stereo, options);
   }
 
   py::array_t<double> Triangulate(const Points& left, const Points& right) const {
-    const StereoRig stereo = rig.AsStereoRig();
+    const Rig stereo = rig.AsStereoRig();
     if (left.ndim() != right.ndim() || left.size() != right.size())
       throw std::invalid_argument("left and right pixels must be arrays of the same shape");
     const Points r = right;

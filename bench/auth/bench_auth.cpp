@@ -15,10 +15,11 @@
 #include <sodium.h>
 
 #include "auth/message_auth.h"
-#include "lcm_io/decode.h"
 #include "lcm_io/channels.h"
+#include "lcm_io/decode.h"
 #include "lcm_io/image_codec.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "runtime/wall_clock.h"
 #include "widestereo/command_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
@@ -113,7 +114,7 @@ int main(int argc, char** argv) {
   command.target = "stereo-cloud";
   command.args = {"path=cloud.pcd"};
   command.nargs = 1;
-  widestereo::stereo_calibration_t calibration = ws::MessageFromStereoRig(ws::StereoRigFromFile(calib), 1);
+  widestereo::stereo_calibration_t calibration = ws::MessageFromRig(ws::StereoRigFromFile(calib), 1);
   calibration.view_rms.assign(30, 0.05);  // as after a solve of 30 views
   calibration.nviews = 30;
   std::printf("%d messages of each kind\n", count);

@@ -81,7 +81,7 @@ void AutoKnots(int repeats) {
     double opencv_rms = 0;
     const double opencv_s = OpenCvSeconds(data, repeats, &opencv_rms);
     ws::calib::CalibrationOptions fixed;
-    fixed.knots = 13;
+    fixed.spline.knots = 13;
     fixed.cv_folds = 0;
     const double fixed_s = MedianSeconds(repeats, [&] { ws::calib::CalibrateCamera(data, fixed); });
     ws::calib::CameraCalibration chosen;

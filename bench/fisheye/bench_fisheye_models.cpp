@@ -70,7 +70,7 @@ void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_s
     for (int s = 0; s < 2; ++s) {
       CalibrationOptions options;
       options.model = kind;
-      options.knots = knots;
+      options.spline.knots = knots;
       if (s == 1) {
         options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     ModelCalibrations settings[2];
     for (int s = 0; s < 2; ++s) {
       CalibrationOptions options;
-      options.knots = knots;
+      options.spline.knots = knots;
       if (s == 1) {
         options.outliers = OutlierRule::kSigma;
         options.outlier_sigma = outlier_sigma;

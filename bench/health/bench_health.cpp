@@ -34,9 +34,9 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-ws::StereoRig Turned(const ws::StereoRig& rig, const Eigen::Vector3d& axis, double deg) {
+ws::Rig Turned(const ws::Rig& rig, const Eigen::Vector3d& axis, double deg) {
   const Eigen::Matrix3d Q = Eigen::AngleAxisd(deg * kDeg, axis).toRotationMatrix();
-  ws::StereoRig turned = rig;
+  ws::Rig turned = rig;
   turned.R = Q * rig.R;
   turned.T = Q * rig.T;
   return turned;
@@ -45,7 +45,7 @@ ws::StereoRig Turned(const ws::StereoRig& rig, const Eigen::Vector3d& axis, doub
 using Pairs = std::vector<std::pair<cv::Mat, cv::Mat>>;
 
 // Every match of the frames through `rig`'s rectification.
-ws::FrameCheck CheckAll(const ws::StereoRig& rig, const Pairs& pairs) {
+ws::FrameCheck CheckAll(const ws::Rig& rig, const Pairs& pairs) {
   const ws::FrameChecker checker(rig, {}, {});
   ws::FrameCheck all;
   for (const auto& [left, right] : pairs) {
@@ -56,7 +56,7 @@ ws::FrameCheck CheckAll(const ws::StereoRig& rig, const Pairs& pairs) {
   return all;
 }
 
-void Cost(const char* name, const ws::StereoRig& rig, const std::pair<cv::Mat, cv::Mat>& pair, int runs) {
+void Cost(const char* name, const ws::Rig& rig, const std::pair<cv::Mat, cv::Mat>& pair, int runs) {
   const ws::FrameChecker checker(rig, {}, {});
   std::vector<double> ms;
   size_t matches = 0;
@@ -70,7 +70,7 @@ void Cost(const char* name, const ws::StereoRig& rig, const std::pair<cv::Mat, c
               *std::max_element(ms.begin(), ms.end()));
 }
 
-void Sweep(const char* scene, const ws::StereoRig& truth, const Pairs& pairs) {
+void Sweep(const char* scene, const ws::Rig& truth, const Pairs& pairs) {
   std::printf("\n%s\n%-6s %7s | %-27s | %-27s | %s\n", scene, "error", "deg", "before: median / p95 |dy| px",
               "after refine: median / p95", "refined R from the truth, deg");
   const ws::Rectification true_rect = ws::BuildRectification(truth);
@@ -78,7 +78,7 @@ void Sweep(const char* scene, const ws::StereoRig& truth, const Pairs& pairs) {
   std::printf("%-6s %7s | %12.3f / %-12.3f |\n", "none", "", exact.median_abs, exact.p95_abs);
   for (const auto& [name, axis] : {std::pair{"pitch", Eigen::Vector3d::UnitX()}, std::pair{"roll", Eigen::Vector3d::UnitZ()}})
     for (double deg : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 1.0}) {
-      const ws::StereoRig wrong = Turned(truth, axis, deg);
+      const ws::Rig wrong = Turned(truth, axis, deg);
       const ws::FrameCheck before = CheckAll(wrong, pairs);
       const ws::DyFigures fb = ws::ComputeDyFigures(before.dy, true_rect.size, {});
       const ws::Rectification rect = ws::BuildRectification(wrong);
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   }
   const ws::SimConfig sim = ws::DefaultSimConfig();
   const ws::Simulator simulator(sim);
-  const ws::StereoRig truth = ws::TrueStereoRig(sim);
+  const ws::Rig truth = ws::TrueStereoRig(sim);
   const int first_wall = int(sim.board->poses);
   Pairs wall;
   for (int f = first_wall; f < first_wall + 3; ++f) wall.push_back(simulator.Render(f));

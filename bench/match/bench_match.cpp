@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(left, 0);
   frame.right = ws::MatToImage(right, 0);
-  const ws::StereoRig rig = ws::TrueStereoRig(sim);
+  const ws::Rig rig = ws::TrueStereoRig(sim);
   const ws::Rectification rect = ws::BuildRectification(rig);
   std::printf("%dx%d pair, median of %d alternating runs; ratios against bare OpenCV\n", left.cols, left.rows,
               runs);

@@ -35,7 +35,7 @@ void Compare(const char* name, const ws::SimConfig& sim, int runs) {
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(left, 0);
   frame.right = ws::MatToImage(right, 0);
-  const ws::StereoRig rig = ws::TrueStereoRig(sim);
+  const ws::Rig rig = ws::TrueStereoRig(sim);
   ws::RectifyOptions options[2];
   options[0].mode = ws::RectificationMode::kLatLon;
   options[1].mode = ws::RectificationMode::kPinhole;

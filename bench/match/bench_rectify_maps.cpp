@@ -25,11 +25,11 @@ using ws::bench::Milliseconds;
 
 namespace {
 
-ws::StereoRig TheiaRig(const std::string& kind) {
+ws::Rig TheiaRig(const std::string& kind) {
   const ws::SimConfig sim = ws::ParseSimConfig(
       "rig: {baseline: 0.3, left: {lens: theia, fit: " + kind + "}}\nscene: {wall: {frames: 1}}\n",
       "bench_rectify_maps", ".");
-  ws::StereoRig rig;
+  ws::Rig rig;
   rig.left = rig.right = sim.left;
   rig.T = Eigen::Vector3d(sim.T[0], sim.T[1], sim.T[2]);
   return rig;
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   }
   std::printf("maps for both cameras, 1280x960, median of %d alternating runs\n", runs);
   for (const std::string kind : {"bspline", "poly6", "poly12"}) {
-    const ws::StereoRig rig = TheiaRig(kind);
+    const ws::Rig rig = TheiaRig(kind);
     std::vector<double> ours, opencv;
     for (int run = 0; run < runs; ++run) {
       ours.push_back(Milliseconds([&] { ws::BuildRectification(rig); }));

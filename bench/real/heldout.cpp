@@ -17,10 +17,10 @@
 #include <lcm/lcm-cpp.hpp>
 #include <nlohmann/json.hpp>
 
-#include "calib/calib_file.h"
 #include "calib/heldout.h"
 #include "lcm_io/channels.h"
 #include "opencv_fisheye_fit.h"
+#include "rig/rig_file.h"
 #include "widestereo/stereo_corners_t.hpp"
 
 namespace {
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
     const StereoData test = ReadCornersLog(test_log);
     const CameraData* tests[2] = {&test.left, &test.right};
     if (!calib.empty()) {
-      const CalibrationFile file = ReadCalibrationFile(calib);
+      const ws::Rig file = ws::ReadCalibrationFile(calib);
       const ws::CameraModel* models[2] = {&file.left, &file.right};
       for (int c = 0; c < (file.mono ? 1 : 2); ++c)
         Print(tests[c]->name, FitHeldOutViews(*models[c], *tests[c], 6, WarpFromReport(report, c, test)));

@@ -36,8 +36,8 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "calib/calib_file.h"
 #include "lcm_io/channels.h"
+#include "rig/rig_file.h"
 #include "sim/simulator.h"
 #include "sim/truth_calibration.h"
 #include "widestereo/command_t.hpp"
@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
   if (source.empty()) source = "sim:" + sim_path;
   if (calib.empty()) {
     calib = out + "/true-calibration.yaml";
-    ws::calib::WriteCalibrationFile(calib, ws::TrueCalibration(ws::Simulator(sim).Truth()));
+    ws::WriteCalibrationFile(calib, ws::TrueStereoRig(ws::Simulator(sim).Truth()));
   }
 
   const std::string url = "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 10000) +

@@ -18,17 +18,17 @@
 namespace ws::calib {
 
 void CheckOptions(const CalibrationOptions& options) {
-  if (options.knots != kAutoKnots && (options.knots < 2 || options.knots > 64))
-    throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
-                           std::to_string(options.knots));
-  if (Traits(options.model).spline && options.knots == kAutoKnots && options.cv_folds < 2)
+  const SplineOptions& spline = options.spline;
+  if (spline.knots && (*spline.knots < 2 || *spline.knots > 64))
+    throw CalibrationError("the B-spline needs 2 to 64 knots, not " + std::to_string(*spline.knots));
+  if (Traits(options.model).spline && !spline.knots && options.cv_folds < 2)
     throw CalibrationError("--knots auto needs cross-validation (at least 2 folds)");
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
-  if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
+  if (!(spline.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
 }
 
-int ParseKnots(const std::string& value) {
-  if (value == "auto") return kAutoKnots;
+std::optional<int> ParseKnots(const std::string& value) {
+  if (value == "auto") return std::nullopt;
   size_t used = 0;
   int knots = 0;
   try {

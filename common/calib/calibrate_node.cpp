@@ -7,16 +7,17 @@
 #include <regex>
 #include <sstream>
 
-#include "calib/calib_file.h"
-#include "calib/calib_message.h"
 #include "calib/calib_plots.h"
-#include "calib/calib_publish.h"
 #include "calib/report.h"
 #include "calib/result_message.h"
+#include "calib/solved_rig.h"
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
 #include "models/model_registry.h"
+#include "rig/publish_calibration.h"
+#include "rig/rig_file.h"
 #include "runtime/escaped.h"
+#include "runtime/json_file.h"
 #include "runtime/output_folder.h"
 #include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
@@ -137,7 +138,7 @@ void CalibrateNode::OnCommand(const CommandArgs& args) {
       if (arg.key == "model")
         models = ParseModelList(arg.value);
       else if (arg.key == "knots")
-        calibration.knots = ParseKnots(arg.value);
+        calibration.spline.knots = ParseKnots(arg.value);
       else if (arg.key == "path")
         yaml.name = arg.value;
       else if (arg.key == "report")
@@ -239,12 +240,12 @@ void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::stri
                                const std::string& json) {
   const bool several = results.solved.size() + results.failed.size() > 1;
   if (!yaml.empty()) {
-    WriteCalibrationFile(yaml, ToCalibrationFile(Chosen(results)));
+    WriteCalibrationFile(yaml, ToRig(Chosen(results)));
     process_.log().Info("wrote " + yaml);
     if (several)
       for (const StereoCalibration& result : results.solved) {
         const std::string path = ModelFilePath(yaml, result.model);
-        WriteCalibrationFile(path, ToCalibrationFile(result));
+        WriteCalibrationFile(path, ToRig(result));
         process_.log().Info("wrote " + path);
       }
   }

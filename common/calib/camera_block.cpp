@@ -14,8 +14,8 @@ namespace {
 // Corners may not wander past this many times r_max during a solve.
 constexpr double kMaxRadiusFactor = 1.5;
 
-CalibrationSetup SetupFor(const CalibrationOptions& options, double r_max) {
-  return CalibrationSetup{r_max, options.knots - 1, options.degree};
+CalibrationSetup SetupFor(const SplineOptions& spline, double r_max) {
+  return CalibrationSetup{r_max, spline.knots.value() - 1, spline.degree};
 }
 
 // The estimated coefficients of the spline `to` whose D(r) is closest to
@@ -38,16 +38,16 @@ std::vector<double> RefitSpline(const CameraBlock& from, const Spline& to, doubl
 
 }  // namespace
 
-CameraBlock PinholeBlock(ModelKind kind, const CalibrationOptions& options, double fx,
-                         double fy, double cx, double cy) {
-  CameraBlock camera(MakeCalibrationModel(kind, SetupFor(options, 1.0)));
+CameraBlock PinholeBlock(ModelKind kind, const SplineOptions& spline, double fx, double fy, double cx,
+                         double cy) {
+  CameraBlock camera(MakeCalibrationModel(kind, SetupFor(spline, 1.0)));
   camera.intrinsics = {fx, fy, cx, cy, 0, 0};
   camera.coeffs.assign(std::visit([](const auto& m) { return m.NumCoeffs(); }, camera.model), 0.0);
   camera.pinhole_only = true;
   return camera;
 }
 
-CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max) {
+CameraBlock ForField(const CameraBlock& camera, const SplineOptions& spline, double r_max) {
   CameraBlock out = camera;
   out.fixed = false;
   out.pinhole_only = false;
@@ -57,16 +57,16 @@ CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& option
       [&](const auto& model) {
         using Model = std::decay_t<decltype(model)>;
         if constexpr (kIsBspline<Model>) {
-          const Model spline = Model::ForCalibration(SetupFor(options, r_max));
-          out.coeffs = RefitSpline(camera, spline, r_max);
+          const Model to = Model::ForCalibration(SetupFor(spline, r_max));
+          out.coeffs = RefitSpline(camera, to, r_max);
           out.coeffs.insert(out.coeffs.end(), camera.coeffs.begin() + model.NumCoeffs(),
                             camera.coeffs.end());  // the field stays as it was
-          out.model = spline;
-          out.prior_weight = SmoothnessWeight(options.smoothness, camera.intrinsics[kFx], r_max);
+          out.model = to;
+          out.prior_weight = SmoothnessWeight(spline.smoothness, camera.intrinsics[kFx], r_max);
         }
       },
       camera.model);
-  if (out.field.grid()) out.field_prior = NonRadialPrior(out, options.smoothness);
+  if (out.field.grid()) out.field_prior = NonRadialPrior(out, spline.smoothness);
   return out;
 }
 

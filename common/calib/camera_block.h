@@ -34,17 +34,19 @@ struct CameraBlock {
   double max_radius = 1e6;
 };
 
-// A pinhole start: the model of `kind` on knots over [0, 1] with zero
-// coefficients, only fx fy cx cy free (pinhole_only). For an angle model
-// (D = 0 over theta) that is the equidistant fisheye, r_pixels = f theta.
-CameraBlock PinholeBlock(ModelKind kind, const CalibrationOptions& options, double fx,
-                         double fy, double cx, double cy);
+// A pinhole start: the model of `kind` on the spline's knots over [0, 1]
+// with zero coefficients, only fx fy cx cy free (pinhole_only). For an angle
+// model (D = 0 over theta) that is the equidistant fisheye, r_pixels = f
+// theta. The spline's knots must be a count (not auto): throws
+// std::bad_optional_access otherwise.
+CameraBlock PinholeBlock(ModelKind kind, const SplineOptions& spline, double fx, double fy, double cx,
+                         double cy);
 
 // The same camera with its model (and, for B-splines, knots) for the field
 // [0, r_max]: the distortion curve carried over by least squares (B-splines;
 // the polynomials need no change), the prior weight and max_radius set for
-// r_max, everything free.
-CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
+// r_max, everything free. The spline's knots as for PinholeBlock.
+CameraBlock ForField(const CameraBlock& camera, const SplineOptions& spline, double r_max);
 
 // The same camera with a non-radial part (nonradial_field.h): a field of
 // cols x rows control points (0 x 0: none) over its image of width x height

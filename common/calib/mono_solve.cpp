@@ -203,7 +203,7 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   };
   auto solve = [&](const CameraBlock& from, bool tilt, int cols, int rows) {
     return SolveCandidate(
-        WithNonRadialField(from, cols, rows, tilt, p.width, p.height, options.smoothness),
+        WithNonRadialField(from, cols, rows, tilt, p.width, p.height, options.spline.smoothness),
         warp_free, options, what + " with " + name(tilt, cols, rows), s);
   };
   if (options.nonradial == FieldRule::kGrid) {
@@ -282,11 +282,11 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
   double best_fit = INFINITY;  // the lowest fitted RMS so far
   int saturated = 0;           // counts in a row that fit about as well as the best fit
   for (int knots : kKnotLadder) {
-    CalibrationOptions o = options;
-    o.knots = knots;
+    SplineOptions spline = options.spline;
+    spline.knots = knots;
     s->poses = poses;
     const std::string trial = what + " with " + std::to_string(knots) + " knots";
-    s->problem = MaskedProblem(ForField(solved, o, r_max), s, &s->inliers, 1);
+    s->problem = MaskedProblem(ForField(solved, spline, r_max), s, &s->inliers, 1);
     SolveSettings settings = StageSettings(options, trial, options.max_iterations);
     settings.tolerance = kRankingTolerance;
     Solve(s->problem, settings);
@@ -327,8 +327,8 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   choosing.covariance = false;
   // --knots auto: the continuation runs on the ladder's first count.
   CalibrationOptions options = choosing;
-  const bool auto_knots = options.knots == kAutoKnots;
-  if (auto_knots) options.knots = kContinuationKnots;
+  const bool auto_knots = !options.spline.knots;
+  if (auto_knots) options.spline.knots = kContinuationKnots;
   s->prepared = Prepare(data, options);
   s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
@@ -342,7 +342,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   const int min_points = options.min_points_per_view;
 
   // A pinhole on the central disc.
-  CameraBlock pinhole = PinholeBlock(options.model, options, init.pinhole.fx, init.pinhole.fy,
+  CameraBlock pinhole = PinholeBlock(options.model, options.spline, init.pinhole.fx, init.pinhole.fy,
                                      init.pinhole.cx, init.pinhole.cy);
   Inliers disc(p.views.size());
   bool everything = false;
@@ -371,12 +371,12 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   // coefficients are global, and the high orders fitted to a small disc
   // explode outside it: one more of them is freed with each disc.
   double r_max = ImageCornerRadius(pinhole, p.width, p.height, 1.0) * options.r_max_margin;
-  CameraBlock camera = ForField(pinhole, options, r_max);
+  CameraBlock camera = ForField(pinhole, options.spline, r_max);
   auto cover = [&](const Inliers& mask) {
     const double needed = FieldRadius(camera, p, mask, s->poses, options);
     if (!(needed > 1.05 * r_max)) return;
     r_max = needed;
-    camera = ForField(camera, options, r_max);
+    camera = ForField(camera, options.spline, r_max);
   };
   const bool global_coeffs = !Traits(KindOf(camera.model)).spline;
   for (int stage = 1; !everything; ++stage) {
@@ -412,7 +412,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   const CameraBlock& solved = s->problem.cameras[0];
   const double needed = FieldRadius(solved, p, s->inliers, s->poses, options);
   if (std::abs(needed - r_max) > 0.05 * r_max) {
-    SolveAll(ForField(solved, options, needed), options, what, s);
+    SolveAll(ForField(solved, options.spline, needed), options, what, s);
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }

@@ -11,7 +11,7 @@
 // B-spline the knots span [0, r_max], r_max the image's corner radius under
 // the camera (times a margin), placed again once the distortion is known.
 // With --knots auto the number of coefficients is then chosen by
-// cross-validation (options.h, kAutoKnots).
+// cross-validation (options.h, SplineOptions::knots empty).
 #pragma once
 
 #include <string>

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "models/model_kind.h"
@@ -53,7 +54,7 @@ enum class WarpRule {
   kEstimated,  // always estimated
 };
 
-// --knots auto (CalibrationOptions::knots = kAutoKnots, the default): the
+// --knots auto (SplineOptions::knots empty, the default): the
 // number of estimated B-spline coefficients is chosen per camera from the
 // data, by K-fold cross-validation (heldout.h): the counts of kKnotLadder are
 // tried in turn, each solved from the last solution's curve, until two in a
@@ -62,7 +63,6 @@ enum class WarpRule {
 // (ChooseWithinNoise). A lens with a sharp knee needs more coefficients than
 // a gentle one; the held-out error, not the fitted one, shows where more
 // stop paying (they only add variance where corners are few).
-inline constexpr int kAutoKnots = 0;
 // The counts tried, about 25 % apart, each from the curve of one solve with
 // kContinuationKnots: the radial continuation (mono_solve.h) needs a curve
 // that can follow the lens while its discs grow, or a knee it cannot follow
@@ -105,15 +105,22 @@ enum class FieldRule {
 };
 inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
 
-struct CalibrationOptions {
-  ModelKind model = ModelKind::kBspline;
+// The B-spline's settings (the spline models; camera_block.h): its knots,
+// degree and smoothness prior.
+struct SplineOptions {
   // Distinct B-spline knots on [0, r_max]: knots - 1 uniform spans, knots + 2
   // basis functions of which `knots` are estimated (alpha_0 = alpha_1 = 0);
-  // kAutoKnots: chosen by cross-validation (above).
-  int knots = kAutoKnots;
+  // empty: --knots auto, chosen by cross-validation (above). The solver
+  // takes a count: auto is settled before (mono_solve.h).
+  std::optional<int> knots;
   int degree = 3;
   // Smoothness prior weight lambda (smoothness_prior.h); 0 switches it off.
   double smoothness = kDefaultSmoothness;
+};
+
+struct CalibrationOptions {
+  ModelKind model = ModelKind::kBspline;
+  SplineOptions spline;
   // r_max: the largest ideal radius the image reaches (its corners) times this.
   double r_max_margin = 1.03;
 
@@ -154,9 +161,9 @@ struct CalibrationOptions {
 // range, min_views below 3).
 void CheckOptions(const CalibrationOptions& options);
 
-// "auto" (kAutoKnots) or a count from 2 to 64 (--knots, knots=N); throws
+// "auto" (empty) or a count from 2 to 64 (--knots, knots=N); throws
 // std::invalid_argument otherwise.
-int ParseKnots(const std::string& value);
+std::optional<int> ParseKnots(const std::string& value);
 
 // --nonradial: "auto", "none", "tilt", "COLSxROWS" or "tilt+COLSxROWS"
 // (kGrid, 4 to 64 each) into options->nonradial, field_tilt, field_cols,

@@ -5,7 +5,6 @@
 
 #include "calib/table2.h"
 #include "models/model_registry.h"
-#include "runtime/atomic_file.h"
 
 namespace ws::calib {
 namespace {
@@ -199,10 +198,6 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
   j["chosen"] = calibrations.solved.empty() ? Json() : Json(ModelName(Chosen(calibrations).model));
   j["solve_seconds"] = seconds;
   return j;
-}
-
-void WriteJsonFile(const std::string& path, const Json& json) {
-  WriteFileAtomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace ws::calib

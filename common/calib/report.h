@@ -59,8 +59,4 @@ Json StereoReport(const StereoCalibration& calibration);
 // {"model": NAME, "error": "..."}; Table II of the solved ones.
 Json ModelsReport(const ModelCalibrations& calibrations);
 
-// Writes JSON (indented) to a temporary file and renames it; throws
-// std::runtime_error when it cannot.
-void WriteJsonFile(const std::string& path, const Json& json);
-
 }  // namespace ws::calib

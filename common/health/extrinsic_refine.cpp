@@ -95,7 +95,7 @@ void RectifiedDyFigures(const Eigen::Matrix3d& R, const Eigen::Vector3d& T, doub
   *p95_abs = Quantile(abs_dy, 0.95);
 }
 
-RefineResult RefineExtrinsics(const StereoRig& rig, double f, const std::vector<RayMatch>& matches,
+RefineResult RefineExtrinsics(const Rig& rig, double f, const std::vector<RayMatch>& matches,
                               cv::Size size, const DyGrid& grid, const RefineOptions& o) {
   RefineResult result;
   result.rig = rig;
@@ -116,7 +116,7 @@ RefineResult RefineExtrinsics(const StereoRig& rig, double f, const std::vector<
   if (!Solve(used, f, o.loss_px, om, t.data(), &result.refused)) return result;
   result.matches_used = int(used.size());
 
-  StereoRig refined = rig;
+  Rig refined = rig;
   refined.R = Rotation(om);
   refined.T = rig.T.norm() * t.normalized();
   result.rotation_change_deg = Eigen::AngleAxisd(refined.R * rig.R.transpose()).angle() * kDeg;

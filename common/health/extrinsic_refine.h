@@ -18,7 +18,7 @@
 #include <opencv2/core.hpp>
 
 #include "health/dy_figures.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 
 namespace ws {
 
@@ -38,7 +38,7 @@ struct RefineOptions {
 struct RefineResult {
   bool applied = false;
   std::string refused;  // why not, when not applied
-  StereoRig rig;        // the refined rig (the input rig when refused)
+  Rig rig;              // the refined rig (the input rig when refused)
   int matches = 0, matches_used = 0;  // given, and kept by the last solve
   double rotation_change_deg = 0, translation_direction_change_deg = 0;
   double dy_median_before = -1, dy_p95_before = -1;  // |dy|, px, over all the matches
@@ -48,7 +48,7 @@ struct RefineResult {
 // `f`: the rectified focal length (px) the matches were measured with;
 // `size`: the rectified image size; `grid`: the regions the spread is
 // counted in.
-RefineResult RefineExtrinsics(const StereoRig& rig, double f, const std::vector<RayMatch>& matches,
+RefineResult RefineExtrinsics(const Rig& rig, double f, const std::vector<RayMatch>& matches,
                               cv::Size size, const DyGrid& grid, const RefineOptions& options);
 
 // Median and 95th percentile of |dy| (px) of the matches under rig (R, T).

@@ -22,7 +22,7 @@ std::string SizeText(cv::Size size) { return std::to_string(size.width) + "x" + 
 
 }  // namespace
 
-FrameChecker::FrameChecker(const StereoRig& rig, const RectifyOptions& rectify, const FeatureOptions& features)
+FrameChecker::FrameChecker(const Rig& rig, const RectifyOptions& rectify, const FeatureOptions& features)
     : rect_(BuildRectification(rig, rectify)),
       features_(features),
       filled_left_(FilledRegion(rect_, true, features.border_px)),

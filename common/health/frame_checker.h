@@ -24,7 +24,7 @@ struct FrameCheck {
 class FrameChecker {
  public:
   // Builds the maps; throws std::invalid_argument as BuildRectification does.
-  FrameChecker(const StereoRig& rig, const RectifyOptions& rectify, const FeatureOptions& features);
+  FrameChecker(const Rig& rig, const RectifyOptions& rectify, const FeatureOptions& features);
 
   // `left`, `right`: the input images, grey (8 or 16 bits) or colour;
   // throws std::invalid_argument when their size is not the calibration's

@@ -5,13 +5,14 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "calib/calib_message.h"
-#include "calib/calib_publish.h"
-#include "calib/report.h"
 #include "health/health_report.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "rectify/calibration_size.h"
+#include "rig/publish_calibration.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
+#include "runtime/json_file.h"
 
 namespace ws {
 namespace {
@@ -34,7 +35,7 @@ HealthNode::HealthNode(Process& process, HealthConfig config)
 
 void HealthNode::Start(const std::string& calib_file) {
   if (!calib_file.empty())
-    SetCalibration(calib::ReadCalibrationFile(calib_file), "calibration file " + calib_file);
+    SetCalibration(ReadCalibrationFile(calib_file), "calibration file " + calib_file);
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration,
                                                        [this](const auto& msg) { OnCalibration(msg); });
   process_.Subscribe<widestereo::stereo_frame_t>(
@@ -49,13 +50,11 @@ void HealthNode::Start(const std::string& calib_file) {
   });
 }
 
-void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::string& source) {
-  const StereoRig rig{file.left, file.right, file.R, file.T};
+void HealthNode::SetCalibration(const Rig& rig, const std::string& source) {
   // A throw here changes nothing.
   calibration_size_ = CalibrationGeometry(rig, config_.rectify, config_.max_image_pixels, source).input_size;
   checker_.reset();
-  rig_ = rig;
-  calibration_ = file;
+  calibration_ = rig;
   source_ = source;
   window_.Clear();
   kept_.clear();
@@ -68,7 +67,7 @@ void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::s
 
 void HealthNode::BuildChecker() {
   const auto start = std::chrono::steady_clock::now();
-  checker_ = FrameChecker(rig_, config_.rectify, config_.features);
+  checker_ = FrameChecker(*calibration_, config_.rectify, config_.features);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const Rectification& rect = checker_->rect();
   process_.log().Info("rectification maps for " + source_ + " built in " + std::to_string(int(ms)) +
@@ -80,7 +79,7 @@ void HealthNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
   if (published_ && msg.utime == published_->utime && std::equal(msg.R, msg.R + 9, published_->R) &&
       std::equal(msg.T, msg.T + 3, published_->T))
     return;  // our own refinement, heard back: in use already
-  SetCalibration(calib::ToCalibrationFile(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
+  SetCalibration(RigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
 void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
@@ -152,7 +151,8 @@ RefineResult HealthNode::Refine() {
   if (!checker_) throw std::runtime_error("refine: no frame checked with " + source_ + " yet");
   std::vector<RayMatch> matches;
   for (const auto& frame : kept_) matches.insert(matches.end(), frame.begin(), frame.end());
-  RefineResult r = RefineExtrinsics(rig_, checker_->rect().f, matches, checker_->rect().size, config_.grid, config_.refine);
+  RefineResult r = RefineExtrinsics(*calibration_, checker_->rect().f, matches, checker_->rect().size, config_.grid,
+                                    config_.refine);
   last_refine_ = r;
   const std::string figures = "median |dy| " + Fixed(r.dy_median_before) + " -> " + Fixed(r.dy_median_after) +
                               " px, 95th percentile " + Fixed(r.dy_p95_before) + " -> " + Fixed(r.dy_p95_after) +
@@ -164,17 +164,17 @@ RefineResult HealthNode::Refine() {
     return r;
   }
   process_.log().Info("refined the extrinsics of " + source_ + ": " + figures);
-  calib::CalibrationFile refined = *calibration_;
+  Rig refined = *calibration_;
   refined.R = r.rig.R;
   refined.T = r.rig.T;
   refined.note = "stereo-health refined R and the direction of T (its length kept; intrinsics and distortion "
                  "of " + source_ + " unchanged) from " + std::to_string(r.matches) + " matches in " +
                  std::to_string(kept_.size()) + " frames: median |dy| " + Fixed(r.dy_median_before) + " -> " +
                  Fixed(r.dy_median_after) + " px";
-  published_ = calib::ToMessage(refined, process_.Now());
-  calib::PublishCalibration(process_, *published_);
+  published_ = MessageFromRig(refined, process_.Now());
+  PublishCalibration(process_, *published_);
   if (!config_.out_yaml.empty()) {
-    calib::WriteCalibrationFile(config_.out_yaml, refined);
+    WriteCalibrationFile(config_.out_yaml, refined);
     process_.log().Info("wrote " + config_.out_yaml);
   }
   SetCalibration(refined, "the refined " + source_);
@@ -190,7 +190,7 @@ void HealthNode::AtEnd() {
   const widestereo::calibration_health_t health = Health(process_.Now(), last_frame_id_);
   const bool refused = config_.refine_at_end && !Refine().applied;
   if (!config_.report_json.empty()) {
-    calib::WriteJsonFile(config_.report_json, HealthReport(health, frames_checked_, last_refine_));
+    WriteJsonFile(config_.report_json, HealthReport(health, frames_checked_, last_refine_));
     process_.log().Info("wrote " + config_.report_json);
   }
   if (refused) process_.Fatal("no refinement from the frames of the log: " + last_refine_->refused);

@@ -23,11 +23,11 @@
 #include <string>
 #include <vector>
 
-#include "calib/calib_file.h"
 #include "health/extrinsic_refine.h"
 #include "health/frame_checker.h"
 #include "health/verdict.h"
 #include "lcm_io/image_codec.h"
+#include "rig/rig.h"
 #include "runtime/command_dispatcher.h"
 #include "runtime/process.h"
 #include "widestereo/calibration_health_t.hpp"
@@ -60,7 +60,7 @@ class HealthNode {
  private:
   // Throws std::invalid_argument for a calibration larger than
   // config.max_image_pixels, or that cannot be rectified, keeping the one before.
-  void SetCalibration(const calib::CalibrationFile& file, const std::string& source);
+  void SetCalibration(const Rig& rig, const std::string& source);
   // The maps of the calibration in use, for its first frame.
   void BuildChecker();
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
@@ -76,8 +76,7 @@ class HealthNode {
   Process& process_;
   const CommandDispatcher commands_;
   HealthConfig config_;
-  std::optional<calib::CalibrationFile> calibration_;
-  StereoRig rig_;
+  std::optional<Rig> calibration_;
   cv::Size calibration_size_;
   std::optional<FrameChecker> checker_;  // once a frame of calibration_size_ came
   std::string source_;

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "calib/calib_file.h"
 #include "interop/kalibr_camchain.h"
 #include "interop/mrcal_cameramodel.h"
 #include "interop/opencv_stereo_file.h"
+#include "rig/rig_file.h"
 
 namespace ws {
 namespace {
@@ -24,7 +24,7 @@ bool HasLineStartingWith(const std::string& path, const std::string& prefix) {
 }
 
 AnyRig FromCalibrationFile(const std::string& path) {
-  const calib::CalibrationFile file = calib::ReadCalibrationFile(path);
+  const Rig file = ReadCalibrationFile(path);
   AnyRig rig;
   rig.format = "widestereo";
   rig.mono = file.mono;
@@ -45,7 +45,7 @@ AnyRig FromMrcal(const std::string& path) {
   }
   const std::string left_path = path + "/camera-0.cameramodel", right_path = path + "/camera-1.cameramodel";
   if (!std::filesystem::exists(left_path))
-    throw calib::CalibrationFileError(path + ": camera-0.cameramodel: missing (a folder is read as "
+    throw CalibrationFileError(path + ": camera-0.cameramodel: missing (a folder is read as "
                                       "mrcal-calibrate-cameras' output)");
   const MrcalCameraModel left = ReadMrcalCameraModel(left_path);
   rig.left = MrcalCamera(left);
@@ -59,9 +59,9 @@ AnyRig FromMrcal(const std::string& path) {
 
 }  // namespace
 
-StereoRig AnyRig::AsStereoRig() const {
+Rig AnyRig::AsStereoRig() const {
   if (mono) throw std::invalid_argument("a one-camera calibration is not a stereo rig");
-  StereoRig rig;
+  Rig rig;
   for (const auto& [camera, model] : {std::pair{left.get(), &rig.left}, std::pair{right.get(), &rig.right}}) {
     if (!camera->AsCamera())
       throw std::invalid_argument("the camera model " + camera->Name() +
@@ -79,12 +79,12 @@ bool IsRotation(const Eigen::Matrix3d& R) {
 
 AnyRig LoadAnyRig(const std::string& path) {
   const std::filesystem::path p(path);
-  if (!std::filesystem::exists(p)) throw calib::CalibrationFileError(path + ": (file): missing");
+  if (!std::filesystem::exists(p)) throw CalibrationFileError(path + ": (file): missing");
   if (std::filesystem::is_directory(p) || p.extension() == ".cameramodel") return FromMrcal(path);
   if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
   // widestereo's own: its header, or (a file edited by hand) its keys; a
   // file of ours cut short is then refused by our reader, saying so.
-  if (HasLineStartingWith(path, std::string("# ") + calib::kCalibrationFileTitle) ||
+  if (HasLineStartingWith(path, std::string("# ") + kCalibrationFileTitle) ||
       (HasLineStartingWith(path, "left:") && HasLineStartingWith(path, "model:")))
     return FromCalibrationFile(path);
   return ReadOpenCvCalibration(path);

@@ -2,7 +2,7 @@
 // reads, for comparing it with another (stereo-compare) and using it from
 // Python:
 //
-//   widestereo  the calibration file (calib/calib_file.h)
+//   widestereo  the calibration file (rig/rig_file.h)
 //   mrcal       a .cameramodel (one camera), or a folder holding
 //               camera-0.cameramodel and camera-1.cameramodel (a pair, as
 //               mrcal-calibrate-cameras writes them)          mrcal_cameramodel.h
@@ -24,7 +24,7 @@
 #include <Eigen/Core>
 
 #include "interop/camera_projection.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 
 namespace ws {
 
@@ -38,14 +38,14 @@ struct AnyRig {
   // The rig as widestereo's models, for rectifying and exporting. Throws
   // std::invalid_argument naming the camera that is another tool's model
   // (mrcal's spline, OpenCV's rational model), and for a one-camera rig.
-  StereoRig AsStereoRig() const;
+  Rig AsStereoRig() const;
 };
 
 // Whether R is a rotation (R^T R = I to 1e-6, det R > 0): what the readers
 // require of a file's R.
 bool IsRotation(const Eigen::Matrix3d& R);
 
-// Reads any of the formats above. Throws calib::CalibrationFileError
+// Reads any of the formats above. Throws CalibrationFileError
 // "FILE: FIELD: REASON".
 AnyRig LoadAnyRig(const std::string& path);
 

@@ -29,33 +29,33 @@ std::string Px(double value) {
 
 struct Cameras {
   std::vector<const CameraModel*> models;
-  StereoRig rig;
+  Rig rig;
 };
 
-Cameras Of(const calib::CalibrationFile& file) {
+Cameras Of(const Rig& file) {
   Cameras c;
   c.models.push_back(&file.left);
   if (!file.mono) c.models.push_back(&file.right);
-  c.rig = StereoRig{file.left, file.right, file.R, file.T};
+  c.rig = file;
   return c;
 }
 
-std::string Header(const calib::CalibrationFile& file, ExportFormat format) {
-  return std::string("widestereo calibration (") + ModelName(file.model) + ") exported by stereo-export --to " +
+std::string Header(const Rig& file, ExportFormat format) {
+  return std::string("widestereo calibration (") + ModelName(file.kind()) + ") exported by stereo-export --to " +
          ExportFormatName(format);
 }
 
-void RequireStereo(const calib::CalibrationFile& file, const std::string& why) {
+void RequireStereo(const Rig& file, const std::string& why) {
   if (file.mono) throw std::invalid_argument("a one-camera calibration " + why);
 }
 
-Rectification PinholeRectification(const StereoRig& rig) {
+Rectification PinholeRectification(const Rig& rig) {
   RectifyOptions options;
   options.mode = RectificationMode::kPinhole;
   return BuildRectification(rig, options);
 }
 
-void OpenCv(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+void OpenCv(const Rig& file, const std::string& out, ExportReport* report) {
   RequireStereo(file, "has no stereo rectification: use --to ros, kalibr or mrcal");
   const Cameras c = Of(file);
   const Rectification rect = PinholeRectification(c.rig);
@@ -67,10 +67,10 @@ void OpenCv(const calib::CalibrationFile& file, const std::string& out, ExportRe
   } else {
     report->exact = false;
     report->max_error_px = kMapErrorPx;
-    report->lines.push_back(ModelName(file.model) + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
+    report->lines.push_back(ModelName(file.kind()) + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
                             "P1, P2, Q and no D; the cameras are maps.yml.gz's remap tables (within " +
                             Px(kMapErrorPx) + ", OpenCV's 1/32 px fixed point)");
-    comments.push_back("NOT EXACT: " + ModelName(file.model) + " is not an OpenCV model; no D: rectify with "
+    comments.push_back("NOT EXACT: " + ModelName(file.kind()) + " is not an OpenCV model; no D: rectify with "
                        "maps.yml.gz (cv::remap), not with K and D");
   }
   WriteOpenCvStereoFile(out + "/stereo.yaml", c.rig, rect, exact, comments);
@@ -78,13 +78,13 @@ void OpenCv(const calib::CalibrationFile& file, const std::string& out, ExportRe
   report->files = {"stereo.yaml", "maps.yml.gz"};
 }
 
-void Ros(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+void Ros(const Rig& file, const std::string& out, ExportReport* report) {
   const Cameras c = Of(file);
   std::vector<std::optional<TargetModel>> exact;
   for (const CameraModel* m : c.models) exact.push_back(ExactTargetModel(*m, ExportFormat::kRos));
   const bool all_exact = std::all_of(exact.begin(), exact.end(), [](const auto& e) { return e.has_value(); });
   if (!all_exact)
-    RequireStereo(file, "of a " + ModelName(file.model) + " camera has neither a ROS model nor a rectification: "
+    RequireStereo(file, "of a " + ModelName(file.kind()) + " camera has neither a ROS model nor a rectification: "
                         "use --to mrcal or kalibr");
   std::optional<Rectification> rect;
   if (!file.mono) rect = PinholeRectification(c.rig);
@@ -113,10 +113,10 @@ void Ros(const calib::CalibrationFile& file, const std::string& out, ExportRepor
       info.distortion_model = "plumb_bob";
       info.D.assign(5, 0.0);
       info.R = cv::Matx33d::eye();
-      comments.push_back("NOT THE RAW CAMERA: " + ModelName(file.model) + " is not a ROS distortion model. This is "
+      comments.push_back("NOT THE RAW CAMERA: " + ModelName(file.kind()) + " is not a ROS distortion model. This is "
                          "the " + info.name + " rectified camera: remap the raw images with maps.yml.gz "
                          "(cv::remap, map1_" + info.name + ", map2_" + info.name + ") and publish those");
-      report->lines.push_back(info.name + ": " + ModelName(file.model) + " is not a ROS distortion model: wrote the "
+      report->lines.push_back(info.name + ": " + ModelName(file.kind()) + " is not a ROS distortion model: wrote the "
                               "rectified camera; remap the raw images with maps.yml.gz first (within " +
                               Px(kMapErrorPx) + ")");
     }
@@ -131,7 +131,7 @@ void Ros(const calib::CalibrationFile& file, const std::string& out, ExportRepor
   }
 }
 
-void Kalibr(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+void Kalibr(const Rig& file, const std::string& out, ExportReport* report) {
   const Cameras c = Of(file);
   std::vector<CameraModel> fitted(c.models.size());
   std::vector<KalibrCamera> cameras;
@@ -161,7 +161,7 @@ void Kalibr(const calib::CalibrationFile& file, const std::string& out, ExportRe
   report->files = {"camchain.yaml"};
 }
 
-void Mrcal(const calib::CalibrationFile& file, const std::string& out, ExportReport* report) {
+void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
   const Cameras c = Of(file);
   for (size_t i = 0; i < c.models.size(); ++i) {
     const CameraModel& m = *c.models[i];
@@ -199,7 +199,7 @@ void Mrcal(const calib::CalibrationFile& file, const std::string& out, ExportRep
 
 }  // namespace
 
-ExportReport ExportCalibration(const calib::CalibrationFile& file, ExportFormat format,
+ExportReport ExportCalibration(const Rig& file, ExportFormat format,
                                const std::string& out) {
   std::error_code error;
   std::filesystem::create_directories(out, error);

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "calib/calib_file.h"
 #include "interop/exact_model.h"
+#include "rig/rig_file.h"
 
 namespace ws {
 
@@ -35,7 +35,7 @@ struct ExportReport {
 // Creates `out` when missing. Throws std::invalid_argument when the format
 // cannot hold the calibration at all (a one-camera file has no stereo
 // rectification) and std::runtime_error when a file cannot be written.
-ExportReport ExportCalibration(const calib::CalibrationFile& file, ExportFormat format,
+ExportReport ExportCalibration(const Rig& file, ExportFormat format,
                                const std::string& out);
 
 }  // namespace ws

@@ -7,15 +7,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "calib/calib_file.h"
 #include "interop/number_text.h"
+#include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
-
-using calib::CalibrationFileError;
 
 class Reader {
  public:

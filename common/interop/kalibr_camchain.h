@@ -25,7 +25,7 @@
 
 namespace ws {
 
-// cam0 (and cam1 when present). Throws calib::CalibrationFileError
+// cam0 (and cam1 when present). Throws CalibrationFileError
 // "FILE: FIELD: REASON", e.g. for a camera model other than pinhole or a
 // distortion model other than radtan, equidistant and none.
 AnyRig ReadKalibrCamchain(const std::string& path);

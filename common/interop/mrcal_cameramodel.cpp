@@ -7,18 +7,16 @@
 
 #include <Eigen/Geometry>
 
-#include "calib/calib_file.h"
 #include "interop/foreign_camera.h"
 #include "interop/mrcal_spline.h"
 #include "interop/number_text.h"
 #include "interop/opencv_lens.h"
 #include "interop/python_literal.h"
+#include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
 
 namespace ws {
 namespace {
-
-using calib::CalibrationFileError;
 
 // mrcal's own files, optimization_inputs and all, are about a megabyte.
 constexpr uintmax_t kMaxFileBytes = 64 << 20;

@@ -29,7 +29,7 @@ struct MrcalCameraModel {
   int width = 0, height = 0;
 };
 
-// Throws calib::CalibrationFileError "FILE: FIELD: REASON" for a file that is
+// Throws CalibrationFileError "FILE: FIELD: REASON" for a file that is
 // not one, a missing field, a wrong count or a number that is not finite.
 MrcalCameraModel ReadMrcalCameraModel(const std::string& path);
 

@@ -4,16 +4,14 @@
 
 #include <opencv2/core/eigen.hpp>
 
-#include "calib/calib_file.h"
 #include "interop/foreign_camera.h"
 #include "interop/opencv_lens.h"
+#include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
-
-using calib::CalibrationFileError;
 
 cv::Mat Row(const std::vector<double>& values) { return cv::Mat(values, true).reshape(1, 1); }
 
@@ -100,7 +98,7 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
 
 }  // namespace
 
-void WriteOpenCvStereoFile(const std::string& path, const StereoRig& rig, const Rectification& rect,
+void WriteOpenCvStereoFile(const std::string& path, const Rig& rig, const Rectification& rect,
                            const std::optional<TargetModel> exact[2],
                            const std::vector<std::string>& comments) {
   cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);

@@ -35,14 +35,14 @@ namespace ws {
 
 // Writes stereo.yaml as above; exact[i] is camera i's OpenCV model, when it
 // has one (D only when both have). Throws std::runtime_error when it cannot.
-void WriteOpenCvStereoFile(const std::string& path, const StereoRig& rig, const Rectification& rect,
+void WriteOpenCvStereoFile(const std::string& path, const Rig& rig, const Rectification& rect,
                            const std::optional<TargetModel> exact[2],
                            const std::vector<std::string>& comments);
 
 // Writes both cameras' fixed-point remap tables (a .gz path: compressed).
 void WriteRectificationMaps(const std::string& path, const Rectification& rect);
 
-// Throws calib::CalibrationFileError "FILE: FIELD: REASON".
+// Throws CalibrationFileError "FILE: FIELD: REASON".
 AnyRig ReadOpenCvCalibration(const std::string& path);
 
 }  // namespace ws

@@ -9,6 +9,7 @@
 #include "lcm_io/image_codec.h"
 #include "match/match_region.h"
 #include "rectify/calibration_size.h"
+#include "rig/rig_message.h"
 #include "view/disparity_colour.h"
 
 namespace ws {
@@ -90,13 +91,13 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
 
 MatchNode::~MatchNode() { Drain(); }
 
-void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
+void MatchNode::SetRig(const Rig& rig, const std::string& source) {
   auto geometry = std::make_shared<const Rectification>(
       CalibrationGeometry(rig, config_.rectify, config_.max_image_pixels, source));
   const cv::Size size = geometry->input_size;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
-    rig_ = std::make_shared<const StereoRig>(rig);
+    rig_ = std::make_shared<const Rig>(rig);
     rect_ = std::move(geometry);
     rect_has_maps_ = false;
     calibration_source_ = source;
@@ -107,7 +108,7 @@ void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
 }
 
 std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_frame_t& frame, std::string* source) {
-  std::shared_ptr<const StereoRig> rig;
+  std::shared_ptr<const Rig> rig;
   Rectification rect;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -134,7 +135,7 @@ std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_fr
 }
 
 void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
-  SetRig(StereoRigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
+  SetRig(RigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
 void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {

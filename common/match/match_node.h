@@ -80,7 +80,7 @@ class MatchNode {
   // `source` names the calibration in log lines and errors ("calibration
   // file calib.yaml", "STEREO_CALIBRATION"). Throws std::invalid_argument
   // for a rig larger than config.max_image_pixels, keeping the one before.
-  void SetRig(const StereoRig& rig, const std::string& source);
+  void SetRig(const Rig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   void OnFrame(const widestereo::stereo_frame_t& frame);
   // Returns when every frame handed over has been published or counted.
@@ -100,7 +100,7 @@ class MatchNode {
   FrameImageWriter disparity_writer_;  // likewise
   DisparityMatcher matcher_;  // used by the matching stage only
   std::mutex rect_mutex_;     // guards rig_, rect_ and calibration_source_
-  std::shared_ptr<const StereoRig> rig_;  // the calibration in use
+  std::shared_ptr<const Rig> rig_;  // the calibration in use
   // Its rectification: without maps until a frame of its size comes.
   std::shared_ptr<const Rectification> rect_;
   bool rect_has_maps_ = false;

@@ -18,7 +18,7 @@ void RequireAtMost(cv::Size size, int64_t max_pixels, const std::string& what) {
 
 }  // namespace
 
-Rectification CalibrationGeometry(const StereoRig& rig, const RectifyOptions& options, int64_t max_pixels,
+Rectification CalibrationGeometry(const Rig& rig, const RectifyOptions& options, int64_t max_pixels,
                                   const std::string& source) {
   const cv::Size size(rig.left.image_width, rig.left.image_height);
   if (size != cv::Size(rig.right.image_width, rig.right.image_height))

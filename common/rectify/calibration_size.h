@@ -20,7 +20,7 @@ namespace ws {
 // std::invalid_argument, naming `source`, when the two sizes differ, when
 // that size or the rectified image's is more than max_pixels
 // (--max-image-pixels), or when the rig cannot be rectified.
-Rectification CalibrationGeometry(const StereoRig& rig, const RectifyOptions& options, int64_t max_pixels,
+Rectification CalibrationGeometry(const Rig& rig, const RectifyOptions& options, int64_t max_pixels,
                                   const std::string& source);
 
 // Throws std::invalid_argument "frame N is WxH but <source> is for WxH" when

@@ -14,7 +14,7 @@ namespace ws {
 namespace {
 
 // Bouguet's rectifying rotations for X_right = R X_left + T.
-void BouguetRotations(const StereoRig& rig, cv::Matx33d* R_left, cv::Matx33d* R_right) {
+void BouguetRotations(const Rig& rig, cv::Matx33d* R_left, cv::Matx33d* R_right) {
   cv::Mat R, T;
   cv::eigen2cv(rig.R, R);
   cv::eigen2cv(rig.T, T);
@@ -81,7 +81,7 @@ cv::Vec4d FieldBox(const Camera& camera, const cv::Matx33d& R_rect) {
 }
 
 // The two cameras' boxes intersected.
-cv::Vec4d CommonBox(const StereoRig& rig, const cv::Matx33d& R_left, const cv::Matx33d& R_right) {
+cv::Vec4d CommonBox(const Rig& rig, const cv::Matx33d& R_left, const cv::Matx33d& R_right) {
   const cv::Vec4d l = FieldBox(Camera(rig.left), R_left), r = FieldBox(Camera(rig.right), R_right);
   return {std::max(l[0], r[0]), std::min(l[1], r[1]), std::max(l[2], r[2]), std::min(l[3], r[3])};
 }
@@ -115,13 +115,13 @@ const char* RectificationModeName(RectificationMode mode) {
   return "auto";
 }
 
-Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options) {
+Rectification BuildRectification(const Rig& rig, const RectifyOptions& options) {
   Rectification rect = RectificationGeometry(rig, options);
   BuildRectificationMaps(rig, &rect);
   return rect;
 }
 
-Rectification RectificationGeometry(const StereoRig& rig, const RectifyOptions& options) {
+Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& options) {
   const Camera left(rig.left), right(rig.right);  // throw for an inconsistent camera
   Rectification rect;
   rect.input_size = cv::Size(rig.left.image_width, rig.left.image_height);
@@ -172,7 +172,7 @@ Rectification RectificationGeometry(const StereoRig& rig, const RectifyOptions& 
   return rect;
 }
 
-void BuildRectificationMaps(const StereoRig& rig, Rectification* rect) {
+void BuildRectificationMaps(const Rig& rig, Rectification* rect) {
   BuildMaps(Camera(rig.left), rect->R_left, *rect, rect->map_left, &rect->valid_left);
   BuildMaps(Camera(rig.right), rect->R_right, *rect, rect->map_right, &rect->valid_right);
   rect->no_image = (rect->valid_left == 0) | (rect->valid_right == 0);
@@ -185,7 +185,7 @@ void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& 
   Remap(right, rect.map_right, region, right_rect);
 }
 
-bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
+bool RectifyPoint(const Rectification& rect, const Rig& rig, bool left,
                   const cv::Point2d& pixel, cv::Point2d* rectified) {
   const Camera camera(left ? rig.left : rig.right);
   const auto ray = camera.Unproject(Eigen::Vector2d(pixel.x, pixel.y));
@@ -215,7 +215,7 @@ cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Poin
   return (left ? rect.R_left : rect.R_right).t() * RectifiedRay(rect, pixel.x, pixel.y);
 }
 
-cv::Vec2d CommonField(const StereoRig& rig) {
+cv::Vec2d CommonField(const Rig& rig) {
   cv::Matx33d R_left, R_right;
   BouguetRotations(rig, &R_left, &R_right);
   const cv::Vec4d box = CommonBox(rig, R_left, R_right);

@@ -35,7 +35,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 
 namespace ws {
 
@@ -74,11 +74,11 @@ struct Rectification {
 
 // Throws std::invalid_argument if the cameras' image sizes differ or the
 // baseline is zero.
-Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options = {});
+Rectification BuildRectification(const Rig& rig, const RectifyOptions& options = {});
 // BuildRectification in two steps: everything but the maps and the masks
 // (cheap: what the size and the checks need), then those.
-Rectification RectificationGeometry(const StereoRig& rig, const RectifyOptions& options = {});
-void BuildRectificationMaps(const StereoRig& rig, Rectification* rect);
+Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& options = {});
+void BuildRectificationMaps(const Rig& rig, Rectification* rect);
 
 // Remaps both images (any type cv::remap takes) with bilinear interpolation;
 // with a region, only its pixels (the rest of both images is 0).
@@ -87,7 +87,7 @@ void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& 
 
 // Where a pixel of the left (right) input image lands in the rectified
 // image; false when the lens model cannot be inverted there.
-bool RectifyPoint(const Rectification& rect, const StereoRig& rig, bool left,
+bool RectifyPoint(const Rectification& rect, const Rig& rig, bool left,
                   const cv::Point2d& pixel, cv::Point2d* rectified);
 
 // The ray of rectified pixel (u, v) in the rectified frame (the same for
@@ -104,6 +104,6 @@ cv::Vec3d RectifiedPixelRay(const Rectification& rect, bool left, const cv::Poin
 
 // The horizontal and vertical extent (radians) of the field both cameras of
 // the rig see, as lat-lon angles psi and phi in Bouguet's rectified frame.
-cv::Vec2d CommonField(const StereoRig& rig);
+cv::Vec2d CommonField(const Rig& rig);
 
 }  // namespace ws

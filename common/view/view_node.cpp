@@ -9,6 +9,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "rectify/calibration_size.h"
+#include "rig/rig_message.h"
 #include "runtime/wall_clock.h"
 #include "view/page_events.h"
 #include "widestereo/command_t.hpp"
@@ -55,7 +56,7 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
 
 ViewNode::~ViewNode() = default;
 
-void ViewNode::SetRig(const StereoRig& rig, const std::string& source) {
+void ViewNode::SetRig(const Rig& rig, const std::string& source) {
   {
     std::lock_guard<std::mutex> lock(rig_mutex_);
     rig_ = rig;
@@ -85,7 +86,7 @@ std::string ViewNode::Command(const std::string& command) {
   return "";
 }
 
-Rectification ShownRectification(const StereoRig& rig, int max_width) {
+Rectification ShownRectification(const Rig& rig, int max_width) {
   RectifyOptions options;
   options.mode = RectificationMode::kAuto;
   options.focal_scale = std::min(1.0, double(max_width) / rig.left.image_width);
@@ -190,7 +191,7 @@ void ViewNode::Start() {
   process_.Subscribe<widestereo::calibration_result_t>(
       channel::kCalibrationResult, [this](const auto& m) { hub_.Publish("result", ResultEvent(m)); });
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
-    SetRig(StereoRigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
+    SetRig(RigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });
   SubscribeSampled(channel::kStereoDisparity, {PageView::kDepth}, last_disparity_us_, disparities_);
   SubscribeSampled(channel::kStereoCloudFiltered, {PageView::kDepth}, last_cloud_us_, clouds_);

@@ -57,7 +57,7 @@ inline constexpr const char* kBrowserCounters = "browsers";
 // The rectification the page shows: `auto` (stereo-match's default), at a
 // focal length scaled so that the rectified images are at most max_width
 // across (rectified that small, not shrunk after).
-Rectification ShownRectification(const StereoRig& rig, int max_width);
+Rectification ShownRectification(const Rig& rig, int max_width);
 
 class ViewNode {
  public:
@@ -65,7 +65,7 @@ class ViewNode {
   ~ViewNode();
 
   // The calibration the depth view rectifies with until a STEREO_CALIBRATION comes.
-  void SetRig(const StereoRig& rig, const std::string& source);
+  void SetRig(const Rig& rig, const std::string& source);
   void Start();
 
   // Whether the page may send commands, and why not ("" when it may).
@@ -96,7 +96,7 @@ class ViewNode {
   StatusBoard board_;
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)
-  std::optional<StereoRig> rig_;
+  std::optional<Rig> rig_;
   std::string rig_source_;
   std::shared_ptr<const Rectification> rect_;
   std::mutex recent_mutex_;  // guards recent_

@@ -3,7 +3,7 @@
 //
 //   #include <widestereo/widestereo.h>
 //
-//   const ws::StereoRig rig = ws::StereoRigFromFile("calib.yaml");
+//   const ws::Rig rig = ws::StereoRigFromFile("calib.yaml");
 //   const ws::Camera left(rig.left);
 //   std::optional<Eigen::Vector3d> ray = left.Unproject({640, 480});
 //
@@ -11,11 +11,12 @@
 // widestereo::widestereo and pkg-config the package widestereo.
 #pragma once
 
-#include "calib/calib_file.h"            // ReadCalibrationFile, WriteCalibrationFile
 #include "interop/any_rig.h"             // LoadAnyRig: mrcal, Kalibr, OpenCV calibrations
 #include "models/camera_model.h"         // CameraModel, Camera: Project, Unproject
 #include "rectify/pair_triangulation.h"  // TriangulatePixels: a point from two raw pixels
 #include "rectify/ray_triangulation.h"   // TriangulateDisparity, RangeChange
 #include "rectify/rectification.h"       // BuildRectification: pinhole and lat-lon maps
-#include "rectify/stereo_rig.h"          // StereoRig from a file or a message
+#include "rig/rig.h"                   // Rig: the calibrated rig, its cameras, R, T
+#include "rig/rig_file.h"              // ReadCalibrationFile, StereoRigFromFile, WriteCalibrationFile
+#include "rig/rig_message.h"           // RigFromMessage, MessageFromRig
 #include "widestereo/messages.hpp"       // every LCM message type (lcm-gen)

@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
                  "Folds of the cross-validation (held-out RMS, --knots auto); 0: none")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
-  app.add_option("--smoothness", calib.smoothness,
+  app.add_option("--smoothness", calib.spline.smoothness,
                  "B-spline smoothness prior weight lambda (0: off)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
   try {
     node.models = ws::calib::ParseModelList(model);
     calib.model = node.models.front();
-    calib.knots = ws::calib::ParseKnots(knots);
+    calib.spline.knots = ws::calib::ParseKnots(knots);
     calib.outliers = ws::calib::ParseOutlierRule(outliers, &calib.outlier_sigma);
     ws::calib::ParseFieldRule(nonradial, &calib);
     calib.board_warp = warp == "on"    ? ws::calib::WarpRule::kEstimated

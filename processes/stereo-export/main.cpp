@@ -11,8 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "calib/calib_file.h"
 #include "interop/export.h"
+#include "rig/rig_file.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const ws::calib::CalibrationFile file = ws::calib::ReadCalibrationFile(in);
+    const ws::Rig file = ws::ReadCalibrationFile(in);
     const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out);
     for (const std::string& line : report.lines) std::printf("%s\n", line.c_str());
     std::printf("%s: %s into %s:", report.exact ? "exact" : "NOT EXACT", format.c_str(), out.c_str());

@@ -6,6 +6,7 @@
 #include "lcm_io/channels.h"
 #include "match/match_node.h"
 #include "rectify/rectify_options.h"
+#include "rig/rig_file.h"
 #include "runtime/max_image_pixels_option.h"
 #include "runtime/process_cli.h"
 

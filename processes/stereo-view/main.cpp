@@ -11,7 +11,7 @@
 #include <string>
 
 #include "page_server.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"
 #include "view/view_node.h"

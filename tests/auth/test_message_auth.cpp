@@ -7,7 +7,8 @@
 
 #include "auth/message_auth.h"
 #include "lcm_io/channels.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "test_support.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
@@ -125,8 +126,8 @@ TEST(MessageAuth, AReplayIsRefusedAlsoAfterTheWindow) {
 
 TEST(MessageAuth, ACalibrationIsSignedOverEveryField) {
   AuthCheck check(Key());
-  ws::StereoRig rig = ws::StereoRigFromFile(ws::test::SourceDir() + "/config/calib/sim-default.yaml");
-  widestereo::stereo_calibration_t calibration = ws::MessageFromStereoRig(rig, kNow);
+  ws::Rig rig = ws::StereoRigFromFile(ws::test::SourceDir() + "/config/calib/sim-default.yaml");
+  widestereo::stereo_calibration_t calibration = ws::MessageFromRig(rig, kNow);
   ws::auth::Sign(Key(), ch::kStereoCalibration, "stereo-calibrate", kNow, calibration);
   auto moved = calibration;
   moved.T[0] += 1e-9;

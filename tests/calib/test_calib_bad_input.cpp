@@ -202,7 +202,7 @@ TEST(CalibBadInput, ImageSizeChangesAndBadOptionsAreRefused) {
   CalibrationOptions options;
   // An unknown model is refused where its name enters (--model, "solve model=").
   ExpectCalibrationError([&] { ParseModelList("fisheye"); }, {"unknown model 'fisheye'"});
-  options.knots = 1;
+  options.spline.knots = 1;
   ExpectCalibrationError([&] { CalibrateStereo(data, options); }, {"2 to 64 knots"});
 
   msg.left.image_width = 640;

@@ -14,7 +14,6 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "calib/calib_file.h"
 #include "calib/calibrate.h"
 #include "calib/corner_import.h"
 #include "calib/heldout.h"
@@ -22,6 +21,7 @@
 #include "detect/corner_refinement.h"
 #include "detect/stereo_corner_finder.h"
 #include "lcm_io/image_codec.h"
+#include "rig/rig_file.h"
 
 namespace {
 
@@ -224,7 +224,7 @@ TEST(RealBabelCalib, ImportedCornersCalibrateAsAOneCameraRig) {
   EXPECT_EQ(report["cameras"][0]["name"], "left");
   EXPECT_EQ(report["cameras"][0]["views"], 18);
   EXPECT_FALSE(report.contains("stereo"));
-  const CalibrationFile file = ReadCalibrationFile(dir + "/mono.yaml");
+  const Rig file = ReadCalibrationFile(dir + "/mono.yaml");
   EXPECT_TRUE(file.mono);
   EXPECT_EQ(file.left.distortion.kind, ModelKind::kBsplineTheta);
   EXPECT_EQ(file.left.image_width, 1280);

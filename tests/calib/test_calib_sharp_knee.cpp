@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <map>
 
-#include "calib/calib_file.h"
 #include "calib_process_support.h"
 #include "calib_test_rigs.h"
+#include "rig/rig_file.h"
 #include "sim/ground_truth.h"
 
 namespace {
@@ -81,7 +81,7 @@ std::map<std::string, KnotRun> RenderDetectCalibrate(const std::string& config,
     const auto run = CalibrateOnce(dir, corners, name, {"--model", "bspline", "--knots", knots});
     EXPECT_EQ(run.exit_code, 0) << run.output;
     if (run.exit_code != 0) continue;
-    const CalibrationFile file = ReadCalibrationFile(dir + "/" + name + ".yaml");
+    const Rig file = ReadCalibrationFile(dir + "/" + name + ".yaml");
     const nlohmann::json report = ReadJson(dir + "/" + name + ".json");
     for (int c = 0; c < 2; ++c) {
       const auto& camera = report["cameras"][c];

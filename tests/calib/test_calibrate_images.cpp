@@ -12,8 +12,8 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "calib/calib_file.h"
 #include "lcm_io/channels.h"
+#include "rig/rig_file.h"
 #include "test_support.h"
 #include "widestereo/process_status_t.hpp"
 #include "widestereo/stereo_calibration_t.hpp"
@@ -82,7 +82,7 @@ TEST(CalibrateImages, ThreeLayoutsGiveTheSameCalibrationAndNameTheImagesWithoutA
     else
       EXPECT_EQ(calibration, reference) << "layout " << int(layout) << " gave another calibration";
   }
-  const ws::calib::CalibrationFile file = ws::calib::ReadCalibrationFile(root + "/0/calib.yaml");
+  const ws::Rig file = ws::ReadCalibrationFile(root + "/0/calib.yaml");
   EXPECT_NEAR(file.T.norm(), 0.083, 0.005);  // 25 mm squares: the rig's 8 cm baseline
 }
 

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "calib/calib_file.h"
 #include "calib_process_support.h"
 #include "calib_test_rigs.h"
+#include "rig/rig_file.h"
 #include "sim/ground_truth.h"
 
 namespace {
@@ -38,7 +38,7 @@ TEST(CalibSimFisheye, RenderedDetectedAndCalibratedRecoversTheTruth) {
     // (the rest is the detected corners' own error, ~0.06 px RMS).
     const auto run = CalibrateOnce(dir, corners, model, {"--model", model, "--knots", "21"});
     ASSERT_EQ(run.exit_code, 0) << run.output;
-    const CalibrationFile file = ReadCalibrationFile(dir + "/" + model + ".yaml");
+    const Rig file = ReadCalibrationFile(dir + "/" + model + ".yaml");
     const nlohmann::json report = ReadJson(dir + "/" + model + ".json");
     const double baseline_error = std::abs(file.T.norm() / true_baseline - 1);
     for (int c = 0; c < 2; ++c) {

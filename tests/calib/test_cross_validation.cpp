@@ -19,8 +19,8 @@ TEST(CrossValidation, AnOverfittingSplineShowsItAndTheChosenOneDoesNot) {
   truth.views = 12;  // few views
   const SyntheticRig rig = MakeSyntheticRig(truth);
   CalibrationOptions overfit;
-  overfit.knots = 31;  // many coefficients, no prior to tame them
-  overfit.smoothness = 0;
+  overfit.spline.knots = 31;  // many coefficients, no prior to tame them
+  overfit.spline.smoothness = 0;
   overfit.covariance = false;
   const CameraCalibration wild = CalibrateCamera(rig.data.left, overfit);
   CalibrationOptions automatic;
@@ -67,7 +67,7 @@ TEST(CrossValidation, CornersPastTheTrainingFieldAreLeftOutAndCounted) {
   }
   ASSERT_LT(lone, data.views.size()) << "no view reaches past the field";
   CalibrationOptions options;
-  options.knots = 13;
+  options.spline.knots = 13;
   options.covariance = false;
   const CameraCalibration result = CalibrateCamera(data, options);
   std::printf("view %zu alone reaches past %.0f px (%zu corners 50 px past it): %d held-out "

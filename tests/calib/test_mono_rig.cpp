@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "calib/calib_file.h"
 #include "calib_process_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "rig/rig_file.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -61,7 +61,7 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
   ASSERT_EQ(report["cameras"].size(), 1u);
   EXPECT_EQ(report["cameras"][0]["name"], "left");
   EXPECT_FALSE(report.contains("stereo"));
-  const CalibrationFile mono = ReadCalibrationFile(dir + "/mono.yaml");
+  const ws::Rig mono = ws::ReadCalibrationFile(dir + "/mono.yaml");
   EXPECT_TRUE(mono.mono);
   // The status says the camera's RMS, not the empty stereo one.
   const auto statuses = ws::test::Messages<widestereo::calibration_status_t>(
@@ -78,7 +78,7 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
   const auto stereo_run = CalibrateOnce(stereo_dir, stereo_corners, "stereo",
                                         {"--model", "poly6", "--nonradial", "none", "--flow", "paper"});
   ASSERT_EQ(stereo_run.exit_code, 0) << stereo_run.output;
-  const CalibrationFile stereo = ReadCalibrationFile(stereo_dir + "/stereo.yaml");
+  const ws::Rig stereo = ws::ReadCalibrationFile(stereo_dir + "/stereo.yaml");
   EXPECT_EQ(report["cameras"][0]["views"], ReadJson(stereo_dir + "/stereo.json")["cameras"][0]["views"]);
   EXPECT_NEAR(mono.left.fx, stereo.left.fx, 1e-6 * stereo.left.fx);
   EXPECT_NEAR(mono.left.cx, stereo.left.cx, 1e-6 * stereo.left.fx);

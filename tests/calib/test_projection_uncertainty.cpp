@@ -36,7 +36,7 @@ TEST(ProjectionUncertainty, PredictsTheSpreadOfRenoisedSolves) {
   truth.noise_px = 0;
   const CameraData exact = MakeSyntheticRig(truth).data.left;
   CalibrationOptions options;
-  options.knots = 13;  // the same model in every solve
+  options.spline.knots = 13;  // the same model in every solve
   const CameraCalibration reference = CalibrateCamera(Renoised(exact, noise, 100), options);
   const ProjectionUncertainty& predicted = reference.uncertainty;
   ASSERT_FALSE(predicted.empty());

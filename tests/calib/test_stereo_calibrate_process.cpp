@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <opencv2/calib3d.hpp>
 
-#include "calib/calib_file.h"
 #include "calib_process_support.h"
 #include "calib_test_rigs.h"
 #include "lcm_io/channels.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "sim/ground_truth.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
@@ -90,7 +90,7 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
   // poly6, poly12 and bspline do so within 0.4 % of each other: which one
   // is chosen follows the folds' small, consistent differences);
   // STEREO_CALIBRATION says the same.
-  const CalibrationFile file = ReadCalibrationFile(dir + "/paper.yaml");
+  const Rig file = ReadCalibrationFile(dir + "/paper.yaml");
   double lowest = INFINITY, chosen = INFINITY;
   for (const auto& row : report["table_ii"]) {
     const double heldout = 0.5 * (row["left_heldout_rms_px"].get<double>() +
@@ -101,11 +101,11 @@ TEST(StereoCalibrateProcess, OpenCvStereoSetNoWorseThanCalibrateCamera) {
   std::printf("chosen %s: held-out %.4f px (lowest %.4f px)\n",
               report["chosen"].get<std::string>().c_str(), chosen, lowest);
   EXPECT_LE(chosen, 1.005 * lowest);
-  EXPECT_EQ(ModelName(file.model), report["chosen"]);
+  EXPECT_EQ(ModelName(file.kind()), report["chosen"]);
   const auto published = ws::test::Messages<widestereo::stereo_calibration_t>(
       ws::test::ReadLog(dir + "/paper.lcmlog"), channel::kStereoCalibration);
   ASSERT_EQ(published.size(), 1u);
-  const StereoRig rig = StereoRigFromMessage(published[0]);  // as stereo-match reads it
+  const Rig rig = RigFromMessage(published[0]);  // as stereo-match reads it
   EXPECT_EQ(rig.left.fx, file.left.fx);
   EXPECT_EQ(rig.right.distortion.coeffs, file.right.distortion.coeffs);
   EXPECT_EQ(rig.T, file.T);
@@ -162,9 +162,9 @@ TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   const nlohmann::json report = ReadJson(dir + "/sim.json");
   PrintTable("Table II, simulator end to end (rendered, detected) [px]", report);
   const StereoData data = ReadCorners(corners);
-  const CalibrationFile file = ReadCalibrationFile(dir + "/sim.yaml");  // the B-spline
+  const Rig file = ReadCalibrationFile(dir + "/sim.yaml");  // the B-spline
   for (const std::string model : {"bspline", "poly6", "poly12"})  // and one file per model
-    EXPECT_EQ(ModelName(ReadCalibrationFile(dir + "/sim." + model + ".yaml").model), model);
+    EXPECT_EQ(ModelName(ReadCalibrationFile(dir + "/sim." + model + ".yaml").kind()), model);
   Eigen::Vector3d true_T(truth.T(0), truth.T(1), truth.T(2));
   Eigen::Matrix3d true_R;
   for (int r = 0; r < 3; ++r)

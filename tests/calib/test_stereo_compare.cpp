@@ -7,11 +7,12 @@
 
 #include <cmath>
 
-#include "calib/calib_file.h"
 #include "calib/calibrate.h"
 #include "calib/projection_diff.h"
+#include "calib/solved_rig.h"
 #include "calib/synthetic_rig.h"
 #include "calib_process_support.h"
+#include "rig/rig_file.h"
 #include "sim/simulator.h"
 #include "sim/truth_calibration.h"
 
@@ -27,7 +28,7 @@ using ws::test::TempDir;
 
 struct Files {
   std::string dir, truth, calibration;
-  CalibrationFile truth_file, calibration_file;
+  Rig truth_file, calibration_file;
 };
 
 // The default simulator rig's truth, and a calibration of synthetic corners
@@ -36,7 +37,7 @@ const Files& RigFiles() {
   static const Files files = [] {
     Files f;
     f.dir = TempDir("stereo-compare");
-    f.truth_file = TrueCalibration(
+    f.truth_file = TrueStereoRig(
         Simulator(LoadSimConfig(SourceDir() + "/config/sim/default.yaml")).Truth());
     SyntheticRigOptions rig;
     rig.left = GaugeNormalized(f.truth_file.left);
@@ -44,10 +45,10 @@ const Files& RigFiles() {
     rig.R = f.truth_file.R;
     rig.T = f.truth_file.T;
     CalibrationOptions options;
-    options.knots = 13;
+    options.spline.knots = 13;
     options.covariance = false;
     options.cv_folds = 0;
-    f.calibration_file = ToCalibrationFile(CalibrateStereo(MakeSyntheticRig(rig).data, options));
+    f.calibration_file = ToRig(CalibrateStereo(MakeSyntheticRig(rig).data, options));
     f.truth = f.dir + "/truth.yaml";
     f.calibration = f.dir + "/calibration.yaml";
     WriteCalibrationFile(f.truth, f.truth_file);
@@ -135,7 +136,7 @@ double CentralRms(const nlohmann::json& camera, const CameraModel& model, double
 
 TEST(StereoCompare, NearTheCentreAPrincipalPointShiftIsARotation) {
   const Files& f = RigFiles();
-  CalibrationFile shifted = f.calibration_file;
+  Rig shifted = f.calibration_file;
   shifted.left.cx += 1.0;
   shifted.right.cx += 1.0;
   const std::string path = f.dir + "/shifted.yaml";
@@ -154,7 +155,7 @@ TEST(StereoCompare, NearTheCentreAPrincipalPointShiftIsARotation) {
 
 TEST(StereoCompare, RefusesCamerasOfAnotherSize) {
   const Files& f = RigFiles();
-  CalibrationFile other = f.calibration_file;
+  Rig other = f.calibration_file;
   other.left.image_width /= 2;
   other.right.image_width /= 2;
   const std::string path = f.dir + "/other.yaml";

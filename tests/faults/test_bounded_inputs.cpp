@@ -17,6 +17,8 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/stereo_frame_t.hpp"
@@ -187,7 +189,7 @@ TEST_P(AbsurdCalibration, MessageIsRefusedAtOnceWithTheReason) {
 TEST_P(AbsurdCalibration, FileIsRefusedAtTheStartWithTheReason) {
   const std::string name = GetParam();
   const std::string dir = TempDir("absurd-calibration-file-" + name);
-  ws::StereoRig rig = ws::StereoRigFromMessage(IdentityCalibration(65536, 4096, 30000, 0.1));
+  ws::Rig rig = ws::RigFromMessage(IdentityCalibration(65536, 4096, 30000, 0.1));
   const std::string calib = dir + "/calib.yaml";
   WriteCalibrationFile(calib, rig);
   const CommandResult r = RunCommand({name, "--calib", calib, "--log-dir", dir, "--in-url", UniqueUdpmUrl(45)}, 60);

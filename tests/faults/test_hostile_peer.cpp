@@ -22,7 +22,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/decode.h"
 #include "match_fixtures.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_message.h"
 #include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
@@ -439,7 +439,7 @@ TEST(HostilePeer, WithTheRigKeyUnsignedCornersNeverEnterTheSession) {
   ASSERT_TRUE(bus.ListenUntil(180, [&] { return Solved(LastCalibrationStatus(bus)); })) << calibrate.Output();
   ASSERT_TRUE(bus.ListenUntil(20, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); }));
   const auto& published = bus.Payloads(ch::kStereoCalibration).back();
-  const ws::StereoRig solved = ws::StereoRigFromMessage(
+  const ws::Rig solved = ws::RigFromMessage(
       ws::DecodeMessage<widestereo::stereo_calibration_t>(published.data(), int(published.size())));
   // The simulated rig's R is the identity (logs/sim-images.truth.yaml).
   const double off_deg = Eigen::AngleAxisd(solved.R).angle() * 180 / M_PI;

@@ -16,7 +16,7 @@
 #include "lcm_io/image_codec.h"
 #include "monitor/status_board.h"
 #include "rectify/calibration_size.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_message.h"
 #include "view/page_events.h"
 
 // Not in an anonymous namespace: each binary uses only its type's overload.
@@ -94,7 +94,7 @@ void Use(const stereo_calibration_t& calibration) {
   // stereo-match and stereo-health check its sizes and geometry before any map.
   ws::RectifyOptions options;
   options.mode = ws::RectificationMode::kAuto;
-  ws::CalibrationGeometry(ws::StereoRigFromMessage(calibration), options, ws::kDefaultMaxImagePixels, "it");
+  ws::CalibrationGeometry(ws::RigFromMessage(calibration), options, ws::kDefaultMaxImagePixels, "it");
 }
 
 // stereo-status shows every status it hears.

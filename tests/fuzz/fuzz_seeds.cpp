@@ -16,13 +16,13 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
-#include "cloud/pcd_io.h"
 #include "auth/message_auth.h"
+#include "cloud/pcd_io.h"
 #include "detect/stereo_corner_finder.h"
 #include "fuzz_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_message.h"
 #include "sim/sim_config.h"
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_result_t.hpp"
@@ -174,12 +174,12 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
 
 void CalibrationSeeds(Seeds& seeds) {
   const ws::SimConfig sim = ws::DefaultSimConfig(0.1);
-  ws::StereoRig rig;
+  ws::Rig rig;
   rig.left = rig.right = sim.left;
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
-  seeds.Message("bspline", ws::MessageFromStereoRig(rig, 1));
+  seeds.Message("bspline", ws::MessageFromRig(rig, 1));
   rig.left.distortion = rig.right.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.004}};
-  stereo_calibration_t poly6 = ws::MessageFromStereoRig(rig, 1);
+  stereo_calibration_t poly6 = ws::MessageFromRig(rig, 1);
   // With the quality figures a solver fills in.
   poly6.rms = 0.06;
   poly6.left.nviews = 2;
@@ -197,7 +197,7 @@ void CalibrationSeeds(Seeds& seeds) {
   field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0), {0.004, -0.003}};
   for (size_t k = 0; k < field.nonradial.coeffs.size(); ++k) field.nonradial.coeffs[k] = 1e-3 * (k % 5);
   rig.left = rig.right = field;
-  seeds.Message("bspline-field", ws::MessageFromStereoRig(rig, 1));
+  seeds.Message("bspline-field", ws::MessageFromRig(rig, 1));
   seeds.Message("bspline-field", ws::MessageFromCameraModel(field, "left"));
 }
 

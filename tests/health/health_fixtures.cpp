@@ -8,9 +8,9 @@
 
 namespace ws::test {
 
-StereoRig RightCameraTurned(const StereoRig& rig, const Eigen::Vector3d& axis, double deg) {
+Rig RightCameraTurned(const Rig& rig, const Eigen::Vector3d& axis, double deg) {
   const Eigen::Matrix3d Q = Eigen::AngleAxisd(deg * M_PI / 180, axis.normalized()).toRotationMatrix();
-  StereoRig turned = rig;
+  Rig turned = rig;
   turned.R = Q * rig.R;
   turned.T = Q * rig.T;
   return turned;

@@ -7,14 +7,14 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 #include "widestereo/calibration_health_t.hpp"
 
 namespace ws::test {
 
 // The calibration with the right camera turned about its own centre by
 // `deg` about its axis (x: pitch, z: roll): X_right = Q (R X_left + T).
-StereoRig RightCameraTurned(const StereoRig& rig, const Eigen::Vector3d& axis, double deg);
+Rig RightCameraTurned(const Rig& rig, const Eigen::Vector3d& axis, double deg);
 
 // The angle (degrees) between two rotations.
 double RotationAngleDeg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);

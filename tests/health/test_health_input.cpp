@@ -8,7 +8,8 @@
 #include "health_fixtures.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "test_support.h"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -62,7 +63,7 @@ TEST(HealthInput, TexturelessAndBlackScenesAreUnknownAndRefuseRefinement) {
 TEST(HealthInput, MalformedAndUnusableMessagesAreCountedAndSkipped) {
   const std::string dir = TempDir("health-bad-input");
   const std::vector<uint8_t> garbage = {1, 2, 3, 4, 5, 6, 7, 8, 9};
-  widestereo::stereo_calibration_t not_a_rotation = ws::MessageFromStereoRig(ws::StereoRigFromFile(kCalibration), 1);
+  widestereo::stereo_calibration_t not_a_rotation = ws::MessageFromRig(ws::StereoRigFromFile(kCalibration), 1);
   not_a_rotation.R[0] = 2;
   widestereo::stereo_calibration_t right_camera_on_the_left = not_a_rotation;  // decodes, cannot rectify
   right_camera_on_the_left.R[0] = 1;

@@ -15,6 +15,8 @@
 #include "health_fixtures.h"
 #include "lcm_io/channels.h"
 #include "match_fixtures.h"
+#include "rig/rig_file.h"
+#include "rig/rig_message.h"
 #include "sim/ground_truth.h"
 #include "sim/truth_calibration.h"
 #include "test_support.h"
@@ -58,7 +60,7 @@ struct Bus {
 TEST(HealthLive, RefineCommandRepairsTheCalibrationAndStereoMatchRebuildsItsMaps) {
   const std::string dir = TempDir("health-live");
   RenderScene("config/sim/wall.yaml", 3, dir, "wall");
-  const ws::StereoRig truth = TrueStereoRig(ws::LoadSimTruth(dir + "/wall.truth.yaml"));
+  const ws::Rig truth = TrueStereoRig(ws::LoadSimTruth(dir + "/wall.truth.yaml"));
   const std::string calib = dir + "/pitched.yaml";
   WriteCalibrationFile(calib, RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 0.2));
   const auto frames = Messages<widestereo::stereo_frame_t>(ReadLog(dir + "/wall.lcmlog"), ws::channel::kStereoImages);
@@ -92,7 +94,7 @@ TEST(HealthLive, RefineCommandRepairsTheCalibrationAndStereoMatchRebuildsItsMaps
   const widestereo::command_t refine = CommandMessage("refine", "stereo-health");
   bus.lcm.publish(ws::channel::kStereoCommand, &refine);
   ASSERT_TRUE(bus.Until(10, [&] { return !bus.calibrations.empty(); })) << health.Output();
-  const ws::StereoRig refined = ws::StereoRigFromMessage(bus.calibrations.back());
+  const ws::Rig refined = ws::RigFromMessage(bus.calibrations.back());
   EXPECT_LE(RotationAngleDeg(refined.R, truth.R), 0.02);
 
   // And stereo-health, now measuring through it, says ok.

@@ -9,7 +9,7 @@
 #include "health_fixtures.h"
 #include "lcm_io/channels.h"
 #include "match_fixtures.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_file.h"
 #include "sim/ground_truth.h"
 #include "sim/truth_calibration.h"
 #include "test_support.h"
@@ -26,7 +26,7 @@ class HealthReplay : public ::testing::Test {
     dir_ = new std::string(TempDir("health-replay"));
     RenderScene("config/sim/default.yaml", 8, *dir_, "board");  // the first 8 board poses
     RenderScene("config/sim/wall.yaml", 3, *dir_, "wall");
-    truth_ = new ws::StereoRig(TrueStereoRig(ws::LoadSimTruth(*dir_ + "/wall.truth.yaml")));
+    truth_ = new ws::Rig(TrueStereoRig(ws::LoadSimTruth(*dir_ + "/wall.truth.yaml")));
   }
   static void TearDownTestSuite() {
     delete truth_;
@@ -34,7 +34,7 @@ class HealthReplay : public ::testing::Test {
   }
 
   static std::string Log(const std::string& scene) { return *dir_ + "/" + scene + ".lcmlog"; }
-  static std::string Calibration(const ws::StereoRig& rig, const std::string& name) {
+  static std::string Calibration(const ws::Rig& rig, const std::string& name) {
     const std::string path = *dir_ + "/" + name + ".yaml";
     WriteCalibrationFile(path, rig);
     return path;
@@ -52,11 +52,11 @@ class HealthReplay : public ::testing::Test {
   }
 
   static std::string* dir_;
-  static ws::StereoRig* truth_;
+  static ws::Rig* truth_;
 };
 
 std::string* HealthReplay::dir_ = nullptr;
-ws::StereoRig* HealthReplay::truth_ = nullptr;
+ws::Rig* HealthReplay::truth_ = nullptr;
 
 TEST_F(HealthReplay, TrueCalibrationIsOkOnBoardAndWall) {
   const std::string calib = Calibration(*truth_, "truth");
@@ -114,7 +114,7 @@ TEST_F(HealthReplay, RefineRepairsAPitchedCalibration) {
   EXPECT_GE(r["dy_median_before_px"].get<double>(), 0.5);
   EXPECT_LE(r["dy_median_after_px"].get<double>(), 0.15);
 
-  const ws::StereoRig rig = ws::StereoRigFromFile(refined);
+  const ws::Rig rig = ws::StereoRigFromFile(refined);
   const double error_deg = RotationAngleDeg(rig.R, truth_->R);
   std::printf("[ health ] refined R is %.4f deg from the truth (the calibration was 0.2 deg off); "
               "T's direction %.4f deg\n",

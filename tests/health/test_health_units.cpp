@@ -19,9 +19,9 @@ namespace {
 
 using namespace ws::test;
 
-ws::StereoRig SimRig() {
+ws::Rig SimRig() {
   const ws::SimConfig sim = ws::DefaultSimConfig(0.5);
-  ws::StereoRig rig;
+  ws::Rig rig;
   rig.left = sim.left;
   rig.right = sim.right;
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
@@ -30,7 +30,7 @@ ws::StereoRig SimRig() {
 
 // Rays of random points 1-5 m in front of the rig, in both camera frames,
 // with where they land in `rect`'s left image.
-std::vector<ws::RayMatch> ExactMatches(const ws::StereoRig& truth, const ws::Rectification& rect, int n) {
+std::vector<ws::RayMatch> ExactMatches(const ws::Rig& truth, const ws::Rectification& rect, int n) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> lateral(-1.2, 1.2), depth(1, 5);
   std::vector<ws::RayMatch> matches;
@@ -48,7 +48,7 @@ std::vector<ws::RayMatch> ExactMatches(const ws::StereoRig& truth, const ws::Rec
 }
 
 TEST(RectifiedDy, RowsAreThoseOfTheRectificationStereoMatchBuilds) {
-  ws::StereoRig rig = RightCameraTurned(SimRig(), Eigen::Vector3d(0.3, -1, 0.5), 1.5);
+  ws::Rig rig = RightCameraTurned(SimRig(), Eigen::Vector3d(0.3, -1, 0.5), 1.5);
   rig.T += Eigen::Vector3d(0, 0.01, -0.02);
   const ws::Rectification rect = ws::BuildRectification(rig);
   double om[3];
@@ -88,8 +88,8 @@ TEST(VerdictWindow, OneBadFrameDoesNotFlipItAndTooFewMatchesAreUnknown) {
 }
 
 TEST(RefineExtrinsics, RecoversTheTrueRotationFromExactMatches) {
-  const ws::StereoRig truth = SimRig();
-  const ws::StereoRig pitched = RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 0.5);
+  const ws::Rig truth = SimRig();
+  const ws::Rig pitched = RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 0.5);
   const ws::Rectification rect = ws::BuildRectification(pitched);
   const auto matches = ExactMatches(truth, rect, 500);
   const ws::RefineResult r = ws::RefineExtrinsics(pitched, rect.f, matches, rect.size, {}, {});
@@ -102,8 +102,8 @@ TEST(RefineExtrinsics, RecoversTheTrueRotationFromExactMatches) {
 }
 
 TEST(RefineExtrinsics, RefusesTooFewTooClusteredOrTooLargeCorrections) {
-  const ws::StereoRig truth = SimRig();
-  const ws::StereoRig pitched = RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 3);
+  const ws::Rig truth = SimRig();
+  const ws::Rig pitched = RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 3);
   const ws::Rectification rect = ws::BuildRectification(pitched);
   auto matches = ExactMatches(truth, rect, 500);
   ws::RefineResult r = ws::RefineExtrinsics(pitched, rect.f, matches, rect.size, {}, {});

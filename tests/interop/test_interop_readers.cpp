@@ -5,12 +5,12 @@
 
 #include <fstream>
 
-#include "calib/calib_file.h"
 #include "interop/any_rig.h"
 #include "interop/exact_model.h"
 #include "interop/kalibr_camchain.h"
 #include "interop/mrcal_cameramodel.h"
 #include "interop/python_literal.h"
+#include "rig/rig_file.h"
 #include "test_support.h"
 
 namespace ws {
@@ -27,7 +27,7 @@ template <class Load>
 std::string Refusal(const Load& load) {
   try {
     load();
-  } catch (const calib::CalibrationFileError& e) {
+  } catch (const CalibrationFileError& e) {
     return e.what();
   }
   return "";

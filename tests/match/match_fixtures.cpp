@@ -4,7 +4,6 @@
 
 #include <fstream>
 
-#include "calib/calib_file.h"
 #include "sim/sim_config.h"
 #include "test_support.h"
 
@@ -37,23 +36,13 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
   return calib;
 }
 
-StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind) {
+Rig RigFittedAs(const Rig& rig, const std::string& kind) {
   const SimConfig theia = ParseSimConfig(
       "rig: {baseline: 0.3, left: {lens: theia, fit: " + kind + "}}\nscene: {wall: {frames: 1}}\n",
       "the Theia-like lens fitted as " + kind, ".");
-  StereoRig fitted = rig;
+  Rig fitted = rig;
   fitted.left.distortion = fitted.right.distortion = theia.left.distortion;
   return fitted;
-}
-
-void WriteCalibrationFile(const std::string& path, const StereoRig& rig) {
-  calib::CalibrationFile file;
-  file.model = rig.left.distortion.kind;
-  file.left = rig.left;
-  file.right = rig.right;
-  file.R = rig.R;
-  file.T = rig.T;
-  calib::WriteCalibrationFile(path, file);
 }
 
 std::string FisheyeSceneConfig(const std::string& dir, const std::string& scene) {

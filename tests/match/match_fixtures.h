@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 #include "sim/ground_truth.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
@@ -21,11 +21,7 @@ widestereo::stereo_calibration_t IdentityCalibration(int width, int height, doub
 // p1, p2, R and T are kept: the best `kind` can describe the lens, short of a
 // calibration that also moves the intrinsics. The rig must have the
 // simulator's default lens.
-StereoRig RigFittedAs(const StereoRig& rig, const std::string& kind);
-
-// Writes the rig as a calibration file (calib/calib_file.h), as
-// stereo-calibrate would with a perfect solution.
-void WriteCalibrationFile(const std::string& path, const StereoRig& rig);
+Rig RigFittedAs(const Rig& rig, const std::string& kind);
 
 // config/sim/fisheye.yaml (the 200-degree rig) with one of its scenes
 // ("wall", "room"), written as DIR/fisheye-SCENE.yaml; its path.

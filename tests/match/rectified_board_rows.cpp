@@ -13,6 +13,7 @@
 
 #include "detect/corner_detector.h"
 #include "match/frame_image_writer.h"
+#include "rig/rig_file.h"
 #include "test_support.h"
 
 namespace ws::test {

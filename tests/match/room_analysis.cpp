@@ -7,7 +7,7 @@
 
 namespace ws::test {
 
-RoomField TrueRoomField(const StereoRig& rig, const std::vector<cv::Vec4d>& planes) {
+RoomField TrueRoomField(const Rig& rig, const std::vector<cv::Vec4d>& planes) {
   RoomField field;
   field.latlon = BuildRectification(rig, RectifyOptions{1.0, {}, RectificationMode::kLatLon});
   field.disparity = TrueSceneDisparity(field.latlon, rig, planes, &field.face);

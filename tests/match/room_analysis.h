@@ -12,7 +12,7 @@
 
 #include "cloud/cloud_filter_config.h"
 #include "rectify/rectification.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 #include "widestereo/point_cloud_t.hpp"
 
 namespace ws::test {
@@ -25,7 +25,7 @@ struct RoomField {
 };
 
 // `planes`: SimFrameTruth::room_planes (left camera frame).
-RoomField TrueRoomField(const StereoRig& rig, const std::vector<cv::Vec4d>& planes);
+RoomField TrueRoomField(const Rig& rig, const std::vector<cv::Vec4d>& planes);
 
 struct FaceFit {
   double field_fraction = 0;  // of the common field (cells), the part showing this face

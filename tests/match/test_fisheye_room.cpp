@@ -28,7 +28,7 @@ TEST(FisheyeRoom, LatLonCoversTheCommonFieldAndFindsEveryWall) {
   ASSERT_EQ(truth.frames.size(), 1u);
   const std::vector<cv::Vec4d>& planes = truth.frames[0].room_planes;
   ASSERT_EQ(planes.size(), 6u);
-  const ws::StereoRig rig = TrueStereoRig(truth);
+  const ws::Rig rig = TrueStereoRig(truth);
   const RoomField field = TrueRoomField(rig, planes);
   // The search range reaches the nearest face's disparity.
   double largest = 0;

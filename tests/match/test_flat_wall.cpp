@@ -34,7 +34,7 @@ class FlatWall : public ::testing::Test {
 
   // The wall chain (wall_chain.h) with stereo-match's settings from
   // `match_config`, then `match_args`, and stereo-cloud's from `cloud_config`.
-  static WallRun Run(const ws::StereoRig& rig, const std::string& name,
+  static WallRun Run(const ws::Rig& rig, const std::string& name,
                      const std::vector<std::string>& match_args = {},
                      const std::string& match_config = "config/stereo-match.yaml",
                      const std::string& cloud_config = "config/stereo-cloud.yaml", double focal_scale = 1.0) {
@@ -54,7 +54,7 @@ std::string* FlatWall::dir_ = nullptr;
 ws::SimTruth* FlatWall::truth_ = nullptr;
 
 TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
-  const ws::StereoRig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = TrueStereoRig(*truth_);
   const WallRun bspline = Run(rig, "bspline");
   const WallRun poly6 = Run(RigFittedAs(rig, "poly6"), "poly6");
   ASSERT_EQ(bspline.wall.size(), size_t(kFrames));
@@ -104,7 +104,7 @@ TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
 // The accuracy cost of the fast matcher modes (docs/depth.md, "Matcher modes"): the
 // same wall, the exact calibration, each mode against full SGBM.
 TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
-  const ws::StereoRig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = TrueStereoRig(*truth_);
   const double z = truth_->frames.front().wall_distance;
   struct Mode {
     std::string name;

@@ -8,10 +8,11 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "match_fixtures.h"
-#include "models/theia_lens.h"
 #include "match/match_node.h"
+#include "match_fixtures.h"
 #include "models/model_registry.h"
+#include "models/theia_lens.h"
+#include "rig/rig_message.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/process_status_t.hpp"
@@ -22,8 +23,8 @@ using namespace ws::test;
 
 // The Theia-like mustache lens on both sides, 0.3 m baseline, a slightly
 // rotated and offset right camera.
-ws::StereoRig WideRig() {
-  ws::StereoRig rig;
+ws::Rig WideRig() {
+  ws::Rig rig;
   rig.left = rig.right = ws::TheiaLikeCamera();
   rig.right.fx *= 1.01;
   rig.right.cx += 3;
@@ -35,7 +36,7 @@ ws::StereoRig WideRig() {
 }
 
 TEST(Rectification, CorrespondingPixelsShareARowAcrossTheWholeField) {
-  const ws::StereoRig rig = WideRig();
+  const ws::Rig rig = WideRig();
   const ws::Rectification rect = ws::BuildRectification(rig);
   EXPECT_NEAR(rect.baseline, rig.T.norm(), 1e-12);
   const ws::Camera left(rig.left), right(rig.right);
@@ -67,7 +68,7 @@ TEST(Rectification, CorrespondingPixelsShareARowAcrossTheWholeField) {
 }
 
 TEST(Rectification, RemapTablesAgreeWithTheModel) {
-  const ws::StereoRig rig = WideRig();
+  const ws::Rig rig = WideRig();
   const ws::Rectification rect = ws::BuildRectification(rig);
   cv::Mat map_x, map_y;
   cv::convertMaps(rect.map_right[0], rect.map_right[1], map_x, map_y, CV_32FC1);
@@ -93,7 +94,7 @@ TEST(Rectification, RemapTablesAgreeWithTheModel) {
 TEST(Rectification, IdentityCalibrationLeavesImagesUntouched) {
   const cv::Mat left = cv::imread(std::string(kOpenCvDataDir) + "/aloeL.jpg");
   const cv::Mat right = cv::imread(std::string(kOpenCvDataDir) + "/aloeR.jpg");
-  const auto rig = ws::StereoRigFromMessage(IdentityCalibration(left.cols, left.rows, 1000, 0.1));
+  const auto rig = ws::RigFromMessage(IdentityCalibration(left.cols, left.rows, 1000, 0.1));
   const ws::Rectification rect = ws::BuildRectification(rig);
   cv::Mat lr, rr;
   ws::RectifyPair(rect, left, right, &lr, &rr);
@@ -102,7 +103,7 @@ TEST(Rectification, IdentityCalibrationLeavesImagesUntouched) {
 }
 
 TEST(DisparityCloud, StepKeepsEveryNthPixelOfEveryNthRow) {
-  const auto rig = ws::StereoRigFromMessage(IdentityCalibration(64, 48, 100, 0.1));
+  const auto rig = ws::RigFromMessage(IdentityCalibration(64, 48, 100, 0.1));
   const ws::Rectification rect = ws::BuildRectification(rig);
   const cv::Mat disparity(48, 64, CV_32FC1, cv::Scalar(10.0f));  // every pixel at Z = 100 * 0.1 / 10 = 1 m
   const cv::Mat gray(48, 64, CV_8UC1, cv::Scalar(7));

@@ -10,6 +10,7 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "models/theia_lens.h"
+#include "rig/rig_file.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -28,7 +29,7 @@ widestereo::stereo_frame_t Frame(int64_t frame_id) {
 
 TEST(MatchCalibFile, CalibrationForAnotherImageSizeIsAClearErrorUntilReplaced) {
   const std::string dir = TempDir("match-calib-size");
-  ws::StereoRig rig;  // the 1280 x 960 Theia-like rig
+  ws::Rig rig;  // the 1280 x 960 Theia-like rig
   rig.left = rig.right = ws::TheiaLikeCamera();
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
   const std::string calib = dir + "/calib.yaml";
@@ -67,7 +68,7 @@ TEST(MatchCalibFile, MissingOrBrokenFileStopsTheProcessNamingIt) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find(dir + "/none.yaml"), std::string::npos) << r.output;
 
-  ws::StereoRig rig;
+  ws::Rig rig;
   rig.left = rig.right = ws::TheiaLikeCamera();
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
   const std::string good = dir + "/good.yaml";

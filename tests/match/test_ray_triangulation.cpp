@@ -18,7 +18,7 @@ using namespace ws::test;
 // Points at 0.5-10 m in random directions of the left rectified frame that
 // both cameras image: each triangulated from its rectified disparity.
 // Returns how many were checked.
-int CheckRoundTrip(const ws::StereoRig& rig, ws::RectificationMode mode, double max_theta) {
+int CheckRoundTrip(const ws::Rig& rig, ws::RectificationMode mode, double max_theta) {
   const ws::Rectification rect = ws::BuildRectification(rig, {1.0, {}, mode});
   const ws::Camera left(rig.left), right(rig.right);
   const cv::Matx33d R = [&] {
@@ -56,8 +56,8 @@ int CheckRoundTrip(const ws::StereoRig& rig, ws::RectificationMode mode, double 
 }
 
 TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
-  const ws::StereoRig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
-  const ws::StereoRig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  const ws::Rig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
+  const ws::Rig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
   EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kPinhole, M_PI / 3), 200);
   EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kLatLon, M_PI / 3), 200);
   EXPECT_GT(CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI * 100 / 180), 500);
@@ -69,7 +69,7 @@ TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
 // The range-accuracy formula against the triangulation itself: the range
 // change of a small disparity change, over each image.
 TEST(RayTriangulation, RangeChangeIsTheTriangulationsDerivative) {
-  const ws::StereoRig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  const ws::Rig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
   for (const ws::RectificationMode mode : {ws::RectificationMode::kPinhole, ws::RectificationMode::kLatLon}) {
     const ws::Rectification rect = ws::BuildRectification(fisheye, {1.0, {}, mode});
     int checked = 0;
@@ -93,7 +93,7 @@ TEST(RayTriangulation, RangeChangeIsTheTriangulationsDerivative) {
 }
 
 TEST(RayTriangulation, PinholeIsFbOverD) {
-  const ws::StereoRig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
+  const ws::Rig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
   const ws::Rectification rect = ws::BuildRectification(demo);
   const auto X = ws::TriangulateDisparity(rect, 100.5, 700.25, 37.5);
   ASSERT_TRUE(X);

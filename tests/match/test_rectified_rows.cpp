@@ -12,6 +12,7 @@
 #include "calib_process_support.h"
 #include "match_fixtures.h"
 #include "rectified_board_rows.h"
+#include "rig/rig_file.h"
 #include "sim/ground_truth.h"
 #include "sim/truth_calibration.h"
 #include "test_support.h"

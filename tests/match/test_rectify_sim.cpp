@@ -85,7 +85,7 @@ class RowErrors {
 // Rectifies the true corners of every board frame that both cameras see
 // (those with no rectified pixel, a pinhole's rays behind it, are counted in
 // *unrepresentable).
-RowErrors RowsOfTrueCorners(const ws::SimTruth& truth, const ws::StereoRig& rig,
+RowErrors RowsOfTrueCorners(const ws::SimTruth& truth, const ws::Rig& rig,
                          const ws::RectifyOptions& options, int* unrepresentable = nullptr) {
   const ws::Rectification rect = ws::BuildRectification(rig, options);
   RowErrors rows(rect.size);
@@ -108,7 +108,7 @@ RowErrors RowsOfTrueCorners(const ws::SimTruth& truth, const ws::StereoRig& rig,
 // cameras see whole, each pair rectified (left, right); *frames: how many
 // such frames, *boards: in how many both boards were found.
 std::vector<std::pair<cv::Point2d, cv::Point2d>> DetectedCornerPairs(
-    const ws::Simulator& simulator, const ws::SimTruth& truth, const ws::StereoRig& rig,
+    const ws::Simulator& simulator, const ws::SimTruth& truth, const ws::Rig& rig,
     const ws::Rectification& rect, int* frames, int* boards) {
   const auto detector = ws::MakeCornerDetector(simulator.config().board->board);
   std::vector<int> whole;
@@ -150,7 +150,7 @@ class RectificationQuality : public ::testing::Test {
     delete simulator_;
   }
 
-  static RowErrors TrueCornerRows(const ws::StereoRig& rig) {
+  static RowErrors TrueCornerRows(const ws::Rig& rig) {
     return RowsOfTrueCorners(*truth_, rig, ws::RectifyOptions());
   }
 
@@ -162,7 +162,7 @@ ws::Simulator* RectificationQuality::simulator_ = nullptr;
 ws::SimTruth* RectificationQuality::truth_ = nullptr;
 
 TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
-  const ws::StereoRig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = TrueStereoRig(*truth_);
   const RowErrors bspline = TrueCornerRows(rig);
   bspline.Print("true corners, bspline (the rig's own model)");
   EXPECT_GT(bspline.count(), 1000);
@@ -177,7 +177,7 @@ TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
 }
 
 TEST_F(RectificationQuality, DetectedCornersShareARowAcrossTheWholeField) {
-  const ws::StereoRig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = TrueStereoRig(*truth_);
   const ws::Rectification rect = ws::BuildRectification(rig);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(*simulator_, *truth_, rig, rect, &frames, &boards);
@@ -209,7 +209,7 @@ const ws::RectifyOptions kLatLon{1.0, {}, ws::RectificationMode::kLatLon};
 
 TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
   const ws::SimTruth truth = FisheyeSimulator().Truth();
-  const ws::StereoRig rig = TrueStereoRig(truth);
+  const ws::Rig rig = TrueStereoRig(truth);
   const cv::Vec2d field = ws::CommonField(rig);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   std::printf("[ rectify ] fisheye rig: common field %.1f x %.1f degrees, lat-lon image %d x %d at "
@@ -244,7 +244,7 @@ TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
 // it reaches past the lenses' field (the model's last knot): those pixels
 // are marked invalid and hold no image.
 TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
-  const ws::StereoRig rig = TrueStereoRig(FisheyeSimulator().Truth());
+  const ws::Rig rig = TrueStereoRig(FisheyeSimulator().Truth());
   const ws::Rectification fitted = ws::BuildRectification(rig, kLatLon);
   ws::RectifyOptions larger = kLatLon;
   larger.size = cv::Size(fitted.size.width * 3 / 2, fitted.size.height * 3 / 2);
@@ -273,7 +273,7 @@ TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
 TEST(LatLonRectification, DetectedCornersShareARow) {
   const ws::Simulator& simulator = FisheyeSimulator();
   const ws::SimTruth truth = simulator.Truth();
-  const ws::StereoRig rig = TrueStereoRig(truth);
+  const ws::Rig rig = TrueStereoRig(truth);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(simulator, truth, rig, rect, &frames, &boards);

@@ -16,7 +16,7 @@ bool Inside(const std::optional<Eigen::Vector2d>& pixel, const CameraModel& mode
 
 }  // namespace
 
-cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const cv::Vec3d& normal,
+cv::Mat TrueWallDisparity(const Rectification& rect, const Rig& rig, const cv::Vec3d& normal,
                           double offset) {
   return TrueSceneDisparity(rect, rig, {cv::Vec4d(normal[0], normal[1], normal[2], offset)});
 }
@@ -30,7 +30,7 @@ int FirstPlaneHit(const std::vector<cv::Vec4d>& planes, const cv::Vec3d& ray, do
   return first;
 }
 
-cv::Mat TrueSceneDisparity(const Rectification& rect, const StereoRig& rig, const std::vector<cv::Vec4d>& planes,
+cv::Mat TrueSceneDisparity(const Rectification& rect, const Rig& rig, const std::vector<cv::Vec4d>& planes,
                            cv::Mat* plane_index) {
   const Camera left(rig.left), right(rig.right);
   std::vector<cv::Vec4d> rectified;  // the planes in the rectified frame

@@ -9,7 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "rectify/rectification.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 
@@ -20,14 +20,14 @@ namespace ws::test {
 // the wall is seen by both cameras (its point projects inside both input
 // images, and its right rectified pixel lies inside the rectified image),
 // else 0 (CV_32FC1).
-cv::Mat TrueWallDisparity(const Rectification& rect, const StereoRig& rig, const cv::Vec3d& normal,
+cv::Mat TrueWallDisparity(const Rectification& rect, const Rig& rig, const cv::Vec3d& normal,
                           double offset);
 
 // The same for a scene of planes n . X = d (left camera frame) seen from
 // inside, a box room: each ray sees the first plane ahead along it.
 // *plane_index (CV_32SC1, when given): that plane's index where the
 // disparity is known, else -1.
-cv::Mat TrueSceneDisparity(const Rectification& rect, const StereoRig& rig, const std::vector<cv::Vec4d>& planes,
+cv::Mat TrueSceneDisparity(const Rectification& rect, const Rig& rig, const std::vector<cv::Vec4d>& planes,
                            cv::Mat* plane_index = nullptr);
 
 // The index of the first of `planes` (n . X = d) the ray from the origin

@@ -8,6 +8,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
+#include "rig/rig_file.h"
 #include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "widestereo/cloud_stats_t.hpp"
@@ -24,7 +25,7 @@ SimTruth CaptureWall(const std::string& dir, const std::string& config, int fram
   return LoadSimTruth(dir + "/truth.yaml");
 }
 
-ChainLogs RunMatchAndCloud(const std::string& dir, const StereoRig& rig, const std::string& name,
+ChainLogs RunMatchAndCloud(const std::string& dir, const Rig& rig, const std::string& name,
                            const std::string& num_disparities, const WallChainOptions& options) {
   const std::string calib = dir + "/" + name + ".yaml";
   const ChainLogs logs{dir + "/" + name + "-match.lcmlog", dir + "/" + name + "-cloud.lcmlog"};
@@ -46,14 +47,14 @@ ChainLogs RunMatchAndCloud(const std::string& dir, const StereoRig& rig, const s
   return logs;
 }
 
-WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
+WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Rig& rig,
                      const std::string& name, int frames, const std::string& num_disparities,
                      const WallChainOptions& options) {
   const ChainLogs logs = RunMatchAndCloud(dir, rig, name, num_disparities, options);
   // The truth, seen through the true rig's rectification (the frame the
   // cloud is in only differs by the calibration's own rectifying rotation,
   // which is the same here: both calibrations share R and T).
-  const StereoRig true_rig = TrueStereoRig(truth);
+  const Rig true_rig = TrueStereoRig(truth);
   const Rectification rect = BuildRectification(true_rig, RectifyOptions{options.focal_scale, {}, options.mode});
   const SimFrameTruth& wall = truth.frames.front();
   const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);

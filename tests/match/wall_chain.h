@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rectify/stereo_rig.h"
+#include "rig/rig.h"
 #include "sim/ground_truth.h"
 #include "wall_analysis.h"
 
@@ -40,13 +40,13 @@ struct ChainLogs {
 // --num-disparities --focal-scale --rectification [match_args] on
 // DIR/images.lcmlog into DIR/NAME-match.lcmlog, then stereo-cloud --config
 // [cloud_args] into DIR/NAME-cloud.lcmlog.
-ChainLogs RunMatchAndCloud(const std::string& dir, const StereoRig& rig, const std::string& name,
+ChainLogs RunMatchAndCloud(const std::string& dir, const Rig& rig, const std::string& name,
                            const std::string& num_disparities, const WallChainOptions& options);
 
 // RunMatchAndCloud, then every frame's disparity and wall against the truth
 // seen through the true rig's rectification of the same focal scale
 // (printed).
-WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const StereoRig& rig,
+WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Rig& rig,
                      const std::string& name, int frames, const std::string& num_disparities,
                      const WallChainOptions& options = {});
 

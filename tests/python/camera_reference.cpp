@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include "calib/calib_file.h"
+#include "rig/rig_file.h"
 #include "test_cameras.h"
 
 int main(int argc, char** argv) {
@@ -24,19 +24,18 @@ int main(int argc, char** argv) {
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.08, Eigen::Vector3d(1, 2, 0.5).normalized()).toRotationMatrix();
   for (const ws::CameraModel& model : ws::testing::KindCameras()) {
     const std::string kind = ws::ModelName(model.distortion.kind);
-    ws::calib::CalibrationFile file;
-    file.model = model.distortion.kind;
+    ws::Rig file;
     file.mono = true;
     file.left = model;
-    ws::calib::WriteCalibrationFile(dir + "/" + kind + ".yaml", file);
-    ws::calib::CalibrationFile rig = file;
+    ws::WriteCalibrationFile(dir + "/" + kind + ".yaml", file);
+    ws::Rig rig = file;
     rig.mono = false;
     rig.right = model;
     rig.right.cx += 3.5;
     rig.R = Eigen::AngleAxisd(0.01, Eigen::Vector3d(0.2, 1, 0.1).normalized()).toRotationMatrix();
     rig.T = Eigen::Vector3d(-0.12, 0.001, 0.002);
-    ws::calib::WriteCalibrationFile(dir + "/rig-" + kind + ".yaml", rig);
-    const ws::Camera camera(ws::calib::ReadCalibrationFile(dir + "/" + kind + ".yaml").left);
+    ws::WriteCalibrationFile(dir + "/rig-" + kind + ".yaml", rig);
+    const ws::Camera camera(ws::ReadCalibrationFile(dir + "/" + kind + ".yaml").left);
     FILE* out = std::fopen((dir + "/" + kind + ".txt").c_str(), "w");
     if (!out) return 1;
     for (int j = 0; j < 12; ++j)

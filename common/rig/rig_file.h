@@ -1,5 +1,5 @@
-// The calibration file (stereo-calibrate --out): YAML that OpenCV's
-// cv::FileStorage reads directly, with the camera model defined in the
+// The calibration file (stereo-calibrate --out): the rig (rig/rig.h) as YAML
+// that OpenCV's cv::FileStorage reads directly, with the camera model defined in the
 // docs/models.md and repeated in the file's header comment.
 //
 //   cv::FileStorage fs("calib.yaml", cv::FileStorage::READ);
@@ -31,31 +31,16 @@
 //     views: ...                       stereo views used
 #pragma once
 
-#include <Eigen/Core>
 #include <stdexcept>
 #include <string>
 
-#include "calib/calibrate.h"
-#include "models/camera_model.h"
+#include "rig/rig.h"
 
-namespace ws::calib {
+namespace ws {
 
 // The first words of the comment that opens every file WriteCalibrationFile
 // writes: how a reader tells our file from a foreign one (interop/any_rig.h).
 inline constexpr char kCalibrationFileTitle[] = "widestereo stereo calibration";
-
-struct CalibrationFile {
-  ModelKind model = ModelKind::kBspline;  // the kind of both cameras' models
-  bool mono = false;  // one camera: `left` only, no right, no stereo
-  CameraModel left, right;
-  double left_rms = 0, right_rms = 0;  // pixels
-  int left_views = 0, right_views = 0;
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
-  Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
-  double rms = 0;                                   // stereo, pixels
-  int views = 0;                                    // stereo views
-  std::string note;  // written as a comment after the header (e.g. what refined it); not read back
-};
 
 // What ReadCalibrationFile throws: "FILE: FIELD: REASON", e.g.
 // "calib.yaml: left.camera_matrix: not a 3x3 matrix".
@@ -63,17 +48,19 @@ struct CalibrationFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-CalibrationFile ToCalibrationFile(const StereoCalibration& calibration);
-
 // Writes the file (to a temporary beside it, then renamed, so a reader never
 // sees half a file). Throws std::runtime_error when it cannot.
-void WriteCalibrationFile(const std::string& path, const CalibrationFile& file);
+void WriteCalibrationFile(const std::string& path, const Rig& rig);
 
 // Reads a calibration file and checks every field: present, of its type,
 // finite, in range (positive sizes and focal lengths, K of the pinhole form,
 // a known model whose knots and coefficients agree, R a rotation, baseline_m
 // equal to |T|, both cameras of the file's model). Throws
 // CalibrationFileError naming the file, the field and the reason.
-CalibrationFile ReadCalibrationFile(const std::string& path);
+Rig ReadCalibrationFile(const std::string& path);
 
-}  // namespace ws::calib
+// The same, for a stereo rig: throws CalibrationFileError for a one-camera
+// file too.
+Rig StereoRigFromFile(const std::string& path);
+
+}  // namespace ws

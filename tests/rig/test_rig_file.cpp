@@ -9,11 +9,13 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 
-#include "calib/calib_file.h"
 #include "calib/report.h"
-#include "models/model_registry.h"
+#include "calib/solved_rig.h"
 #include "calib/synthetic_rig.h"
+#include "models/model_registry.h"
 #include "opencv_fisheye.h"
+#include "rig/rig_file.h"
+#include "runtime/json_file.h"
 #include "test_support.h"
 
 namespace {
@@ -47,9 +49,8 @@ CameraModel SampleCamera(ModelKind model, int variant) {
   return BarrelTestCamera(variant);
 }
 
-CalibrationFile SampleFile(ModelKind model) {
-  CalibrationFile f;
-  f.model = model;
+Rig SampleRig(ModelKind model) {
+  Rig f;
   f.left = SampleCamera(model, 0);
   f.right = SampleCamera(model, 1);
   f.left_rms = 0.1234;
@@ -80,14 +81,14 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.nonradial.tilt, b.nonradial.tilt);
 }
 
-TEST(CalibFile, EveryModelReadsBackBitForBit) {
+TEST(RigFile, EveryModelReadsBackBitForBit) {
   const std::string dir = test::TempDir("calib-file-roundtrip");
   for (const ModelKind model : ModelKinds()) {
-    const CalibrationFile written = SampleFile(model);
+    const Rig written = SampleRig(model);
     const std::string path = dir + "/" + ModelName(model) + ".yaml";
     WriteCalibrationFile(path, written);
-    const CalibrationFile read = ReadCalibrationFile(path);
-    EXPECT_EQ(read.model, model);
+    const Rig read = ReadCalibrationFile(path);
+    EXPECT_EQ(read.kind(), model);
     ExpectSameCamera(read.left, written.left);
     ExpectSameCamera(read.right, written.right);
     EXPECT_EQ(read.left_rms, written.left_rms);
@@ -100,13 +101,13 @@ TEST(CalibFile, EveryModelReadsBackBitForBit) {
 }
 
 // A camera with a non-radial field (models/nonradial_field.h) keeps it.
-TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
+TEST(RigFile, ANonRadialFieldReadsBackBitForBit) {
   const std::string path = test::TempDir("calib-file-field") + "/field.yaml";
-  CalibrationFile written = SampleFile(ModelKind::kBsplineTheta);
+  Rig written = SampleRig(ModelKind::kBsplineTheta);
   written.left.nonradial = {5, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(40)};
   for (size_t k = 0; k < 40; ++k) written.left.nonradial.coeffs[k] = 1e-3 * std::sin(0.3 * k);
   WriteCalibrationFile(path, written);
-  const CalibrationFile read = ReadCalibrationFile(path);
+  const Rig read = ReadCalibrationFile(path);
   ExpectSameCamera(read.left, written.left);
   ExpectSameCamera(read.right, written.right);
   EXPECT_TRUE(read.right.nonradial.empty());
@@ -116,48 +117,71 @@ TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
 }
 
 // A sensor tilt (models/sensor_tilt.h) alone, and with a field, reads back.
-TEST(CalibFile, ASensorTiltReadsBackBitForBit) {
+TEST(RigFile, ASensorTiltReadsBackBitForBit) {
   const std::string path = test::TempDir("calib-file-tilt") + "/tilt.yaml";
-  CalibrationFile written = SampleFile(ModelKind::kKb4);
+  Rig written = SampleRig(ModelKind::kKb4);
   written.left.nonradial.tilt = {0.0123, -0.00456};
   written.right.nonradial = {4, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(32, 1e-3), {-0.002, 0.003}};
   WriteCalibrationFile(path, written);
-  const CalibrationFile read = ReadCalibrationFile(path);
+  const Rig read = ReadCalibrationFile(path);
   ExpectSameCamera(read.left, written.left);
   ExpectSameCamera(read.right, written.right);
   EXPECT_EQ(read.left.nonradial.cols, 0);
 }
 
 // The report calls a model's coefficients what the calibration file does
-// (models/model_kind.h, coeff_key), and holds the same numbers under it.
-TEST(CalibFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
-  const std::string dir = test::TempDir("calib-file-keys");
+// (models/model_kind.h, coeff_key) and holds the same numbers under it, and
+// the same knots: a solve's result of every model written both ways as
+// stereo-calibrate writes them (calib/solved_rig.h's ToRig and the file;
+// calib/report.h's StereoReport and runtime/json_file.h), then read back.
+TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
+  const std::string dir = test::TempDir("rig-file-keys");
   std::set<std::string> keys;
   for (const ModelKind model : ModelKinds()) keys.insert(Traits(model).coeff_key);
   for (const ModelKind model : ModelKinds()) {
-    const CalibrationFile written = SampleFile(model);
-    const std::string path = dir + "/" + ModelName(model) + ".yaml";
-    WriteCalibrationFile(path, written);
-    cv::FileStorage fs(path, cv::FileStorage::READ);
-    CameraCalibration camera;
-    camera.name = "left";
-    camera.model = written.left;
-    const Json report = CameraReport(camera);
-    EXPECT_EQ(report["model"], static_cast<std::string>(fs["left"]["model"])) << model;
-    for (const std::string& key : keys)
-      EXPECT_EQ(!fs["left"][key].empty(), report.contains(key)) << model << ": " << key;
-    const std::string key = Traits(model).coeff_key;
-    ASSERT_TRUE(report.contains(key)) << model;
-    std::vector<double> in_file;
-    fs["left"][key] >> in_file;
-    EXPECT_EQ(report[key].get<std::vector<double>>(), in_file) << model;
-    EXPECT_EQ(in_file, written.left.distortion.coeffs) << model;
+    const Rig sample = SampleRig(model);
+    StereoCalibration result;
+    result.model = model;
+    result.left.name = "left";
+    result.left.model = sample.left;
+    result.right.name = "right";
+    result.right.model = sample.right;
+    result.R = sample.R;
+    result.T = sample.T;
+    const std::string yaml = dir + "/" + ModelName(model) + ".yaml";
+    const std::string json = dir + "/" + ModelName(model) + ".json";
+    WriteCalibrationFile(yaml, ToRig(result));
+    WriteJsonFile(json, StereoReport(result));
+
+    const Rig read = ReadCalibrationFile(yaml);
+    cv::FileStorage file(yaml, cv::FileStorage::READ);
+    const nlohmann::json report = nlohmann::json::parse(test::ReadFileText(json));
+    EXPECT_EQ(report["model"], static_cast<std::string>(file["model"])) << model;
+    ASSERT_EQ(report["cameras"].size(), 2u) << model;
+    for (int c = 0; c < 2; ++c) {
+      const nlohmann::json& in_report = report["cameras"][c];
+      const std::string name = in_report["name"].get<std::string>();
+      const cv::FileNode in_file = file[name];
+      const CameraModel& camera = c == 0 ? read.left : read.right;
+      const std::string at = ModelName(model) + " " + name;
+      EXPECT_EQ(in_report["model"], static_cast<std::string>(in_file["model"])) << at;
+      for (const std::string& key : keys)
+        EXPECT_EQ(!in_file[key].empty(), in_report.contains(key)) << at << ": " << key;
+      const std::string key = Traits(model).coeff_key;
+      ASSERT_TRUE(in_report.contains(key)) << at;
+      std::vector<double> coeffs;
+      in_file[key] >> coeffs;
+      EXPECT_EQ(in_report[key].get<std::vector<double>>(), coeffs) << at;
+      EXPECT_EQ(coeffs, camera.distortion.coeffs) << at;
+      EXPECT_EQ(in_report["knots"].get<std::vector<double>>(), camera.distortion.knots) << at;
+      EXPECT_EQ(in_report["degree"].get<int>(), static_cast<int>(in_file["degree"])) << at;
+    }
   }
 }
 
-TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
+TEST(RigFile, OpenCvReadsTheMatricesDirectly) {
   const std::string path = test::TempDir("calib-file-opencv") + "/calib.yaml";
-  const CalibrationFile f = SampleFile(ModelKind::kBspline);
+  const Rig f = SampleRig(ModelKind::kBspline);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -179,9 +203,9 @@ TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
 
 // A kb4 file is cv::fisheye's K and D: OpenCV projects with them exactly as
 // the file's model does, rays beyond OpenCV's 90 degrees aside.
-TEST(CalibFile, Kb4LoadsIntoOpenCvFisheye) {
+TEST(RigFile, Kb4LoadsIntoOpenCvFisheye) {
   const std::string path = test::TempDir("calib-file-kb4") + "/kb4.yaml";
-  const CalibrationFile f = SampleFile(ModelKind::kKb4);
+  const Rig f = SampleRig(ModelKind::kKb4);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -204,10 +228,10 @@ struct Damage {
   std::string from, to, field, reason;
 };
 
-TEST(CalibFile, EachDamagedFieldIsNamed) {
+TEST(RigFile, EachDamagedFieldIsNamed) {
   const std::string dir = test::TempDir("calib-file-damage");
   const std::string good = dir + "/good.yaml";
-  WriteCalibrationFile(good, SampleFile(ModelKind::kBspline));
+  WriteCalibrationFile(good, SampleRig(ModelKind::kBspline));
   const std::string text = test::ReadFileText(good);
   ASSERT_NO_THROW(ReadCalibrationFile(good));
   std::vector<Damage> damages = {
@@ -253,9 +277,9 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
   }
 }
 
-TEST(CalibFile, RejectsARotationThatIsNot) {
+TEST(RigFile, RejectsARotationThatIsNot) {
   const std::string path = test::TempDir("calib-file-rotation") + "/calib.yaml";
-  CalibrationFile f = SampleFile(ModelKind::kPoly6);
+  Rig f = SampleRig(ModelKind::kPoly6);
   f.R(0, 0) *= 1.01;
   WriteCalibrationFile(path, f);
   try {
@@ -267,7 +291,7 @@ TEST(CalibFile, RejectsARotationThatIsNot) {
   }
 }
 
-TEST(CalibFile, MissingOrNonYamlFilesSayWhich) {
+TEST(RigFile, MissingOrNonYamlFilesSayWhich) {
   const std::string dir = test::TempDir("calib-file-missing");
   EXPECT_THROW(ReadCalibrationFile(dir + "/none.yaml"), CalibrationFileError);
   Spit(dir + "/garbage.yaml", "%YAML:1.0\n---\nleft: [ unclosed\n");

@@ -1,7 +1,4 @@
-#include "rectify/stereo_rig.h"
-
-#include "calib/calib_file.h"
-#include "models/camera_model.h"
+#include "rig/rig_message.h"
 
 namespace ws {
 
@@ -28,25 +25,18 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   return model;
 }
 
-StereoRig StereoRigFromMessage(const widestereo::stereo_calibration_t& msg) {
-  StereoRig rig;
+Rig RigFromMessage(const widestereo::stereo_calibration_t& msg) {
+  Rig rig;
   rig.left = CameraModelFromMessage(msg.left);
   rig.right = CameraModelFromMessage(msg.right);
   for (int i = 0; i < 9; ++i) rig.R(i / 3, i % 3) = msg.R[i];
   for (int i = 0; i < 3; ++i) rig.T(i) = msg.T[i];
-  return rig;
-}
-
-StereoRig StereoRigFromFile(const std::string& path) {
-  const calib::CalibrationFile file = calib::ReadCalibrationFile(path);
-  if (file.mono)
-    throw calib::CalibrationFileError(path + ": a one-camera calibration (no right camera, no "
-                                      "stereo): a stereo rig is needed");
-  StereoRig rig;
-  rig.left = file.left;
-  rig.right = file.right;
-  rig.R = file.R;
-  rig.T = file.T;
+  rig.left_rms = msg.left.rms;
+  rig.right_rms = msg.right.rms;
+  rig.left_views = msg.left.nviews;
+  rig.right_views = msg.right.nviews;
+  rig.rms = msg.rms;
+  rig.views = msg.nviews;
   return rig;
 }
 
@@ -77,13 +67,16 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   return msg;
 }
 
-widestereo::stereo_calibration_t MessageFromStereoRig(const StereoRig& rig, int64_t utime) {
+widestereo::stereo_calibration_t MessageFromRig(const Rig& rig, int64_t utime) {
   widestereo::stereo_calibration_t msg{};
   msg.utime = utime;
   msg.left = MessageFromCameraModel(rig.left, "left");
   msg.right = MessageFromCameraModel(rig.right, "right");
+  msg.left.rms = rig.left_rms;
+  msg.right.rms = rig.right_rms;
   for (int i = 0; i < 9; ++i) msg.R[i] = rig.R(i / 3, i % 3);
   for (int i = 0; i < 3; ++i) msg.T[i] = rig.T(i);
+  msg.rms = rig.rms;
   return msg;
 }
 

@@ -1,4 +1,4 @@
-#include "calib/calib_file.h"
+#include "rig/rig_file.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -12,7 +12,7 @@
 #include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
-namespace ws::calib {
+namespace ws {
 namespace {
 
 const std::string kHeader[] = {
@@ -248,49 +248,32 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
 
 }  // namespace
 
-CalibrationFile ToCalibrationFile(const StereoCalibration& c) {
-  CalibrationFile f;
-  f.model = c.model;
-  f.mono = c.mono;
-  f.left = c.left.model;
-  f.right = c.right.model;
-  f.left_rms = c.left.rms_px;
-  f.right_rms = c.right.rms_px;
-  f.left_views = c.left.views;
-  f.right_views = c.right.views;
-  f.R = c.R;
-  f.T = c.T;
-  f.rms = c.rms_px;
-  f.views = c.views;
-  return f;
-}
-
-void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) {
+void WriteCalibrationFile(const std::string& path, const Rig& rig) {
   std::string text;
   {
     cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     for (const std::string& line : kHeader) fs.writeComment(line);
-    if (!file.note.empty()) fs.writeComment(file.note);
-    fs << "model" << ModelName(file.model);
-    WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
-    if (!file.mono) {
-      WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
+    if (!rig.note.empty()) fs.writeComment(rig.note);
+    fs << "model" << ModelName(rig.kind());
+    WriteCamera(fs, "left", rig.left, rig.left_rms, rig.left_views);
+    if (!rig.mono) {
+      WriteCamera(fs, "right", rig.right, rig.right_rms, rig.right_views);
       cv::Mat R(3, 3, CV_64F), T(3, 1, CV_64F);
       for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) R.at<double>(r, c) = file.R(r, c);
-        T.at<double>(r) = file.T(r);
+        for (int c = 0; c < 3; ++c) R.at<double>(r, c) = rig.R(r, c);
+        T.at<double>(r) = rig.T(r);
       }
       fs << "stereo"
          << "{"
-         << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
-         << file.views << "}";
+         << "R" << R << "T" << T << "rms" << rig.rms << "baseline_m" << rig.T.norm() << "views"
+         << rig.views << "}";
     }
     text = fs.releaseAndGetString();
   }
   WriteFileAtomically(path, text);
 }
 
-CalibrationFile ReadCalibrationFile(const std::string& path) {
+Rig ReadCalibrationFile(const std::string& path) {
   const Reader in(path);
   cv::FileStorage fs;
   try {
@@ -304,22 +287,22 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   }
   const cv::FileNode root = fs.root();
   if (!root.isMap()) in.Fail("(file)", "not a map of fields");
-  CalibrationFile f;
-  f.model = ReadModelKind(in, root, "model");
+  Rig f;
+  const ModelKind model = ReadModelKind(in, root, "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
   // A one-camera file has neither "right" nor "stereo".
   f.mono = root["right"].empty() && root["stereo"].empty();
   if (f.mono) {
-    if (f.left.distortion.kind != f.model)
-      in.Fail("model", "'" + ModelName(f.model) + "', but the camera's model is '" +
+    if (f.left.distortion.kind != model)
+      in.Fail("model", "'" + ModelName(model) + "', but the camera's model is '" +
                            ModelName(f.left.distortion.kind) + "'");
     return f;
   }
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
   for (const auto* camera : {&f.left, &f.right})
-    if (camera->distortion.kind != f.model)
+    if (camera->distortion.kind != model)
       in.Fail("model",
-              "'" + ModelName(f.model) + "', but a camera's model is '" + ModelName(camera->distortion.kind) + "'");
+              "'" + ModelName(model) + "', but a camera's model is '" + ModelName(camera->distortion.kind) + "'");
   const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
   if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
   f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);
@@ -336,4 +319,12 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   return f;
 }
 
-}  // namespace ws::calib
+Rig StereoRigFromFile(const std::string& path) {
+  Rig rig = ReadCalibrationFile(path);
+  if (rig.mono)
+    throw CalibrationFileError(path + ": a one-camera calibration (no right camera, no "
+                               "stereo): a stereo rig is needed");
+  return rig;
+}
+
+}  // namespace ws

@@ -5,8 +5,8 @@
 #include "runtime/process.h"
 #include "widestereo/stereo_calibration_t.hpp"
 
-namespace ws::calib {
+namespace ws {
 
 void PublishCalibration(Process& process, const widestereo::stereo_calibration_t& msg);
 
-}  // namespace ws::calib
+}  // namespace ws

@@ -1,27 +1,31 @@
-// A rig and its calibration message convert into each other.
+// A rig and its calibration message convert into each other, its RMS
+// figures with it.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
 #include "lcm_io/validate.h"
-#include "rectify/stereo_rig.h"
+#include "rig/rig_message.h"
 #include "sim/sim_config.h"
 
 namespace {
 
-TEST(StereoRig, MessageOfARigGivesTheRigBack) {
-  ws::StereoRig rig;
+TEST(RigMessage, MessageOfARigGivesTheRigBack) {
+  ws::Rig rig;
   rig.left = rig.right = ws::SimDefaultCamera(0.5);
   rig.right.fx *= 1.01;
   rig.right.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.004}};
   rig.R = Eigen::AngleAxisd(0.02, Eigen::Vector3d(0, 1, 0)).toRotationMatrix();
   rig.T = Eigen::Vector3d(-0.3, 0.01, 0);
-  const widestereo::stereo_calibration_t msg = ws::MessageFromStereoRig(rig, 42);
+  rig.left_rms = 0.125;
+  rig.right_rms = 0.25;
+  rig.rms = 0.5;
+  const widestereo::stereo_calibration_t msg = ws::MessageFromRig(rig, 42);
   EXPECT_NO_THROW(ws::Validate(msg));
   EXPECT_EQ(msg.utime, 42);
   EXPECT_EQ(msg.left.name, "left");
   EXPECT_EQ(msg.right.name, "right");
-  const ws::StereoRig back = ws::StereoRigFromMessage(msg);
+  const ws::Rig back = ws::RigFromMessage(msg);
   for (const auto& [a, b] : {std::pair{&rig.left, &back.left}, std::pair{&rig.right, &back.right}}) {
     EXPECT_EQ(a->image_width, b->image_width);
     EXPECT_EQ(a->Intrinsics(), b->Intrinsics());
@@ -31,6 +35,9 @@ TEST(StereoRig, MessageOfARigGivesTheRigBack) {
   }
   EXPECT_EQ(back.R, rig.R);
   EXPECT_EQ(back.T, rig.T);
+  EXPECT_EQ(back.left_rms, rig.left_rms);
+  EXPECT_EQ(back.right_rms, rig.right_rms);
+  EXPECT_EQ(back.rms, rig.rms);
 }
 
 }  // namespace
