@@ -4,7 +4,11 @@
 //  - STEREO_IMAGES frames lost in transit (frame-id gaps seen here),
 //  - latency from capture (the pair's utime, this host's clock) to the
 //    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
-//  - every process's drop counters from PROCESS_STATUS.
+//  - every process's drop counters from PROCESS_STATUS,
+//  - the latency budget: each process's time per frame for each stage of
+//    its work (PROCESS_STATUS), and the end-to-end median over the sum of
+//    the stage medians from the capture's stamp on (the closer to 1, the
+//    less a frame waits).
 // With --prepare DIR it instead writes the simulator's frames as left*/right*
 // PNG pairs for stereo-capture --source dir:DIR, and the rig's true
 // calibration.yaml for stereo-match.
@@ -38,6 +42,13 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
   ws::calib::WriteCalibrationFile(dir + "/calibration.yaml", ws::TrueCalibration(source->simulator().Truth()));
   std::printf("wrote %d pairs and the true calibration.yaml to %s\n", n, dir.c_str());
   return 0;
+}
+
+// The stages that are not on the way from a pair's capture stamp to its
+// filtered cloud: the capture's reading of the next pair (the stamp is taken
+// after it) and this listener's own.
+bool IsBeforeTheStamp(const std::string& process, const std::string& stage) {
+  return process == "bench_transport" || (process == "stereo-capture" && stage == "read");
 }
 
 double Percentile(std::vector<double> values, double p) {
@@ -107,7 +118,20 @@ int main(int argc, char** argv) {
                     double(c.published - published_before) / seconds);
     }
   }
+  const double median_ms = Percentile(latency_ms, 0.5);
+  std::printf("latency budget (time per frame over each process's last frames, at most %d):\n",
+              ws::StageTimes::kWindow);
+  std::printf("  %-16s %-30s %9s %9s %7s\n", "process", "stage", "median ms", "p99 ms", "frames");
+  double compute_ms = 0;
+  for (const auto& [name, last] : last_status)
+    for (const auto& t : last.first.stages) {
+      std::printf("  %-16s %-30s %9.1f %9.1f %7d\n", name.c_str(), t.stage.c_str(), t.median_ms, t.p99_ms, t.window);
+      if (!IsBeforeTheStamp(name, t.stage)) compute_ms += t.median_ms;
+    }
   std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
-              Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));
+              median_ms, Percentile(latency_ms, 0.99));
+  if (compute_ms > 0)
+    std::printf("latency median / sum of the stage medians after the capture's stamp (%.1f ms): %.2f\n", compute_ms,
+                median_ms / compute_ms);
   return rc;
 }

@@ -74,6 +74,7 @@ void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) { stage_.Offer(msg
 void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   CloudFilterResult result;
   try {
+    StageTimer timer(process_.stage_times(), "filter");
     result = filter_.Run(msg);
   } catch (const std::exception& e) {
     return process_.HandleRejected(channel::kStereoCloud, e.what());

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "lcm_io/channels.h"
@@ -12,7 +13,9 @@ namespace ws {
 
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
-                             const std::string& calibration_source) {
+                             const std::string& calibration_source, StageTimes* times) {
+  std::optional<StageTimer> rectify;
+  if (times) rectify.emplace(*times, "rectify");
   const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
   if (left.size() != rect->input_size || right.size() != rect->input_size)
     throw std::invalid_argument(
@@ -22,6 +25,9 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
+  rectify.reset();
+  std::optional<StageTimer> match;
+  if (times) match.emplace(*times, "match");
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
   matcher.Compute(matched.left_rect(region), matched.right_rect(region))
       .copyTo(matched.disparity(region));
@@ -139,7 +145,7 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
     source = calibration_source_;
   }
   try {
-    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source));
+    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
@@ -147,7 +153,9 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
 
 void MatchNode::Publish(MatchedFrame& matched) {
   try {
+    StageTimer cloud(process_.stage_times(), "cloud");
     const MatchResult result = ToMessages(matched, config_.matcher, config_.cloud);
+    cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);
   } catch (const std::exception& e) {

@@ -39,10 +39,12 @@ struct MatchedFrame {
 
 // Rectifies and matches one frame. Throws std::invalid_argument when the
 // frame's size is not the calibration's; the message names the calibration
-// by `calibration_source` (e.g. its file).
+// by `calibration_source` (e.g. its file). With `times`, the two stages are
+// timed there as "rectify" and "match".
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
-                             const std::string& calibration_source = "the calibration");
+                             const std::string& calibration_source = "the calibration",
+                             StageTimes* times = nullptr);
 // The second stage: the disparity message and the cloud, sampled as
 // `sampling` says.
 MatchResult ToMessages(const MatchedFrame& matched, const MatcherConfig& matcher,

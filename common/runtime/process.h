@@ -35,6 +35,7 @@
 #include "auth/message_auth.h"
 #include "lcm_io/decode.h"
 #include "runtime/process_options.h"
+#include "runtime/stage_times.h"
 #include "runtime/text_log.h"
 #include "widestereo/process_status_t.hpp"
 
@@ -56,13 +57,14 @@ class Process {
   ~Process();
 
   // Decodes, validates and counts every message on `channel`, then calls
-  // `handler`. A message that fails to decode or validate, or whose handler
+  // `handler` with it (the handler may move what it keeps out of it: the
+  // message is the handler's). A message that fails to decode or validate, or whose handler
   // throws, is counted as rejected and logged; the process goes on. Gaps in
   // a message's frame_id are counted as dropped (lost upstream or in transit).
   // Live, at most `queue_capacity` messages wait for the handler (0: LCM's
   // default); LCM drops the oldest beyond that, which shows as a frame_id gap.
   template <class Msg>
-  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+  void Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                  int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
@@ -109,6 +111,11 @@ class Process {
   // second a channel); for handlers that work on another thread.
   void HandleRejected(const std::string& channel, const std::string& why);
   TextLog& log() { return log_; }
+  // The per-frame time of each stage, reported in PROCESS_STATUS. Receiving
+  // and publishing messages that carry a frame_id are timed here ("receive
+  // CHANNEL": decode, validate and the handler; "publish CHANNEL": encode and
+  // send); a process times its own stages with StageTimer.
+  StageTimes& stage_times() { return stage_times_; }
   const ProcessOptions& options() const { return options_; }
 
  private:
@@ -159,6 +166,7 @@ class Process {
   std::vector<std::function<void()>> at_exit_;
   std::function<std::string()> progress_;
   std::vector<std::shared_ptr<void>> handler_contexts_;
+  StageTimes stage_times_;
 };
 
 namespace detail {
@@ -169,12 +177,12 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 }  // namespace detail
 
 template <class Msg>
-void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                         int queue_capacity) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
-  using Context = std::pair<Process*, std::function<void(const Msg&)>>;
+  using Context = std::pair<Process*, std::function<void(Msg&)>>;
   auto context = std::make_shared<Context>(this, std::move(handler));
   handler_contexts_.push_back(context);
   lcm::Subscription* subscription = in->subscribeFunction(
@@ -182,8 +190,10 @@ void Process::Subscribe(const std::string& channel, std::function<void(const Msg
       +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
         Process* self = ctx->first;
         self->Counters(ch).received++;
+        std::optional<StageTimer> timer;
+        if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(self->stage_times_, "receive " + ch);
         try {
-          const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
+          Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
           if constexpr (auth::IsAuthenticated<Msg>::value)
             if (self->auth_) self->auth_->Check(ch, msg, self->Now());
@@ -213,6 +223,8 @@ void Process::Publish(const std::string& channel, const Msg& msg) {
 
 template <class Msg>
 void Process::PublishEncoded(const std::string& channel, const Msg& msg) {
+  std::optional<StageTimer> timer;
+  if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(stage_times_, "publish " + channel);
   std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
   if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0) {
     Counters(channel).dropped++;
