@@ -46,8 +46,8 @@ void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectific
     }));
     bare.push_back(Milliseconds([&] {
       cv::Mat lr, rr, disparity;
-      cv::remap(left, lr, rect.map_left[0], rect.map_left[1], cv::INTER_LINEAR);
-      cv::remap(right, rr, rect.map_right[0], rect.map_right[1], cv::INTER_LINEAR);
+      cv::remap(left, lr, rect.maps_left[0][0], rect.maps_left[0][1], cv::INTER_LINEAR);
+      cv::remap(right, rr, rect.maps_right[0][0], rect.maps_right[0][1], cv::INTER_LINEAR);
       matcher->compute(lr, rr, disparity);
     }));
   }

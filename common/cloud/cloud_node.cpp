@@ -69,7 +69,7 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
 
 CloudNode::~CloudNode() { stage_.Drain(); }
 
-void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) { stage_.Offer(msg); }
+void CloudNode::OnCloud(widestereo::point_cloud_t& msg) { stage_.Offer(std::move(msg)); }
 
 void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   CloudFilterResult result;

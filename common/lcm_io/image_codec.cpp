@@ -85,6 +85,11 @@ void ValidateImage(const image_t& msg) {
 }
 
 cv::Mat ImageToMat(const image_t& msg) {
+  const cv::Mat image = ImageView(msg);
+  return image.data == msg.data.data() ? image.clone() : image;
+}
+
+cv::Mat ImageView(const image_t& msg) {
   ValidateImage(msg);
   if (IsCompressed(msg.pixelformat)) {
     auto require_size = [&](int64_t width, int64_t height) {
@@ -111,12 +116,10 @@ cv::Mat ImageToMat(const image_t& msg) {
   RawLayoutOf(msg.pixelformat, &layout);
   cv::Mat view(msg.height, msg.width, layout.cv_type, const_cast<uint8_t*>(msg.data.data()),
                size_t(msg.row_stride));
-  cv::Mat out;
-  if (msg.pixelformat == image_t::PIXEL_FORMAT_RGB)
-    cv::cvtColor(view, out, cv::COLOR_RGB2BGR);
-  else
-    out = view.clone();
-  return out;
+  if (msg.pixelformat != image_t::PIXEL_FORMAT_RGB) return view;
+  cv::Mat bgr;
+  cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
+  return bgr;
 }
 
 image_t MatToImage(const cv::Mat& mat, int64_t utime, Compression compression, int jpeg_quality) {

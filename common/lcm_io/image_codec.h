@@ -39,6 +39,10 @@ void ValidateImage(const widestereo::image_t& msg);
 // JPEG (MJPEG) and PNG payloads are decoded and must match width and height.
 // The result owns its pixels. Throws DecodeError.
 cv::Mat ImageToMat(const widestereo::image_t& msg);
+// The same without a copy where the payload already is the cv::Mat's pixels
+// (every raw format but RGB): the result then points into msg.data, valid
+// while msg lives unchanged. Throws DecodeError.
+cv::Mat ImageView(const widestereo::image_t& msg);
 
 // Encodes a CV_8UC1, CV_16UC1, CV_8UC3 (BGR) or CV_32FC1 Mat; with jpeg or
 // png compression the payload is that file (JPEG: 8-bit only).

@@ -16,7 +16,8 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
                              const std::string& calibration_source, StageTimes* times) {
   std::optional<StageTimer> rectify;
   if (times) rectify.emplace(*times, "rectify");
-  const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
+  // Views of the frame's payloads (it outlives the remap): no copy.
+  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   if (left.size() != rect->input_size || right.size() != rect->input_size)
     throw std::invalid_argument(
         "frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) + "x" +
@@ -84,7 +85,7 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
     : process_(process),
       config_(std::move(config)),
       rectified_writer_(config_.save_rectified),
-      matcher_(config_.matcher),
+      matcher_(AtMatchScale(config_.matcher)),
       publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
@@ -98,11 +99,14 @@ MatchNode::~MatchNode() { Drain(); }
 
 void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
   const auto start = std::chrono::steady_clock::now();
-  auto rect = std::make_shared<const Rectification>(BuildRectification(rig, config_.rectify));
+  RectifyOptions options = config_.rectify;
+  options.downscale = config_.matcher.downscale;  // straight to the matcher's resolution
+  auto rect = std::make_shared<const Rectification>(BuildRectification(rig, options));
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                       std::to_string(rect->f) + " px, " + RectificationModeName(rect->mode) +
-                      " rectification, baseline = " +
+                      " rectification at " + std::to_string(rect->size.width) + "x" +
+                      std::to_string(rect->size.height) + ", baseline = " +
                       std::to_string(rect->baseline) + " m, " + rig.left.distortion.kind + " model");
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -116,7 +120,7 @@ void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
   SetRig(StereoRigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
-void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
+void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
   bool calibrated;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -128,7 +132,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  match_.Offer(frame);
+  match_.Offer(std::move(frame));
 }
 
 void MatchNode::Drain() {
@@ -154,7 +158,7 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
 void MatchNode::Publish(MatchedFrame& matched) {
   try {
     StageTimer cloud(process_.stage_times(), "cloud");
-    const MatchResult result = ToMessages(matched, config_.matcher, config_.cloud);
+    const MatchResult result = ToMessages(matched, matcher_.config(), config_.cloud);
     cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);

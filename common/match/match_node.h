@@ -58,6 +58,10 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
 // become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
 // files when config.save_rectified says so (rectified_pair_writer.h).
+// The maps rectify straight to the matcher's resolution
+// (RectifyOptions::downscale = MatcherConfig::downscale): the rectified
+// pairs, the disparity (with its f, cx, cy and Q) and the cloud are all on
+// that grid.
 //
 // Live, the two stages run as a small pipeline (runtime/newest_first.h) on
 // two threads of their own, so that the input thread only hands frames over:
@@ -75,7 +79,8 @@ class MatchNode {
   // errors ("calibration file calib.yaml", "STEREO_CALIBRATION").
   void SetRig(const StereoRig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
-  void OnFrame(const widestereo::stereo_frame_t& frame);
+  // Takes the frame's payload (moves it into the pipeline).
+  void OnFrame(widestereo::stereo_frame_t& frame);
   // Returns when every frame handed over has been published or counted.
   void Drain();
 
@@ -86,7 +91,9 @@ class MatchNode {
   Process& process_;
   MatchConfig config_;
   RectifiedPairWriter rectified_writer_;  // used by the publishing stage only
-  DisparityMatcher matcher_;  // used by the matching stage only
+  // At the matcher's resolution (AtMatchScale), as the rectification:
+  // used by the matching stage only, but for its const config().
+  DisparityMatcher matcher_;
   std::mutex rect_mutex_;     // guards rect_ and calibration_source_
   std::shared_ptr<const Rectification> rect_;
   std::string calibration_source_;
