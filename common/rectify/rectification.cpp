@@ -111,7 +111,8 @@ void Remap(const cv::Mat& in, const std::vector<std::array<cv::Mat, 2>>& maps, c
     return;
   }
   const bool integer = in.depth() <= CV_16S;
-  cv::Mat sample, sum(r.size(), CV_MAKETYPE(integer ? CV_32S : CV_64F, in.channels()), cv::Scalar::all(0));
+  const int sum_depth = in.depth() == CV_8U && maps.size() <= 256 ? CV_16U : integer ? CV_32S : CV_64F;
+  cv::Mat sample, sum(r.size(), CV_MAKETYPE(sum_depth, in.channels()), cv::Scalar::all(0));
   for (const auto& m : maps) {
     cv::remap(in, sample, m[0](r), m[1](r), cv::INTER_LINEAR, cv::BORDER_CONSTANT);
     cv::add(sum, sample, sum, cv::noArray(), sum.type());
