@@ -5,16 +5,22 @@
 //  - latency from capture (the pair's utime, this host's clock) to the
 //    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
 //  - every process's drop counters from PROCESS_STATUS,
+//  - every process's CPU share between its first and last heartbeat of the
+//    run (from /proc/PID/stat: the processes run on this host),
 //  - the latency budget: each process's time per frame for each stage of
 //    its work (PROCESS_STATUS), and the end-to-end median over the sum of
-//    the stage medians from the capture's stamp on (the closer to 1, the
-//    less a frame waits).
+//    the stage medians on the chain from the capture's stamp on (the closer
+//    to 1, the less a frame waits).
 // With --prepare DIR it instead writes the simulator's frames as left*/right*
 // PNG pairs for stereo-capture --source dir:DIR, and the rig's true
 // calibration.yaml for stereo-match.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
@@ -44,11 +50,28 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
   return 0;
 }
 
-// The stages that are not on the way from a pair's capture stamp to its
-// filtered cloud: the capture's reading of the next pair (the stamp is taken
-// after it) and this listener's own.
-bool IsBeforeTheStamp(const std::string& process, const std::string& stage) {
-  return process == "bench_transport" || (process == "stereo-capture" && stage == "read");
+// The stages on the way from a pair's capture stamp to its filtered cloud:
+// not the capture's reading of the next pair (the stamp is taken after it),
+// nor those of processes beside the chain (stereo-view, this listener).
+bool OnTheChain(const std::string& process, const std::string& stage) {
+  if (process == "stereo-capture") return stage != "read";
+  return process == "stereo-match" || process == "stereo-cloud";
+}
+
+// User plus system CPU time of a process of this host, seconds; negative when gone.
+double CpuSeconds(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t end = text.rfind(')');  // the name may hold spaces
+  if (end == std::string::npos) return -1;
+  std::istringstream fields(text.substr(end + 2));
+  std::string field;
+  unsigned long long user = 0, system = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) user = std::stoull(field);
+    if (i == 15) system = std::stoull(field);
+  }
+  return double(user + system) / double(sysconf(_SC_CLK_TCK));
 }
 
 double Percentile(std::vector<double> values, double p) {
@@ -75,6 +98,7 @@ int main(int argc, char** argv) {
   std::map<std::string, widestereo::process_status_t> status;
   // Each process's first heartbeat after the first pair, and when it came.
   std::map<std::string, std::pair<widestereo::process_status_t, int64_t>> first_status, last_status;
+  std::map<std::string, double> first_cpu, last_cpu;  // CPU seconds at those heartbeats
   process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
     if (first_id < 0) first_id = f.frame_id, first_utime = ws::WallMicros();
     last_id = f.frame_id;
@@ -90,6 +114,8 @@ int main(int argc, char** argv) {
         if (first_id < 0) return;
         first_status.try_emplace(s.name, s, ws::WallMicros());
         last_status[s.name] = {s, ws::WallMicros()};
+        first_cpu.try_emplace(s.name, CpuSeconds(s.pid));
+        last_cpu[s.name] = CpuSeconds(s.pid);
       });
   process.Every(200000, [&] {
     if (first_id >= 0 && ws::WallMicros() - first_utime >= duration_s * 1e6) process.Stop();
@@ -118,6 +144,12 @@ int main(int argc, char** argv) {
                     double(c.published - published_before) / seconds);
     }
   }
+  std::printf("CPU (share of one core, between each process's first and last heartbeat of the run):\n");
+  for (const auto& [name, last] : last_status) {
+    const double seconds = (last.second - first_status.at(name).second) * 1e-6;
+    if (seconds > 0 && first_cpu[name] >= 0 && last_cpu[name] >= 0)
+      std::printf("  %-16s %5.1f %%\n", name.c_str(), 100 * (last_cpu[name] - first_cpu[name]) / seconds);
+  }
   const double median_ms = Percentile(latency_ms, 0.5);
   std::printf("latency budget (time per frame over each process's last frames, at most %d):\n",
               ws::StageTimes::kWindow);
@@ -126,7 +158,7 @@ int main(int argc, char** argv) {
   for (const auto& [name, last] : last_status)
     for (const auto& t : last.first.stages) {
       std::printf("  %-16s %-30s %9.1f %9.1f %7d\n", name.c_str(), t.stage.c_str(), t.median_ms, t.p99_ms, t.window);
-      if (!IsBeforeTheStamp(name, t.stage)) compute_ms += t.median_ms;
+      if (OnTheChain(name, t.stage)) compute_ms += t.median_ms;
     }
   std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
               median_ms, Percentile(latency_ms, 0.99));

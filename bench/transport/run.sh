@@ -2,27 +2,36 @@
 # Transport benchmark (issue #7): 2 x 1280x960 GRAY8 pairs at RATE Hz
 # (default 15) over udpm on this host, through stereo-match and stereo-cloud,
 # for DURATION seconds (default 60): frames lost in transit, latency from
-# capture to STEREO_CLOUD_FILTERED, and the latency budget (each stage's time
-# per frame). Uses the receive-buffer size the launch files ask for; the
-# kernel grants at most net.core.rmem_max (see docs/launch.md).
+# capture to STEREO_CLOUD_FILTERED, each process's CPU share and the latency
+# budget (each stage's time per frame). Then the same again with stereo-view
+# and one headless Chromium on its page (transport-view.yaml): the first run
+# is the second's baseline. Uses the receive-buffer size the launch files ask
+# for; the kernel grants at most net.core.rmem_max (see docs/launch.md).
 #   bench/transport/run.sh [DURATION] [RATE] [OTHER_TREE]
-# OTHER_TREE: another checkout, built in its build/: its stereo-capture,
-# stereo-match and stereo-cloud run with its own config/ files instead (a
-# baseline measured in the same session), with this tree's listener.
+# OTHER_TREE: another checkout, built in its build/: its stereo-* processes
+# run with its own config/ files instead (a baseline measured in the same
+# session), with this tree's listener.
+# VARIANTS="transport" runs the first launch only.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 DURATION=${1:-60}
 RATE=${2:-15}
 OTHER=${3:-}
+VARIANTS=${VARIANTS:-transport transport-view}
 RUN=logs/bench-transport-$(date +%Y%m%d-%H%M%S)${OTHER:+-other}
 mkdir -p "$RUN/frames"
 echo "net.core.rmem_max = $(sysctl -n net.core.rmem_max)"
 build/bench/bench_transport --prepare "$RUN/frames" --sim config/sim/wall.yaml --log-dir "$RUN" --quiet
 mv "$RUN/frames/calibration.yaml" "$RUN/calibration.yaml"
-python3 - "$RUN/transport.yaml" "$OTHER" <<'PY'
+PORT=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+for variant in $VARIANTS; do
+  mkdir -p "$RUN/$variant"
+  ln -sfn ../frames "$RUN/$variant/frames"
+  ln -sfn ../calibration.yaml "$RUN/$variant/calibration.yaml"
+  python3 - "bench/transport/$variant.yaml" "$RUN/$variant/launch.yaml" "$OTHER" <<'PY'
 import sys, yaml
-out, other = sys.argv[1], sys.argv[2]
-launch = yaml.safe_load(open("bench/transport/transport.yaml"))
+launch_file, out, other = sys.argv[1:]
+launch = yaml.safe_load(open(launch_file))
 for p in launch["processes"]:
     if other and p["name"].startswith("stereo-"):
         p["executable"] = f"{other}/build/bin/{p['name']}"
@@ -30,7 +39,12 @@ for p in launch["processes"]:
             p["config"] = f"{other}/{p['config']}"
 yaml.safe_dump(launch, open(out, "w"), sort_keys=False)
 PY
-echo "${OTHER:-this tree}: capture at $RATE Hz for $DURATION s"
-scripts/launch "$RUN/transport.yaml" --run-dir "$RUN" --no-record \
-  --set "stereo-capture.rate=$RATE" --append "bench_transport=--duration=$DURATION" > "$RUN/launch.out"
-cat "$RUN/bench_transport.out"
+  extra=()
+  [ "$variant" = transport-view ] &&
+    extra=(--append "stereo-view=--port=$PORT" --append "browser=http://127.0.0.1:$PORT/")
+  scripts/launch "$RUN/$variant/launch.yaml" --run-dir "$RUN/$variant" --no-record \
+    --set "stereo-capture.rate=$RATE" --append "bench_transport=--duration=$DURATION" "${extra[@]}" \
+    > "$RUN/$variant/launch.out"
+  echo "== $variant.yaml, ${OTHER:-this tree}: capture at $RATE Hz for $DURATION s"
+  cat "$RUN/$variant/bench_transport.out"
+done

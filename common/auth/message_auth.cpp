@@ -41,10 +41,12 @@ void AuthCheck::CheckSigned(const std::string& channel, const widestereo::auth_t
   if (crypto_verify_32(mac.data(), auth.mac) != 0)
     throw AuthError("refused: its MAC does not match (changed after signing, or forged)");
   const int64_t age = now_us - auth.utime;
-  if (age > kWindowUs || age < -kWindowUs)
-    throw AuthError("refused: signed " + Seconds(age < 0 ? -age : age) + (age < 0 ? " after" : " before") +
-                    " this process's clock, outside the " + Seconds(kWindowUs) + " window (" +
-                    (age < 0 ? "clocks apart?" : "a replay, or clocks apart") + ")");
+  if (age > kWindowUs)
+    throw AuthError("refused: signed " + Seconds(age) + " before this process's clock, outside the " +
+                    Seconds(kWindowUs) + " window (a replay, or clocks apart)");
+  if (age < -max_ahead_us_)
+    throw AuthError("refused: dated " + Seconds(-age) + " after this process's clock, more than the " +
+                    Seconds(max_ahead_us_) + " allowed (clocks apart: synchronise them, or --max-clock-skew)");
   if (auth.utime < not_before_us_)
     throw AuthError("refused: signed " + Seconds(not_before_us_ - auth.utime) +
                     " before this process started (a replay, or clocks apart)");

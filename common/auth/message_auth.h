@@ -7,7 +7,8 @@
 // channel name, a NUL and the encoded message with auth.mac zeroed, so that
 // every field is covered and a message cannot be moved to another channel.
 // A receiver with the key refuses what is unsigned, signed with another key,
-// altered, signed more than kWindowUs from its own clock or before it started
+// altered, signed more than kWindowUs before its own clock or more than a
+// small skew after it, or before it started
 // (its nonces start empty), or a nonce it has accepted before. Process does both for every such type it publishes or
 // subscribes to; Sign() is the one call any other publisher needs.
 #pragma once
@@ -40,8 +41,12 @@ struct IsAuthenticated : std::false_type {};
 template <class Msg>
 struct IsAuthenticated<Msg, std::void_t<decltype(std::declval<Msg>().auth)>> : std::true_type {};
 
-// How far a signed message's time may be from the receiver's clock, either way.
+// How long after its signing a message is still accepted (its nonce kept
+// for as long), and by default how far ahead of the receiver's clock it may
+// be dated: a small skew, so that a message from a sender whose clock runs
+// fast cannot be replayed to a process started after it was sent.
 constexpr int64_t kWindowUs = 30'000'000;
+constexpr int64_t kMaxAheadUs = 2'000'000;
 
 // The MAC of a message on `channel` whose encoding, auth.mac zeroed, is `encoded`.
 std::array<uint8_t, 32> Mac(const RigKey& key, const std::string& channel, const std::vector<uint8_t>& encoded);
@@ -79,13 +84,14 @@ class AuthCheck {
  public:
   // `not_before_us`: the receiver's start; what was signed before it could
   // have been accepted by an earlier run, whose nonces this one does not know.
-  explicit AuthCheck(RigKey key, int64_t not_before_us = std::numeric_limits<int64_t>::min())
-      : key_(std::move(key)), not_before_us_(not_before_us) {}
+  explicit AuthCheck(RigKey key, int64_t not_before_us = std::numeric_limits<int64_t>::min(),
+                     int64_t max_ahead_us = kMaxAheadUs)
+      : key_(std::move(key)), not_before_us_(not_before_us), max_ahead_us_(max_ahead_us) {}
   const RigKey& key() const { return key_; }
 
-  // Throws AuthError unless msg is signed with this key for `channel`, within
-  // kWindowUs of now_us and not before not_before_us, with a nonce not
-  // accepted before.
+  // Throws AuthError unless msg is signed with this key for `channel`, at
+  // most kWindowUs before now_us and max_ahead_us after it, not before
+  // not_before_us, with a nonce not accepted before.
   template <class Msg>
   void Check(const std::string& channel, const Msg& msg, int64_t now_us) {
     if (msg.auth.key_id == 0) throw AuthError("refused: unsigned, and this process requires the rig key's MAC");
@@ -98,6 +104,7 @@ class AuthCheck {
 
   RigKey key_;
   int64_t not_before_us_;
+  int64_t max_ahead_us_;
   std::mutex mutex_;  // guards the two below
   std::deque<std::pair<int64_t, int64_t>> accepted_;  // (signing time, nonce), in order of arrival
   std::unordered_set<int64_t> nonces_;                // the nonces of accepted_

@@ -3,19 +3,20 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 
+#include "models/bspline_basis.h"
 #include "models/model_registry.h"
+#include "models/nonradial_field.h"
+#include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws::calib {
 namespace {
 
-const char* kHeader[] = {
-    "widestereo stereo calibration (docs/models.md). Pixel of a camera-frame point "
-    "(X,Y,Z):",
+const std::string kHeader[] = {
+    std::string(kCalibrationFileTitle) + " (docs/models.md). Pixel of a camera-frame point (X,Y,Z):",
     "  bspline, poly6, poly12: x = X/Z, y = Y/Z (Z > 0);",
     "  kb4, bspline_theta: x = theta X/rho, y = theta Y/rho, rho = sqrt(X^2 + Y^2),",
     "    theta = atan2(rho, Z) (the incidence angle, radians; rays beyond 90 degrees too);",
@@ -91,13 +92,18 @@ class Reader {
     if (!node.isString()) Fail(field, "not a string");
     return static_cast<std::string>(node);
   }
-  std::vector<double> Reals(const cv::FileNode& parent, const std::string& key,
-                            const std::string& field) const {
+  // A list of at most `max_count` numbers, read in one pass (FileNode's
+  // operator[] walks the list from its start: a long list read by index
+  // took quadratic time).
+  std::vector<double> Reals(const cv::FileNode& parent, const std::string& key, const std::string& field,
+                            size_t max_count) const {
     const cv::FileNode node = Required(parent, key, field);
     if (!node.isSeq()) Fail(field, "not a list of numbers");
+    if (node.size() > max_count) Fail(field, "more than " + std::to_string(max_count) + " numbers");
     std::vector<double> values;
-    for (size_t i = 0; i < node.size(); ++i)
-      values.push_back(Number(node[int(i)], field + "[" + std::to_string(i) + "]"));
+    values.reserve(node.size());
+    for (const cv::FileNode& value : node)
+      values.push_back(Number(value, field + "[" + std::to_string(values.size()) + "]"));
     return values;
   }
   Eigen::MatrixXd Matrix(const cv::FileNode& parent, const std::string& key,
@@ -152,10 +158,10 @@ NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::s
   f.cols = in.Int(node, "cols", at + "cols", 4);
   f.rows = in.Int(node, "rows", at + "rows", 4);
   if (f.cols > 64 || f.rows > 64) in.Fail(at + "cols", "at most 64 control points a side");
-  const std::vector<double> domain = in.Reals(node, "domain", at + "domain");
+  const std::vector<double> domain = in.Reals(node, "domain", at + "domain", 4);
   if (domain.size() != 4) in.Fail(at + "domain", "not the 4 numbers s0 s1 t0 t1");
   std::copy(domain.begin(), domain.end(), f.domain.begin());
-  f.coeffs = in.Reals(node, "coeffs", at + "coeffs");
+  f.coeffs = in.Reals(node, "coeffs", at + "coeffs", NonRadialField::kMaxCoeffs);
   if (f.coeffs.size() != size_t(2 * f.cols * f.rows))
     in.Fail(at + "coeffs", std::to_string(f.coeffs.size()) + " numbers, not 2 cols rows = " +
                                std::to_string(2 * f.cols * f.rows));
@@ -194,14 +200,14 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
       in.Fail(at + key, "not a coefficient of a " + d.kind + " model");
   if (IsSpline(d.kind)) {
     d.degree = in.Int(node, "degree", at + "degree", 1);
-    d.knots = in.Reals(node, "knots", at + "knots");
+    d.knots = in.Reals(node, "knots", at + "knots", kMaxKnots);
   } else {
     if (!node["degree"].empty() && in.Int(node, "degree", at + "degree", 0) != 0)
       in.Fail(at + "degree", "must be 0 for " + d.kind);
-    if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots").empty())
+    if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots", kMaxKnots).empty())
       in.Fail(at + "knots", "must be empty for " + d.kind);
   }
-  d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key);
+  d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key, kMaxKnots);
   try {
     MakeModel(d, Coefficients::kAll);
   } catch (const std::exception& e) {
@@ -241,11 +247,10 @@ CalibrationFile ToCalibrationFile(const StereoCalibration& c) {
 }
 
 void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) {
-  const std::string tmp = path + ".tmp";
+  std::string text;
   {
-    cv::FileStorage fs(tmp, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
-    if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
-    for (const char* line : kHeader) fs.writeComment(line);
+    cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
+    for (const std::string& line : kHeader) fs.writeComment(line);
     if (!file.note.empty()) fs.writeComment(file.note);
     fs << "model" << file.model;
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
@@ -261,11 +266,9 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
          << "R" << R << "T" << T << "rms" << file.rms << "baseline_m" << file.T.norm() << "views"
          << file.views << "}";
     }
-    fs.release();
+    text = fs.releaseAndGetString();
   }
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
+  WriteFileAtomically(path, text);
 }
 
 CalibrationFile ReadCalibrationFile(const std::string& path) {

@@ -40,6 +40,10 @@
 
 namespace ws::calib {
 
+// The first words of the comment that opens every file WriteCalibrationFile
+// writes: how a reader tells our file from a foreign one (interop/any_rig.h).
+inline constexpr char kCalibrationFileTitle[] = "widestereo stereo calibration";
+
 struct CalibrationFile {
   std::string model;  // the kind of both cameras' models
   bool mono = false;  // one camera: `left` only, no right, no stereo

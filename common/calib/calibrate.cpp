@@ -108,6 +108,7 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
     result.model = options.model;
     result.mono = true;
     result.left = CalibrateCamera(data.left, options);
+    result.rms_px = result.left.rms_px;  // the rig's RMS is its one camera's
   } else {
     result = SolveStereo(data, options);
   }

@@ -94,7 +94,8 @@ struct StereoCalibration {
   CameraCalibration left, right;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T
   Eigen::Vector3d T = Eigen::Vector3d::Zero();      // metres
-  double rms_px = 0;             // over both cameras' inlier corners of the stereo views
+  double rms_px = 0;             // over both cameras' inlier corners of the stereo views;
+                                 // a one-camera rig: its camera's RMS
   int views = 0;                 // stereo views used
   // Views both cameras saw whose pair fits no rigid rig (a board that moved
   // between the exposures, a misordered right image): out of R, T, each

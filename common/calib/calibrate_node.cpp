@@ -13,9 +13,11 @@
 #include "calib/calib_plots.h"
 #include "calib/calib_publish.h"
 #include "calib/report.h"
+#include "calib/result_message.h"
 #include "calib/table2.h"
 #include "lcm_io/channels.h"
 #include "models/model_registry.h"
+#include "runtime/escaped.h"
 #include "runtime/output_folder.h"
 #include "runtime/wall_clock.h"
 
@@ -118,7 +120,7 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
   }
   std::vector<std::string> models = options_.models;
   CalibrationOptions calibration = options_.calibration;
-  std::string yaml = options_.out_yaml, json = options_.report_json;
+  CommandOutput yaml{FolderOf(options_.out_yaml), "", ".yaml"}, json{FolderOf(options_.report_json), "", ".json"};
   for (const auto& arg : msg.args) {
     const auto eq = arg.find('=');
     const std::string key = arg.substr(0, eq);
@@ -129,15 +131,27 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       else if (key == "knots")
         calibration.knots = ParseKnots(value);
       else if (key == "path")
-        yaml = FileInFolder(FolderOf(options_.out_yaml), value);
+        yaml.name = value;
       else if (key == "report")
-        json = FileInFolder(FolderOf(options_.report_json), value);
+        json.name = value;
+      else if (key == "overwrite" && (value == "0" || value == "1"))
+        yaml.overwrite = json.overwrite = value == "1";
       else
         throw std::invalid_argument("unknown argument");
     } catch (const std::exception& e) {
-      throw std::invalid_argument("command '" + msg.command + "': bad argument '" + arg + "': " + e.what());
+      throw std::invalid_argument("command '" + msg.command + "': bad argument " + Quoted(arg) + ": " + e.what());
     }
   }
+  // The names a save writes: the process's own --out and --report, or new
+  // files of their kinds in their folders.
+  auto named = [&](const CommandOutput& output, const std::string& own) {
+    try {
+      return output.name.empty() ? own : CommandOutputFile(output);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("command '" + msg.command + "': " + Quoted(output.name) + ": " + e.what());
+    }
+  };
+  const std::string yaml_path = named(yaml, options_.out_yaml), json_path = named(json, options_.report_json);
   if (msg.command == "solve") {
     Solve(models, calibration);
   } else if (msg.command == "reset" || msg.command == "restore") {
@@ -160,11 +174,14 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
       std::lock_guard<std::mutex> lock(mutex_);
       last = last_;
     }
-    if (last.solved.empty()) return process_.ReportError("save: nothing solved yet");
+    if (last.solved.empty()) throw std::runtime_error("save: nothing solved yet");
     try {
-      WriteFiles(last, yaml, json);
+      for (const std::string& path : {yaml.name.empty() ? "" : yaml_path, json.name.empty() ? "" : json_path})
+        if (const std::string backup = KeepBackup(path); !backup.empty())
+          process_.log().Info("save: the previous " + path + " kept as " + backup);
+      WriteFiles(last, yaml_path, json_path);
     } catch (const std::exception& e) {
-      process_.ReportError(std::string("save: ") + e.what());
+      throw std::runtime_error(std::string("save: ") + e.what());
     }
   }
 }
@@ -327,6 +344,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
                           std::string(channel::kStereoCalibration));
     else
       PublishCalibration(process_, ToMessage(primary, process_.Now()));
+    process_.Publish(channel::kCalibrationResult, ToResultMessage(results, process_.Now()));
     if (!options_.plot_dir.empty()) {
       try {  // a figure that cannot be drawn (no gnuplot) costs no calibration
         std::filesystem::create_directories(options_.plot_dir);

@@ -20,7 +20,9 @@
 //    every warning that changes the result (views left out, outliers,
 //    models that failed; named by their images when frame_names has them)
 //    on the terminal and in the log; then, once the calibration file is
-//    written, STEREO_CALIBRATION (the model chosen, calibrate.h's Chosen).
+//    written, STEREO_CALIBRATION (the model chosen, calibrate.h's Chosen)
+//    and CALIBRATION_RESULT (the model table and the chosen model's maps,
+//    result_message.h).
 //    A calibration whose file cannot be written is not published.
 //  - --once: solve when a file:// input ends (or at the first solve command),
 //    then exit; exit code 1 when there is no view, or that solve or writing

@@ -92,6 +92,12 @@ CalibrationSession::Outcome CalibrationSession::Add(const widestereo::stereo_cor
 CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::stereo_corners_t& msg,
                                                           std::string* why, bool save) {
   if (msg.left.n <= 0 && msg.right.n <= 0) return Outcome::kNoBoard;
+  if (data_.size() >= options_.max_views) {
+    if (why)
+      *why = "the session holds its maximum of " + std::to_string(options_.max_views) +
+             " views (--max-views); 'reset' archives them and starts again";
+    return Outcome::kRejected;
+  }
   for (const auto* side : {&msg.left, &msg.right}) {
     if (side->n <= 0) continue;
     if (board_id_.empty()) board_id_ = side->board_id;

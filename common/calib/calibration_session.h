@@ -48,6 +48,10 @@ struct SessionOptions {
   double duplicate_px = 0;
   int grid_rows = 6, grid_cols = 8;
   int min_views = 3;
+  // Views the session keeps at most: a flood of views (a peer's, a stream
+  // left running) cannot grow it, its state file or every solve without
+  // bound. Beyond it a view is rejected, saying so.
+  int max_views = 300;
   std::string state_path;  // "" = no state file
 };
 

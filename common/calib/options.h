@@ -86,7 +86,9 @@ enum class FieldRule {
   // The default: per camera, after the radial model, its knots and the
   // board's bow are settled, fields of each of kFieldLadder control points
   // across (rows in proportion to the image) are solved and cross-validated
-  // on the same corners; the grid of the lowest held-out RMS is kept where
+  // on the same corners (every grid: a tilted sensor's field is invisible to
+  // the coarse ones, whose low orders the gauge gives to the pinhole and the
+  // pose, and appears at the finer ones); the grid of the lowest held-out RMS is kept where
   // it beats no field beyond the fold-to-fold noise (ChooseWithinNoise of
   // the two): whether the lens has a non-radial part is a test, how fine a
   // grid it needs the best prediction. A radially symmetric lens comes out

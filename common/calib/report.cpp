@@ -1,12 +1,11 @@
 #include "calib/report.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "calib/table2.h"
 #include "models/model_registry.h"
+#include "runtime/atomic_file.h"
 
 namespace ws::calib {
 namespace {
@@ -202,16 +201,7 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
 }
 
 void WriteJsonFile(const std::string& path, const Json& json) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + path);
-    out << json.dump(2) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + path);
-  }
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) throw std::runtime_error("cannot write " + path + ": " + error.message());
+  WriteFileAtomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace ws::calib

@@ -6,6 +6,7 @@
 
 #include "cloud/pcd_io.h"
 #include "lcm_io/channels.h"
+#include "runtime/escaped.h"
 #include "runtime/output_folder.h"
 
 namespace ws {
@@ -115,15 +116,19 @@ void CloudNode::OnCommand(const widestereo::command_t& command) {
                                 "' (stereo-cloud knows: save [path=NAME.pcd])");
   }
   if (save_.pcd_dir.empty()) throw std::runtime_error("save: stereo-cloud was started without --pcd-dir");
-  const std::string name = Argument(command, "path");
+  const std::string name = Argument(command, "path"), overwrite = Argument(command, "overwrite");
+  if (!overwrite.empty() && overwrite != "0" && overwrite != "1")
+    throw std::invalid_argument("save: overwrite=" + Quoted(overwrite) + ": 0 or 1");
   std::string path;
   try {
-    if (!name.empty()) path = FileInFolder(save_.pcd_dir, name);
+    if (!name.empty()) path = CommandOutputFile({save_.pcd_dir, name, ".pcd", overwrite == "1"});
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("save: path=" + name + ": " + e.what());
+    throw std::invalid_argument("save: path=" + Quoted(name) + ": " + e.what());
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (!newest_) throw std::runtime_error("save: no cloud has been filtered yet");
+  if (const std::string backup = KeepBackup(path); !backup.empty())
+    process_.log().Info("save: the previous " + path + " kept as " + backup);
   Save(*newest_, path.empty() ? PeriodicPath(*newest_) : path);
 }
 
@@ -141,10 +146,12 @@ std::string CloudNode::Progress() const {
   return line;
 }
 
+// A cloud saved by frame id is a new file: a frame id that names one already
+// there (a replay, a peer's chosen id) refuses the save.
 std::string CloudNode::PeriodicPath(const widestereo::point_cloud_t& cloud) const {
   char name[48];
   std::snprintf(name, sizeof name, "cloud_%06lld.pcd", (long long)cloud.frame_id);
-  return (std::filesystem::path(save_.pcd_dir) / name).string();
+  return CommandOutputFile({save_.pcd_dir, name, ".pcd"});
 }
 
 void CloudNode::Save(const widestereo::point_cloud_t& cloud, const std::string& path) {

@@ -11,6 +11,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include "cloud/pcl_cloud.h"
+#include "runtime/atomic_file.h"
 
 namespace ws {
 namespace {
@@ -109,6 +110,22 @@ pcl::PointCloud<PointT> Narrow(const PclCloud& cloud) {
   return narrow;
 }
 
+// The bytes of a binary PCD file of `cloud`, as PCDWriter::writeBinary lays
+// them out (its header, then each point's fields packed, padding left out),
+// for WriteFileAtomically.
+template <class PointT>
+std::string BinaryPcd(const pcl::PointCloud<PointT>& cloud) {
+  std::string bytes = pcl::PCDWriter::generateHeader<PointT>(cloud) + "DATA binary\n";
+  std::vector<pcl::PCLPointField> fields = pcl::getFields<PointT>();
+  fields.erase(std::remove_if(fields.begin(), fields.end(), [](const auto& f) { return f.name == "_"; }),
+               fields.end());
+  for (const PointT& point : cloud.points)
+    for (const pcl::PCLPointField& field : fields)
+      bytes.append(reinterpret_cast<const char*>(&point) + field.offset,
+                   size_t(pcl::getFieldSize(field.datatype)) * field.count);
+  return bytes;
+}
+
 // The blob read as PointT, copied into a PclCloud (intensity 0 when PointT
 // has none).
 template <class PointT>
@@ -125,14 +142,11 @@ PclCloud Widen(const pcl::PCLPointCloud2& blob) {
 
 void WritePcd(const std::string& path, const widestereo::point_cloud_t& msg) {
   const PclCloud::Ptr cloud = ToPcl(msg);
-  int status;
   try {
-    status = msg.nintensity > 0 ? pcl::io::savePCDFileBinary(path, *cloud)
-                                : pcl::io::savePCDFileBinary(path, Narrow<pcl::PointXYZ>(*cloud));
-  } catch (const pcl::IOException& e) {
-    throw PcdError("cannot write PCD '" + path + "': " + e.detailedMessage());
+    WriteFileAtomically(path, msg.nintensity > 0 ? BinaryPcd(*cloud) : BinaryPcd(Narrow<pcl::PointXYZ>(*cloud)));
+  } catch (const std::runtime_error& e) {
+    throw PcdError(std::string("PCD: ") + e.what());
   }
-  if (status != 0) throw PcdError("cannot write PCD '" + path + "'");
 }
 
 widestereo::point_cloud_t ReadPcd(const std::string& path) {

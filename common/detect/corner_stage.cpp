@@ -21,7 +21,12 @@ CornerStage::CornerStage(Process& process, const StereoCornerFinder& finder, int
   process.AtEndOfInput([this] { pipeline_.Drain(); });
 }
 
-CornerStage::~CornerStage() { pipeline_.Drain(); }
+// Live, a stopping detector finishes the frames it is detecting and drops
+// (and counts) the ones it has not begun; from a file it detects them all.
+CornerStage::~CornerStage() {
+  if (!process_.file_input()) images_.dropped += pipeline_.DropNotStarted();
+  pipeline_.Drain();
+}
 
 std::string CornerStage::Progress() const {
   return "boards left " + std::to_string(left_boards_) + " right " + std::to_string(right_boards_) +

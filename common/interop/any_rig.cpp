@@ -13,12 +13,13 @@
 namespace ws {
 namespace {
 
-// Whether a YAML file has a top-level key (a line starting "key:").
-bool HasTopLevelKey(const std::string& path, const std::string& key) {
+// Whether a file has a line starting with `prefix` ("key:" for a YAML
+// file's top-level key).
+bool HasLineStartingWith(const std::string& path, const std::string& prefix) {
   std::ifstream in(path);
   std::string line;
   while (std::getline(in, line))
-    if (line.rfind(key + ":", 0) == 0) return true;
+    if (line.rfind(prefix, 0) == 0) return true;
   return false;
 }
 
@@ -80,8 +81,12 @@ AnyRig LoadAnyRig(const std::string& path) {
   const std::filesystem::path p(path);
   if (!std::filesystem::exists(p)) throw calib::CalibrationFileError(path + ": (file): missing");
   if (std::filesystem::is_directory(p) || p.extension() == ".cameramodel") return FromMrcal(path);
-  if (HasTopLevelKey(path, "cam0")) return ReadKalibrCamchain(path);
-  if (HasTopLevelKey(path, "left") && HasTopLevelKey(path, "model")) return FromCalibrationFile(path);
+  if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
+  // widestereo's own: its header, or (a file edited by hand) its keys; a
+  // file of ours cut short is then refused by our reader, saying so.
+  if (HasLineStartingWith(path, std::string("# ") + calib::kCalibrationFileTitle) ||
+      (HasLineStartingWith(path, "left:") && HasLineStartingWith(path, "model:")))
+    return FromCalibrationFile(path);
   return ReadOpenCvCalibration(path);
 }
 

@@ -9,6 +9,7 @@
 
 #include "calib/calib_file.h"
 #include "interop/number_text.h"
+#include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
@@ -119,7 +120,7 @@ AnyRig ReadKalibrCamchain(const std::string& path) {
 void WriteKalibrCamchain(const std::string& path, const std::vector<KalibrCamera>& cameras,
                          const Eigen::Matrix3d& R, const Eigen::Vector3d& T,
                          const std::vector<std::string>& comments) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (const std::string& line : comments) out << "# " << line << "\n";
   for (size_t i = 0; i < cameras.size(); ++i) {
     const CameraModel& m = *cameras[i].camera;
@@ -143,8 +144,7 @@ void WriteKalibrCamchain(const std::string& path, const std::vector<KalibrCamera
         << "\n  distortion_coeffs: " << List(d.coeffs.data(), int(d.coeffs.size()))
         << "\n  resolution: " << List(resolution, 2) << "\n  rostopic: /cam" << i << "/image_raw\n";
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace ws

@@ -13,6 +13,7 @@
 #include "interop/number_text.h"
 #include "interop/opencv_lens.h"
 #include "interop/python_literal.h"
+#include "runtime/atomic_file.h"
 
 namespace ws {
 namespace {
@@ -85,7 +86,7 @@ MrcalCameraModel ReadMrcalCameraModel(const std::string& path) {
 
 void WriteMrcalCameraModel(const std::string& path, const MrcalCameraModel& m,
                            const std::vector<std::string>& comments) {
-  std::ofstream out(path);
+  std::ostringstream out;
   auto list = [&](const auto& values) { out << "[ " << NumberList(values.data(), int(values.size())) << " ]"; };
   for (const std::string& line : comments) out << "# " << line << "\n";
   out << "{\n    'lensmodel': '" << m.lensmodel << "',\n    # fx, fy, cx, cy, distortion...\n"
@@ -94,8 +95,7 @@ void WriteMrcalCameraModel(const std::string& path, const MrcalCameraModel& m,
   out << ",\n    # rt_fromref\n    'extrinsics': ";
   list(m.extrinsics);
   out << ",\n    'imagersize': [ " << m.width << ", " << m.height << " ],\n}\n";
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteFileAtomically(path, out.str());
 }
 
 std::shared_ptr<const CameraProjection> MrcalCamera(const MrcalCameraModel& m) {

@@ -7,6 +7,7 @@
 #include "calib/calib_file.h"
 #include "interop/foreign_camera.h"
 #include "interop/opencv_lens.h"
+#include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
@@ -102,8 +103,7 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
 void WriteOpenCvStereoFile(const std::string& path, const StereoRig& rig, const Rectification& rect,
                            const std::optional<TargetModel> exact[2],
                            const std::vector<std::string>& comments) {
-  cv::FileStorage fs(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
-  if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
+  cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   for (const std::string& line : comments) fs.writeComment(line);
   fs << "image_width" << rig.left.image_width << "image_height" << rig.left.image_height;
   fs << "distortion_model"
@@ -122,14 +122,15 @@ void WriteOpenCvStereoFile(const std::string& path, const StereoRig& rig, const 
   fs << "R" << R << "T" << T << "R1" << cv::Mat(rect.R_left) << "R2" << cv::Mat(rect.R_right)
      << "P1" << P1 << "P2" << P2 << "Q" << cv::Mat(rect.Q);
   fs << "rectified_width" << rect.size.width << "rectified_height" << rect.size.height;
+  WriteFileAtomically(path, fs.releaseAndGetString());
 }
 
 void WriteRectificationMaps(const std::string& path, const Rectification& rect) {
-  cv::FileStorage fs(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
-  if (!fs.isOpened()) throw std::runtime_error("cannot write " + path);
+  cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   fs.writeComment("cv::remap(image, rectified, map1, map2, cv::INTER_LINEAR, cv::BORDER_CONSTANT)");
   fs << "map1_left" << rect.maps_left.front()[0] << "map2_left" << rect.maps_left.front()[1];
   fs << "map1_right" << rect.maps_right.front()[0] << "map2_right" << rect.maps_right.front()[1];
+  WriteFileAtomically(path, fs.releaseAndGetString());
 }
 
 AnyRig ReadOpenCvCalibration(const std::string& path) {

@@ -1,9 +1,10 @@
 #include "interop/ros_camera_info.h"
 
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "interop/number_text.h"
+#include "runtime/atomic_file.h"
 
 namespace ws {
 namespace {
@@ -17,7 +18,7 @@ std::string Matrix(int rows, int cols, const double* data) {
 
 void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
                         const std::vector<std::string>& comments) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (const std::string& line : comments) out << "# " << line << "\n";
   out << "image_width: " << info.width << "\nimage_height: " << info.height
       << "\ncamera_name: " << info.name << "\ncamera_matrix:" << Matrix(3, 3, info.K.val)
@@ -25,8 +26,7 @@ void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
       << "\ndistortion_coefficients:" << Matrix(1, int(info.D.size()), info.D.data())
       << "\nrectification_matrix:" << Matrix(3, 3, info.R.val)
       << "\nprojection_matrix:" << Matrix(3, 4, info.P.val) << "\n";
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace ws

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detect/board_spec.h"
 #include "lcm_io/image_codec.h"
 #include "models/distortion_function.h"
+#include "models/nonradial_field.h"
 
 namespace ws {
 namespace {
@@ -51,13 +53,25 @@ void Validate(const widestereo::camera_corners_t& msg) {
   Require(msg.n >= 0, t, "negative corner count");
   if (msg.n == 0) return;
   Require(msg.image_width > 0 && msg.image_height > 0, t, "corners without an image size");
+  // At most one point per corner of the board it names, each id on it: a
+  // flood of points is no board (and would cost every solve).
+  // A board of another tool's (imported corners) is bounded by kMaxCorners.
+  constexpr int kMaxCorners = 10000;
+  int corners = kMaxCorners;
+  try {
+    corners = std::min(corners, ParseBoardSpec(msg.board_id).corner_count());
+  } catch (const std::invalid_argument&) {
+  }
+  Require(msg.n <= corners, t,
+          std::to_string(msg.n) + " corners on a board of " + std::to_string(corners));
   for (int i = 0; i < msg.n; ++i) {
     const auto& p = msg.image_points[i];
     const auto& o = msg.object_points[i];
     Require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(o[0]) &&
                 std::isfinite(o[1]) && std::isfinite(o[2]),
             t, "corner " + std::to_string(i) + " is not finite");
-    Require(msg.ids[i] >= 0, t, "corner " + std::to_string(i) + " has a negative id");
+    Require(msg.ids[i] >= 0 && msg.ids[i] < corners, t,
+            "corner " + std::to_string(i) + " has id " + std::to_string(msg.ids[i]) + ", not on the board");
   }
   // Views are paired and compared corner by corner through the ids.
   std::vector<int32_t> ids(msg.ids.begin(), msg.ids.begin() + msg.n);
@@ -95,8 +109,10 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   // The non-radial field: none, or a grid of its coefficients over a
   // rectangle; a correction of more than the focal length is no lens's.
   Require(msg.field_cols == 0 && msg.field_rows == 0 && msg.nfield == 0 ||
-              msg.field_cols >= 4 && msg.field_rows >= 4 && msg.field_cols <= 64 &&
-                  msg.field_rows <= 64 && msg.nfield == 2 * msg.field_cols * msg.field_rows,
+              msg.field_cols >= 4 && msg.field_rows >= 4 &&
+                  msg.field_cols <= NonRadialField::kMaxControlPoints &&
+                  msg.field_rows <= NonRadialField::kMaxControlPoints &&
+                  msg.nfield == 2 * msg.field_cols * msg.field_rows,
           t, "a non-radial field has 4 to 64 control points a side and 2 cols rows coefficients");
   Require(AllFinite(msg.field_domain) && AllFinite(msg.field_coeffs), t,
           "non-finite non-radial field");
@@ -134,11 +150,34 @@ void Validate(const widestereo::calibration_health_t& msg) {
             "negative region match count");
 }
 
+void Validate(const widestereo::calibration_result_t& msg) {
+  const char* t = "calibration_result_t";
+  Require(msg.ncameras == 1 || msg.ncameras == 2, t, "one or two cameras");
+  for (const auto& model : msg.models) {
+    const double figures[] = {model.left_rms, model.left_heldout_rms, model.right_rms,
+                              model.right_heldout_rms, model.stereo_rms};
+    Require(AllFinite(figures), t, "non-finite RMS of model '" + model.model + "'");
+  }
+  for (const auto& camera : msg.cameras) {
+    Require(ImageSizeAcceptable(camera.image_width, camera.image_height), t,
+            "bad image size of camera '" + camera.name + "'");
+    // A map is a handful of cells a side; more is no viewer's business.
+    Require(camera.residual_rows >= 0 && camera.residual_cols >= 0 && camera.residual_rows <= 256 &&
+                camera.residual_cols <= 256 && camera.uncertainty_rows >= 0 &&
+                camera.uncertainty_cols >= 0 && camera.uncertainty_rows <= 256 &&
+                camera.uncertainty_cols <= 256,
+            t, "a map has 0 to 256 cells a side");
+    for (const auto& row : camera.residual_rms_px) Require(AllFinite(row), t, "non-finite residual map");
+    for (const auto& row : camera.uncertainty_px) Require(AllFinite(row), t, "non-finite uncertainty map");
+  }
+}
+
 void Validate(const widestereo::disparity_t& msg) {
   Validate(msg.disparity);
   Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,
           "disparity_t", "disparity must be FLOAT_GRAY32");
   Require(msg.num_disparities > 0, "disparity_t", "num_disparities must be positive");
+  Require(std::isfinite(msg.min_disparity), "disparity_t", "min_disparity must be finite");
   Require(msg.rectification == widestereo::disparity_t::RECTIFICATION_PINHOLE ||
               msg.rectification == widestereo::disparity_t::RECTIFICATION_LATLON,
           "disparity_t", "unknown rectification " + std::to_string(msg.rectification));

@@ -8,6 +8,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "match/match_region.h"
+#include "view/disparity_colour.h"
 
 namespace ws {
 
@@ -84,7 +85,8 @@ typename NewestFirst<T>::Policy Live(const Process& process, typename NewestFirs
 MatchNode::MatchNode(Process& process, MatchConfig config)
     : process_(process),
       config_(std::move(config)),
-      rectified_writer_(config_.save_rectified),
+      rectified_writer_(config_.save_rectified, "--save-rectified"),
+      disparity_writer_(config_.save_disparity, "--save-disparity"),
       matcher_(AtMatchScale(config_.matcher)),
       publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
                [this](MatchedFrame& matched) { Publish(matched); }),
@@ -156,18 +158,25 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
 }
 
 void MatchNode::Publish(MatchedFrame& matched) {
+  std::optional<widestereo::disparity_t> disparity;  // its range and geometry name the legend's metres
   try {
     StageTimer cloud(process_.stage_times(), "cloud");
-    const MatchResult result = ToMessages(matched, matcher_.config(), config_.cloud);
+    MatchResult result = ToMessages(matched, matcher_.config(), config_.cloud);
     cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);
+    disparity = std::move(result.disparity);
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
-  if (!rectified_writer_.Wants(matched.frame_id)) return;
   try {
-    rectified_writer_.Write(matched.frame_id, matched.left_rect, matched.right_rect);
+    if (rectified_writer_.Wants(matched.frame_id))
+      rectified_writer_.Write(matched.frame_id, {{"left", matched.left_rect}, {"right", matched.right_rect}});
+    if (disparity_writer_.Wants(matched.frame_id) && disparity) {
+      const view::DisparityLegend legend = view::MakeLegend(*disparity);
+      disparity_writer_.Write(matched.frame_id,
+                              {{"disparity", view::WithLegend(view::ColourDisparity(ImageToMat(disparity->disparity), legend), legend)}});
+    }
   } catch (const std::exception& e) {
     process_.ReportError(e.what());
   }

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "match/matcher.h"
-#include "match/rectified_pair_writer.h"
+#include "match/frame_image_writer.h"
 #include "rectify/disparity_cloud.h"
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
@@ -21,7 +21,8 @@ struct MatchConfig {
   MatcherConfig matcher;
   RectifyOptions rectify;
   CloudSampling cloud;
-  RectifiedSaveConfig save_rectified;
+  ImageSaveConfig save_rectified;  // left_/right_NNNNNN.png
+  ImageSaveConfig save_disparity;  // disparity_NNNNNN.png, in colour with its legend
 };
 
 struct MatchResult {
@@ -57,7 +58,8 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // Wires MatchFrame to the bus: a calibration file given at the start, and
 // every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
 // become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
-// files when config.save_rectified says so (rectified_pair_writer.h).
+// files and the disparity as a colour PNG with its legend in metres when
+// config.save_rectified and save_disparity say so (frame_image_writer.h).
 // The maps rectify straight to the matcher's resolution
 // (RectifyOptions::downscale = MatcherConfig::downscale): the rectified
 // pairs, the disparity (with its f, cx, cy and Q) and the cloud are all on
@@ -90,7 +92,8 @@ class MatchNode {
 
   Process& process_;
   MatchConfig config_;
-  RectifiedPairWriter rectified_writer_;  // used by the publishing stage only
+  FrameImageWriter rectified_writer_;  // used by the publishing stage only
+  FrameImageWriter disparity_writer_;  // likewise
   // At the matcher's resolution (AtMatchScale), as the rectification:
   // used by the matching stage only, but for its const config().
   DisparityMatcher matcher_;

@@ -19,6 +19,9 @@ void ValidateKnots(const std::vector<double>& knots, int degree) {
     throw std::invalid_argument("a degree-" + std::to_string(degree) + " B-spline needs at least " +
                                 std::to_string(2 * (degree + 1)) + " knots, got " +
                                 std::to_string(knots.size()));
+  if (knots.size() > size_t(kMaxKnots))
+    throw std::invalid_argument("at most " + std::to_string(kMaxKnots) + " knots, got " +
+                                std::to_string(knots.size()));
   for (size_t i = 0; i < knots.size(); ++i) {
     if (!std::isfinite(knots[i]))
       throw std::invalid_argument("knot " + std::to_string(i) + " is not finite");

@@ -27,13 +27,16 @@ namespace ws {
 // Degrees above this are rejected (they are never useful for lens curves, and
 // the bound lets the basis be evaluated without allocating).
 constexpr int kMaxSplineDegree = 10;
+// At most this many knots: far more than any lens needs (--knots auto tries
+// up to 31), few enough that a file or message cannot make a model costly.
+constexpr int kMaxKnots = 512;
 
 // n = knots.size() - degree - 1.
 int NumBasisFunctions(const std::vector<double>& knots, int degree);
 
 // Throws std::invalid_argument unless 1 <= degree <= kMaxSplineDegree, the
 // knots are finite and non-decreasing, there are at least 2 (degree + 1) of
-// them, and the domain [t_K, t_n] is not empty.
+// them and at most kMaxKnots, and the domain [t_K, t_n] is not empty.
 void ValidateKnots(const std::vector<double>& knots, int degree);
 
 // The span l (degree <= l <= n - 1, t_l < t_{l+1}) whose polynomial piece

@@ -8,8 +8,6 @@
 namespace ws {
 namespace {
 
-constexpr int kMaxControlPoints = 64;
-
 // Clamped uniform knots over [lo, hi] for n control points of degree K.
 std::vector<double> KnotsOver(double lo, double hi, int n, int degree) {
   std::vector<double> knots = UniformClampedKnots(hi - lo, n - degree, degree);

@@ -44,10 +44,12 @@ class NonRadialField {
  public:
   static constexpr int kDegree = 3;
   static constexpr int kLocal = (kDegree + 1) * (kDegree + 1);  // control points per point
+  static constexpr int kMaxControlPoints = 64;                    // a side
+  static constexpr int kMaxCoeffs = 2 * kMaxControlPoints * kMaxControlPoints;
 
   NonRadialField() = default;  // none: F = 0
   // Throws std::invalid_argument unless cols, rows are both 0 (none) or both
-  // at least kDegree + 1 (and at most 64), and the rectangle is finite and
+  // at least kDegree + 1 (and at most kMaxControlPoints), and the rectangle is finite and
   // not empty.
   NonRadialField(int cols, int rows, const std::array<double, 4>& domain);
   static NonRadialField FromData(const NonRadial& data) {

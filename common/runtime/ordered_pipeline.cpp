@@ -44,6 +44,14 @@ void OrderedPipeline::Drain() {
     job_done_.wait(lock, [this] { return slots_.empty(); });
 }
 
+int OrderedPipeline::DropNotStarted() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const int dropped = int(slots_.size() - started_);
+  slots_.resize(started_);
+  job_done_.notify_all();
+  return dropped;
+}
+
 int OrderedPipeline::in_flight() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return int(slots_.size());

@@ -61,6 +61,9 @@ class OrderedPipeline {
   bool Submit(Job job);
   // Returns when every accepted job has been delivered.
   void Drain();
+  // Forgets the accepted jobs no worker has started (a live process
+  // stopping: what it has not begun it need not finish); their count.
+  int DropNotStarted();
 
   int in_flight() const;
   // The most jobs that were ever in flight at once.

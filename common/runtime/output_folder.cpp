@@ -2,17 +2,46 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
-namespace ws {
+#include "runtime/atomic_file.h"
 
-std::string FileInFolder(const std::string& folder, const std::string& name) {
-  if (folder.empty()) throw std::invalid_argument("this process was started without a folder for such files");
-  if (name.empty() || name.find('/') != std::string::npos || name.find("..") != std::string::npos)
-    throw std::invalid_argument("'" + name + "' is not a plain file name (no '/', no '..'); files go only into " +
-                                folder);
-  return (std::filesystem::path(folder) / name).string();
+namespace ws {
+namespace {
+
+constexpr size_t kMaxNameBytes = 200;
+
+}  // namespace
+
+std::string CommandOutputFile(const CommandOutput& output) {
+  const std::string& name = output.name;
+  if (output.folder.empty()) throw std::invalid_argument("this process was started without a folder for such files");
+  const bool control = std::any_of(name.begin(), name.end(), [](char c) { return (unsigned char)c < 0x20 || c == 0x7f; });
+  if (name.empty() || name.size() > kMaxNameBytes || control || name.find('/') != std::string::npos ||
+      name.find("..") != std::string::npos)
+    throw std::invalid_argument("not a plain file name (no '/', no '..', no control characters, at most " +
+                                std::to_string(kMaxNameBytes) + " bytes); files go only into " + output.folder);
+  if (name.size() <= output.extension.size() ||
+      name.compare(name.size() - output.extension.size(), std::string::npos, output.extension) != 0)
+    throw std::invalid_argument("this command writes only " + output.extension + " files");
+  const std::string path = (std::filesystem::path(output.folder) / name).string();
+  if (!output.overwrite && PathExists(path))
+    throw std::invalid_argument(path + " exists; overwrite=1 replaces it and keeps the old one as a backup");
+  return path;
+}
+
+std::string KeepBackup(const std::string& path) {
+  if (!PathExists(path)) return "";
+  for (int n = 1; n < 10000; ++n) {
+    const std::string backup = path + "." + std::to_string(n) + ".bak";
+    if (link(path.c_str(), backup.c_str()) == 0) return backup;
+    if (errno != EEXIST) throw std::runtime_error("cannot keep a backup of " + path + ": " + std::strerror(errno));
+  }
+  throw std::runtime_error("cannot keep a backup of " + path + ": 9999 backups already");
 }
 
 void RequireWritableFolderOf(const std::string& option, const std::string& path) {

@@ -60,7 +60,8 @@ Process::Process(const ProcessOptions& options)
   // Live, nothing signed before the start is accepted: an earlier run may have obeyed it.
   if (!options.key_file.empty())
     auth_.emplace(auth::RigKey::FromFile(options.key_file),
-                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_);
+                  file_input_ ? std::numeric_limits<int64_t>::min() : start_wall_us_,
+                  int64_t(options.max_clock_skew_s * 1e6));
   if ((file_input_ || options_.batch) && options_.out_url.empty()) {
     const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
                                                        : options_.batch_out;
@@ -230,12 +231,29 @@ void Process::HandleRejected(const std::string& channel, const std::string& why)
                std::to_string(Counters(channel).rejected.load()) + " so far): " + why);
 }
 
+// Frame ids as unsigned, wrap-safe counters: the frames missed between two
+// ids are (id - last - 1) mod 2^64. An id that repeats or steps back a
+// little (a sender started anew) starts the count again; one that jumps
+// further than kMaxFrameGap either way (a sender's reset, a peer's forged
+// id) does too, and is reported, not counted as lost frames.
 void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  auto it = last_frame_id_.find(channel);
-  if (it != last_frame_id_.end() && frame_id > it->second + 1)
-    counters_[channel]->dropped += frame_id - it->second - 1;
-  last_frame_id_[channel] = frame_id;
+  constexpr uint64_t kMaxFrameGap = 1'000'000;  // 9 h at 30 Hz
+  bool reset = false;
+  int64_t last = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = last_frame_id_.find(channel);
+    if (it != last_frame_id_.end()) {
+      last = it->second;
+      const uint64_t missed = uint64_t(frame_id) - uint64_t(last) - 1;
+      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed);
+      else reset = missed < uint64_t(-1) - kMaxFrameGap;  // not a repeat or a small step back
+    }
+    last_frame_id_[channel] = frame_id;
+  }
+  if (reset)
+    ReportError(channel + ": frame id jumped from " + std::to_string(last) + " to " + std::to_string(frame_id) +
+                ": counted as the sender's reset, not as lost frames");
 }
 
 void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes) {

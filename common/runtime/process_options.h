@@ -21,6 +21,10 @@ struct ProcessOptions {
   std::string batch_out;
   std::string log_dir = "logs";
   std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
+  // How far ahead of this process's clock a signed message may be dated:
+  // a sender's clock that runs fast by more is refused, so that "signed
+  // before this process started" also holds for it (docs/security.md).
+  double max_clock_skew_s = 2;
   bool quiet = false;
 };
 

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "runtime/escaped.h"
+
 namespace ws {
 namespace {
 
@@ -37,11 +39,12 @@ TextLog::TextLog(const std::string& name, const std::string& log_dir, bool quiet
 void TextLog::Info(const std::string& line) { Write("info", line); }
 void TextLog::Detail(const std::string& line) {
   std::lock_guard<std::mutex> lock(mutex_);
-  file_ << WallClockText() << " detail " << line << '\n';
+  file_ << WallClockText() << " detail " << Escaped(line) << '\n';
 }
 void TextLog::Error(const std::string& line) { Write("error", line); }
 
-void TextLog::Write(const char* level, const std::string& line) {
+void TextLog::Write(const char* level, const std::string& text) {
+  const std::string line = Escaped(text);
   std::lock_guard<std::mutex> lock(mutex_);
   file_ << WallClockText() << ' ' << level << ' ' << line << std::endl;
   if (quiet_ && std::string(level) == "info") return;
@@ -50,7 +53,8 @@ void TextLog::Write(const char* level, const std::string& line) {
   std::fprintf(stderr, "%s: %s\n", name_.c_str(), line.c_str());
 }
 
-void TextLog::Progress(const std::string& line) {
+void TextLog::Progress(const std::string& text) {
+  const std::string line = Escaped(text);
   std::lock_guard<std::mutex> lock(mutex_);
   if (quiet_) return;
   if (tty_) {

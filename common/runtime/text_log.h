@@ -1,5 +1,7 @@
 // A process's text log: every line goes to <log_dir>/<name>.log with a
 // timestamp, and to the terminal; Progress() keeps one updating status line.
+// A line is written escaped (runtime/escaped.h): whatever it holds, it stays
+// one line, so a newline in a name from outside cannot forge another.
 #pragma once
 
 #include <fstream>

@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--nonradial", nonradial,
                  "The lens model's non-radial part, a smooth 2-D field over the image: auto "
-                 "(grids of 4 to 16 control points across tried, the simplest with the lowest "
-                 "held-out RMS kept, none included), none, or COLSxROWS")
+                 "(grids of 4 to 16 control points across tried; the one of the lowest held-out RMS "
+                 "kept where it beats none beyond the fold-to-fold noise), none, or COLSxROWS")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
@@ -112,6 +112,10 @@ int main(int argc, char** argv) {
          "(0: 4 times the noise of its corners, measured from the board's rows and columns: a "
          "board held still)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--max-views", node.session.max_views,
+                 "Views the session keeps at most; more are rejected, counted and logged")
+      ->check(CLI::Range(3, 100000))
       ->capture_default_str();
   app.add_flag("--once", node.once,
                "Solve at the end of a file:// input (or at the first solve command) and exit");

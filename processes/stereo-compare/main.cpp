@@ -10,7 +10,6 @@
 //   stereo-compare calib.yaml mrcal-left/camera-0.cameramodel
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -22,6 +21,7 @@
 #include "calib/projection_diff.h"
 #include "calib/report.h"
 #include "interop/any_rig.h"
+#include "runtime/atomic_file.h"
 
 namespace {
 
@@ -99,9 +99,7 @@ int main(int argc, char** argv) {
       Json cameras = Json::array();
       for (const auto& [name, d] : diffs) cameras.push_back(DiffJson(name, d));
       const Json report{{"a", o.a}, {"b", o.b}, {"cameras", cameras}};
-      std::ofstream out(o.report);
-      out << report.dump(2) << "\n";
-      if (!out) throw std::runtime_error("cannot write the report " + o.report);
+      WriteFileAtomically(o.report, report.dump(2) + "\n");
     }
     if (!o.plot.empty())
       WriteProjectionDiffPng(diffs, title, o.plot);

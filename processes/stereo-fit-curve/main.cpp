@@ -5,7 +5,6 @@
 //   stereo-fit-curve config/lenses/theia-my125m-like.csv --report fit.json --plot fit.png
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@
 #include "models/curve_fit.h"
 #include "models/lens_table.h"
 #include "models/model_registry.h"
+#include "runtime/atomic_file.h"
 
 namespace {
 
@@ -67,9 +67,7 @@ void WriteReport(const Options& options, const LensTable& table, const std::vect
                               {"unit", options.unit},
                               {"rows", table.ideal.size()},
                               {"models", models}};
-  std::ofstream out(options.report);
-  out << report.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write the report " + options.report);
+  WriteFileAtomically(options.report, report.dump(2) + "\n");
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
                      "built; the pairs it skips are counted as dropped in PROCESS_STATUS. With "
-                     "--save-rectified it writes the rectified pairs as PNG files to inspect.");
+                     "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
+                     "--save-disparity the disparity in colour with a legend in metres.");
   ws::MatchConfig config;
   std::string calib_file;
   auto& m = config.matcher;
@@ -63,12 +64,21 @@ int main(int argc, char** argv) {
   auto* save_dir = app.add_option("--save-rectified", config.save_rectified.dir,
                                   "Folder for the rectified pairs as PNG, left_NNNNNN.png and "
                                   "right_NNNNNN.png (NNNNNN: the frame id, 6 digits; created if needed)");
-  app.add_option("--save-every", config.save_rectified.save_every,
-                 "With --save-rectified: write the pairs whose frame id is a multiple of N")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str()
-      ->needs(save_dir);
+  auto* disparity_dir = app.add_option("--save-disparity", config.save_disparity.dir,
+                                       "Folder for the disparity as a colour PNG with its legend in metres, "
+                                       "disparity_NNNNNN.png (created if needed)");
+  int save_every = 1;
+  auto* every = app.add_option("--save-every", save_every,
+                               "With --save-rectified or --save-disparity: write the frames whose frame id is a "
+                               "multiple of N")
+                    ->check(CLI::PositiveNumber)
+                    ->capture_default_str();
   if (auto rc = cli.Parse(argc, argv)) return *rc;
+  if (every->count() && !save_dir->count() && !disparity_dir->count()) {
+    std::fprintf(stderr, "stereo-match: --save-every requires --save-rectified or --save-disparity\n");
+    return 2;
+  }
+  config.save_rectified.save_every = config.save_disparity.save_every = save_every;
   config.rectify.mode = ws::ParseRectificationMode(rectification);
   m.common_field_only = !whole_image;
 

@@ -80,9 +80,26 @@ TEST(MessageAuth, UnsignedForeignStaleAndFutureMessagesAreRefusedWithTheirReason
   EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow - 31000000)),
             "refused: signed 31.0 s before this process's clock, outside the 30.0 s window (a replay, or clocks "
             "apart)");
-  EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow + 31000000)),
-            "refused: signed 31.0 s after this process's clock, outside the 30.0 s window (clocks apart?)");
+  EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow + 2500000)),
+            "refused: dated 2.5 s after this process's clock, more than the 2.0 s allowed (clocks apart: "
+            "synchronise them, or --max-clock-skew)");
+  EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow + 1500000)), "");
   EXPECT_EQ(Refusal(check, Signed(ch::kStereoCommand, kNow - 29000000)), "");
+}
+
+// A sender whose clock runs 20 s fast: its command is refused, so it cannot
+// be obeyed, then replayed to a receiver started after it was sent (whose
+// "signed before I started" it would pass). The skew allowed is the
+// receiver's to set.
+TEST(MessageAuth, ACommandDatedAheadOfTheReceiversClockIsRefused) {
+  const widestereo::command_t ahead = Signed(ch::kStereoCommand, kNow + 20000000);
+  AuthCheck receiver(Key(), kNow - 1000000);
+  EXPECT_NE(Refusal(receiver, ahead).find("dated 20.0 s after"), std::string::npos);
+  AuthCheck restarted(Key(), kNow + 5000000);  // started after the command was sent
+  EXPECT_NE(Refusal(restarted, ahead, ch::kStereoCommand, kNow + 6000000).find("dated 14.0 s after"),
+            std::string::npos);
+  AuthCheck lenient(Key(), kNow - 1000000, 25000000);
+  EXPECT_EQ(Refusal(lenient, ahead), "");
 }
 
 // A receiver that starts afresh knows no nonce: what was signed before its

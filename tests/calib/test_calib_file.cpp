@@ -174,7 +174,7 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
   WriteCalibrationFile(good, SampleFile("bspline"));
   const std::string text = test::ReadFileText(good);
   ASSERT_NO_THROW(ReadCalibrationFile(good));
-  const std::vector<Damage> damages = {
+  std::vector<Damage> damages = {
       {"left:\n   image_width: 1280", "left:\n   image_widht: 1280", "left.image_width", "missing"},
       {"image_height: 960", "image_height: -960", "left.image_height", "below 1"},
       {"image_height: 960", "image_height: 960.5", "left.image_height", "not an integer"},
@@ -194,6 +194,11 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
       {"baseline_m: ", "baseline_m: 3.0\n   was: ", "stereo.baseline_m", "differs from |T|"},
       {"model: bspline\nleft:", "model: poly6\nleft:", "model", "a camera's model is 'bspline'"},
   };
+  // A knot list far longer than any lens needs is refused before it is read
+  // (it was read in quadratic time: 10^7 knots hung the loader).
+  std::string many_knots = "   knots: [ 0., 0., 0., 0.,";
+  for (int i = 0; i < 100000; ++i) many_knots += " 0.5,";
+  damages.push_back({"   knots: [ 0., 0., 0., 0.,", many_knots, "left.knots", "more than 512 numbers"});
   for (const Damage& d : damages) {
     const size_t at = text.find(d.from);
     ASSERT_NE(at, std::string::npos) << d.from;

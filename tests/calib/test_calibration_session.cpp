@@ -39,6 +39,18 @@ class CalibSession : public ::testing::Test {
   const std::string board = "chessboard:12x9:0.04";
 };
 
+// A session keeps at most max_views views: a flood cannot grow it.
+TEST_F(CalibSession, ViewsBeyondTheMaximumAreRejectedSayingWhy) {
+  SessionOptions options;
+  options.max_views = 3;
+  CalibrationSession session(options);
+  for (int v = 0; v < 3; ++v) EXPECT_EQ(session.Add(Message(rig, v, board)), CalibrationSession::Outcome::kAccepted);
+  std::string why;
+  EXPECT_EQ(session.Add(Message(rig, 3, board), &why), CalibrationSession::Outcome::kRejected);
+  EXPECT_EQ(why, "the session holds its maximum of 3 views (--max-views); 'reset' archives them and starts again");
+  EXPECT_EQ(session.views(), 3);
+}
+
 // The rig's corners carry 0.1 px of noise per coordinate; the rows of its
 // barrel lens bend little between neighbours.
 TEST_F(CalibSession, CornerNoiseIsMeasuredFromTheBoardsRowsAndColumns) {

@@ -10,6 +10,7 @@
 #include "calib_process_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -54,7 +55,7 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
     EXPECT_EQ(c.right.image_width, 0);
   }
 
-  const auto run = CalibrateOnce(dir, corners, "mono", {"--model", "poly6"});
+  const auto run = CalibrateOnce(dir, corners, "mono", {"--model", "poly6", "--nonradial", "none"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json report = ReadJson(dir + "/mono.json");
   ASSERT_EQ(report["cameras"].size(), 1u);
@@ -62,14 +63,20 @@ TEST(MonoRig, AFolderOfOneCamerasImagesCalibratesThatCamera) {
   EXPECT_FALSE(report.contains("stereo"));
   const CalibrationFile mono = ReadCalibrationFile(dir + "/mono.yaml");
   EXPECT_TRUE(mono.mono);
+  // The status says the camera's RMS, not the empty stereo one.
+  const auto statuses = ws::test::Messages<widestereo::calibration_status_t>(
+      ws::test::ReadLog(dir + "/mono.lcmlog"), ws::channel::kCalibrationStatus);
+  ASSERT_FALSE(statuses.empty());
+  EXPECT_EQ(statuses.back().state, "solved");
+  EXPECT_NEAR(statuses.back().rms, report["cameras"][0]["rms_px"].get<double>(), 1e-9);
 
   // The same camera as the left one of the stereo set solved in the paper's
   // flow (each camera from its own views), to the last digits.
   const std::string stereo_dir = ws::test::TempDir("mono-rig-stereo");
   const std::string stereo_corners =
       CaptureAndDetect(stereo_dir, "dir:" + ws::test::OpenCvStereoSetDir(), kBoard);
-  const auto stereo_run =
-      CalibrateOnce(stereo_dir, stereo_corners, "stereo", {"--model", "poly6", "--flow", "paper"});
+  const auto stereo_run = CalibrateOnce(stereo_dir, stereo_corners, "stereo",
+                                        {"--model", "poly6", "--nonradial", "none", "--flow", "paper"});
   ASSERT_EQ(stereo_run.exit_code, 0) << stereo_run.output;
   const CalibrationFile stereo = ReadCalibrationFile(stereo_dir + "/stereo.yaml");
   EXPECT_EQ(report["cameras"][0]["views"], ReadJson(stereo_dir + "/stereo.json")["cameras"][0]["views"]);

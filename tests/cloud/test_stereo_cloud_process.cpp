@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -173,8 +174,8 @@ TEST(StereoCloudProcess, CommandsAreCheckedAndCounted) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(errors(), (std::set<std::string>{
                           "STEREO_COMMAND: save: no cloud has been filtered yet",
-                          "STEREO_COMMAND: save: path=../no.pcd: '../no.pcd' is not a plain file name (no '/', "
-                          "no '..'); files go only into " + dir + "/pcd",
+                          "STEREO_COMMAND: save: path='../no.pcd': not a plain file name (no '/', no '..', "
+                          "no control characters, at most 200 bytes); files go only into " + dir + "/pcd",
                           "STEREO_COMMAND: unknown command 'flush' (stereo-cloud knows: save "
                           "[path=NAME.pcd])"}));
   EXPECT_FALSE(std::filesystem::exists(dir + "/no.pcd"));
@@ -190,6 +191,30 @@ TEST(StereoCloudProcess, CommandsAreCheckedAndCounted) {
   EXPECT_EQ(errors(), (std::set<std::string>{"", "STEREO_COMMAND: save: stereo-cloud was started without --pcd-dir"}));
   c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCommand);
   EXPECT_EQ(c.rejected, 1);
+}
+
+// Frame ids are wrap-safe counters: a gap of two is two lost frames; a jump
+// to 2^62 or to INT64_MIN is the sender's reset, reported and not counted as
+// 10^18 drops; INT64_MAX then INT64_MIN is the next frame.
+TEST(StereoCloudProcess, FrameIdJumpsAreResetsNotDrops) {
+  const std::string dir = TempDir("cloud-frame-ids");
+  std::vector<LogEvent> input;
+  int64_t utime = 1000000;
+  for (const int64_t id : {int64_t(1), int64_t(2), int64_t(5), int64_t(1) << 62, INT64_MIN, INT64_MAX, INT64_MIN}) {
+    auto cloud = MakeCloud({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}});
+    cloud.frame_id = id;
+    cloud.utime = utime += 1000000;
+    input.push_back(Event(ws::channel::kStereoCloud, cloud));
+  }
+  const auto r = RunStereoCloud(dir, input);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto c = LastCounters(dir + "/out.lcmlog", "stereo-cloud", ws::channel::kStereoCloud);
+  EXPECT_EQ(c.received, 7);
+  EXPECT_EQ(c.dropped, 2);
+  EXPECT_NE(r.output.find("STEREO_CLOUD: frame id jumped from 5 to 4611686018427387904: counted as the sender's "
+                          "reset, not as lost frames"),
+            std::string::npos)
+      << r.output;
 }
 
 TEST(StereoCloudProcess, BadSettingsAreRefusedWithTheirReason) {

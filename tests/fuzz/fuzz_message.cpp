@@ -16,6 +16,7 @@
 #include "lcm_io/image_codec.h"
 #include "monitor/status_board.h"
 #include "rectify/stereo_rig.h"
+#include "view/page_events.h"
 
 // Not in an anonymous namespace: each binary uses only its type's overload.
 namespace ws::fuzz {
@@ -36,7 +37,11 @@ void Use(const stereo_frame_t& frame) {
   if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
 }
 
-void Use(const disparity_t& disparity) { Use(disparity.disparity); }
+// stereo-view colours every disparity it shows (stereo-match --save-disparity likewise).
+void Use(const disparity_t& disparity) {
+  Use(disparity.disparity);
+  ws::view::DisparityEvent(disparity, 64);
+}
 
 // stereo-match turns a calibration into camera models and unprojects every
 // pixel: a pixel that unprojects must project back onto itself.
@@ -99,14 +104,21 @@ void Show(const Status& status) {
   board.Render(1000000);
 }
 void Use(const process_status_t& status) { Show(status); }
-void Use(const calibration_status_t& status) { Show(status); }
+void Use(const calibration_status_t& status) {
+  Show(status);
+  ws::view::CoverageEvent(status);
+}
 void Use(const calibration_health_t& health) { Show(health); }
 
-// stereo-cloud runs its filter chain on every cloud.
+// stereo-cloud runs its filter chain on every cloud; stereo-view shows it.
 void Use(const point_cloud_t& cloud) {
   static const ws::CloudFilter filter{ws::CloudFilterConfig{}};
+  ws::view::CloudEvent(cloud, 100);
   filter.Run(cloud);
 }
+
+// stereo-view shows every solve's outcome and every calibration status.
+void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
 
 // stereo-calibrate adds every corners message to its session (the view, the
 // coverage grids, the near-duplicate check) and publishes the status.
@@ -114,6 +126,7 @@ void Use(const stereo_corners_t& corners) {
   ws::calib::CalibrationSession session{ws::calib::SessionOptions{}};
   for (int i = 0; i < 2; ++i) session.Add(corners);  // the second one is a near duplicate
   session.Status(0, "collecting", -1);
+  ws::view::CornersEvent(corners);  // stereo-view draws them
   if (session.views() > 1) Violated("the same view was accepted twice");
 }
 

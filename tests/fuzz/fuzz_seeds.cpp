@@ -25,6 +25,7 @@
 #include "rectify/stereo_rig.h"
 #include "sim/sim_config.h"
 #include "widestereo/calibration_health_t.hpp"
+#include "widestereo/calibration_result_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -244,6 +245,25 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   health.grid_dy_px.clear();
   health.grid_matches.clear();
   seeds.Message("unknown-no-grid", health);
+  calibration_result_t result{};
+  result.utime = 1;
+  result.chosen = "bspline";
+  result.models = {{"bspline", "", 0.1, 0.11, 0.12, 0.13, 0.12}, {"poly12", "did not converge", -1, -1, -1, -1, -1}};
+  result.nmodels = 2;
+  camera_maps_t maps{};
+  maps.name = "left";
+  maps.image_width = 640;
+  maps.image_height = 480;
+  maps.residual_rows = 2;
+  maps.residual_cols = 3;
+  maps.residual_rms_px = {{0.1, -1, 0.2}, {0.3, 0.1, -1}};
+  maps.uncertainty_rows = 1;
+  maps.uncertainty_cols = 2;
+  maps.uncertainty_px = {{0.05, 0.4}};
+  result.cameras = {maps, maps};
+  result.cameras[1].name = "right";
+  result.ncameras = 2;
+  seeds.Message("two-models", result);
   command_t command{};
   command.command = "solve";
   command.target = "stereo-calibrate";

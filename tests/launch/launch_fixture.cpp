@@ -12,6 +12,9 @@ std::vector<std::string> LaunchCommand(const std::string& launch_file, const std
                                        const std::string& run_dir, const std::vector<std::string>& extra) {
   std::vector<std::string> argv = {SourceDir() + "/scripts/launch", SourceDir() + "/" + launch_file,
                                    "--lcm-url", lcm_url, "--run-dir", run_dir};
+  // Launches side by side: each page on a free port, not the launch file's one.
+  if (ReadFileText(SourceDir() + "/" + launch_file).find("name: stereo-view") != std::string::npos)
+    argv.insert(argv.end(), {"--set", "stereo-view.port=0"});
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;
 }

@@ -34,7 +34,7 @@ TEST(LaunchRig, RunLaunchOnAFolderAndACalibrationGivenByRigFileAndSet) {
   std::ofstream(dir + "/rig1/rig.yaml") << "source: dir:scene\ncalibration: calib.yaml\noutput: runs\n";
 
   const CommandResult r = RunCommand({SourceDir() + "/scripts/launch", SourceDir() + "/config/launch/run.yaml", "--rig",
-                                      dir + "/rig1/rig.yaml", "--set", "stereo-capture.rate=4", "--lcm-url",
+                                      dir + "/rig1/rig.yaml", "--set", "stereo-capture.rate=4", "--set", "stereo-view.port=0", "--lcm-url",
                                       UniqueUdpmUrl() + "&recv_buf_size=16777216", "--duration", "8"},
                                      120);
   ASSERT_EQ(r.exit_code, 0) << r.output;

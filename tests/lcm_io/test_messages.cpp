@@ -303,6 +303,27 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   corners = Corners();
   corners.ids = {1, 1};  // tests/fuzz: a view with a repeated id was never a near duplicate of itself
   EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
+  // No more points than the board named has corners, every id on it.
+  corners = Corners();
+  corners.ids = {0, 54};
+  EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
+  corners = Corners();
+  corners.board_id = "babelcalib:ov_plane.dsc";  // another tool's board: bounded all the same
+  EXPECT_NO_THROW(ws::Validate(corners));
+  corners.ids = {0, 10000};
+  EXPECT_THROW(ws::Validate(corners), ws::DecodeError);
+  corners = Corners();
+  corners.n = 55;
+  corners.ids.resize(55);
+  for (int i = 0; i < 55; ++i) corners.ids[size_t(i)] = i;
+  corners.image_points.assign(55, {1.0, 1.0});
+  corners.object_points.assign(55, {0.0, 0.0, 0.0});
+  try {
+    ws::Validate(corners);
+    ADD_FAILURE() << "a flood of points passed";
+  } catch (const ws::DecodeError& e) {
+    EXPECT_NE(std::string(e.what()).find("55 corners on a board of 54"), std::string::npos) << e.what();
+  }
   camera_calibration_t calib = Calibration("left");
   calib.model = "fisheye9000";
   EXPECT_THROW(ws::Validate(calib), ws::DecodeError);

@@ -12,7 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "detect/corner_detector.h"
-#include "match/rectified_pair_writer.h"
+#include "match/frame_image_writer.h"
 #include "test_support.h"
 
 namespace ws::test {
@@ -80,8 +80,8 @@ BoardRows MeasureRectifiedBoardRows(const std::string& images, const std::string
   std::mutex mutex;
   cv::parallel_for_(cv::Range(0, int(ids.size())), [&](const cv::Range& range) {
     for (int i = range.start; i < range.end; ++i) {
-      const cv::Mat left = cv::imread(RectifiedImagePath(out_dir, "left", ids[size_t(i)]), cv::IMREAD_GRAYSCALE);
-      const cv::Mat right = cv::imread(RectifiedImagePath(out_dir, "right", ids[size_t(i)]), cv::IMREAD_GRAYSCALE);
+      const cv::Mat left = cv::imread(FrameImagePath(out_dir, "left", ids[size_t(i)]), cv::IMREAD_GRAYSCALE);
+      const cv::Mat right = cv::imread(FrameImagePath(out_dir, "right", ids[size_t(i)]), cv::IMREAD_GRAYSCALE);
       EXPECT_FALSE(left.empty() || right.empty()) << "pair " << ids[size_t(i)];
       if (left.empty() || right.empty()) continue;
       const BoardCorners l = detector->Detect(left), r = detector->Detect(right);

@@ -11,6 +11,7 @@
 #include "match_fixtures.h"
 #include "models/theia_lens.h"
 #include "match/match_node.h"
+#include "models/model_registry.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/process_status_t.hpp"
@@ -232,6 +233,57 @@ TEST(MatchPipeline, BadFramesAndFramesBeforeCalibrationAreCountedNotFatal) {
   EXPECT_EQ(c.received, 3);
   EXPECT_EQ(c.dropped, 1);
   EXPECT_EQ(c.rejected, 2);
+}
+
+// Every model kind of the library works live: a calibration of each kind
+// (no distortion for the ideal-plane models, the equidistant fisheye for the
+// angle models: all their coefficients 0), published one after the other,
+// each followed by a frame. stereo-match adopts each, builds its maps and
+// matches the frame after it.
+TEST(MatchPipeline, EveryModelKindIsAdoptedLive) {
+  const std::string dir = TempDir("match-every-kind");
+  cv::Mat texture(240, 320, CV_8UC1);
+  cv::randu(texture, 0, 255);
+  cv::GaussianBlur(texture, texture, cv::Size(3, 3), 0.8);
+  widestereo::stereo_frame_t frame{};
+  frame.left = ws::MatToImage(texture, 0);
+  cv::Mat shifted;  // the right image: the scene 8 px to the left
+  cv::copyMakeBorder(texture(cv::Rect(8, 0, 312, 240)), shifted, 0, 0, 0, 8, cv::BORDER_REPLICATE);
+  frame.right = ws::MatToImage(shifted, 0);
+  std::vector<LogEvent> events;
+  int64_t utime = 1000000;
+  for (const std::string& kind : ws::ModelKinds()) {
+    const ws::Distortion d = std::visit(
+        [](const auto& model) {
+          const std::vector<double> zeros(size_t(model.NumCoeffs()), 0.0);
+          return model.ToData(zeros.data());
+        },
+        ws::MakeCalibrationModel(kind, {1.2, 6, 3}));
+    auto calib = IdentityCalibration(320, 240, 200, 0.1);
+    for (auto* camera : {&calib.left, &calib.right}) {
+      camera->model = d.kind;
+      camera->degree = d.degree;
+      camera->knots = d.knots;
+      camera->nknots = int(d.knots.size());
+      camera->coeffs = d.coeffs;
+      camera->ncoeffs = int(d.coeffs.size());
+    }
+    calib.utime = utime += 1000000;
+    events.push_back(Event(ws::channel::kStereoCalibration, calib));
+    frame.utime = frame.left.utime = frame.right.utime = utime += 1000000;
+    ++frame.frame_id;
+    events.push_back(Event(ws::channel::kStereoImages, frame));
+  }
+  WriteLog(dir + "/in.lcmlog", events);
+  const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                             "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
+                            120);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string& kind : ws::ModelKinds())
+    EXPECT_NE(r.output.find(", " + kind + " model"), std::string::npos) << kind << "\n" << r.output;
+  const auto out = ReadLog(dir + "/out.lcmlog");
+  EXPECT_EQ(Messages<widestereo::disparity_t>(out, ws::channel::kStereoDisparity).size(), ws::ModelKinds().size());
+  EXPECT_EQ(LastCounters(dir + "/out.lcmlog", "stereo-match", ws::channel::kStereoCalibration).rejected, 0);
 }
 
 }  // namespace

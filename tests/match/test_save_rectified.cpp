@@ -9,7 +9,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "match/rectified_pair_writer.h"
+#include "match/frame_image_writer.h"
 #include "match_fixtures.h"
 #include "test_support.h"
 #include "widestereo/disparity_t.hpp"
@@ -25,7 +25,7 @@ cv::Mat Noise(int seed) {
   return image;
 }
 
-TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
+TEST(SaveRectified, WritesEveryNthFramesPairAndDisparityNamedByItsFrameId) {
   const std::string dir = TempDir("save-rectified");
   auto calibration = IdentityCalibration(96, 64, 80, 0.1);
   calibration.utime = 1;
@@ -40,17 +40,26 @@ TEST(SaveRectified, WritesEveryNthFramesPairNamedByItsFrameId) {
   }
   WriteLog(dir + "/in.lcmlog", events);
   const std::string out = dir + "/rectified";
+  const std::string disparities = dir + "/disparity";
   const auto r = RunCommand({"stereo-match", "--log-dir", dir, "--num-disparities", "16", "--save-rectified", out,
-                             "--save-every", "2", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
+                             "--save-disparity", disparities, "--save-every", "2", "--in-url", "file://" + dir + "/in.lcmlog?speed=0",
                              "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
                             60);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(Messages<widestereo::disparity_t>(ReadLog(dir + "/out.lcmlog"), ws::channel::kStereoDisparity).size(),
             5u);
   for (int id = 0; id < 5; ++id) {
-    const std::string left = ws::RectifiedImagePath(out, "left", id);
-    const std::string right = ws::RectifiedImagePath(out, "right", id);
+    const std::string left = ws::FrameImagePath(out, "left", id);
+    const std::string right = ws::FrameImagePath(out, "right", id);
     EXPECT_EQ(std::filesystem::path(left).filename(), "left_00000" + std::to_string(id) + ".png");
+    const std::string disparity = ws::FrameImagePath(disparities, "disparity", id);
+    EXPECT_EQ(std::filesystem::exists(disparity), id % 2 == 0) << disparity;
+    if (id % 2 == 0) {  // in colour, the legend below the image
+      const cv::Mat colour = cv::imread(disparity, cv::IMREAD_UNCHANGED);
+      EXPECT_EQ(colour.type(), CV_8UC3) << disparity;
+      EXPECT_EQ(colour.cols, 96) << disparity;
+      EXPECT_GT(colour.rows, 64) << disparity;
+    }
     if (id % 2) {
       EXPECT_FALSE(std::filesystem::exists(left)) << left;
       EXPECT_FALSE(std::filesystem::exists(right)) << right;
@@ -68,7 +77,7 @@ TEST(SaveRectified, SaveEveryNeedsAFolderAndAPositiveCount) {
   const std::string dir = TempDir("save-rectified-options");
   auto r = RunCommand({"stereo-match", "--log-dir", dir, "--save-every", "2"}, 30);
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("--save-every requires --save-rectified"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--save-every requires --save-rectified or --save-disparity"), std::string::npos) << r.output;
   r = RunCommand({"stereo-match", "--log-dir", dir, "--save-rectified", dir + "/x", "--save-every", "0"}, 30);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("--save-every"), std::string::npos) << r.output;

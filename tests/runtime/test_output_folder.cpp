@@ -1,25 +1,57 @@
-// FileInFolder: the one rule for every command argument that names a file;
-// RequireWritableFolderOf: an output option checked before any work.
+// CommandOutputFile: the one rule for every command argument that names a
+// file; KeepBackup: what an overwrite keeps; RequireWritableFolderOf: an
+// output option checked before any work.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <stdexcept>
 
+#include "runtime/atomic_file.h"
 #include "runtime/output_folder.h"
 #include "test_support.h"
 
 namespace {
 
-TEST(FileInFolder, OnlyAPlainFileNameInTheFolder) {
-  EXPECT_EQ(ws::FileInFolder("/data/clouds", "cloud.pcd"), "/data/clouds/cloud.pcd");
-  EXPECT_EQ(ws::FileInFolder(".", "calib2.yaml"), "./calib2.yaml");
-  for (const char* name : {"", "/tmp/outside.pcd", "../x.pcd", "..", "sub/x.pcd", "a/../../b", "x..pcd", "/"})
-    EXPECT_THROW(ws::FileInFolder("/data/clouds", name), std::invalid_argument) << name;
+std::string What(const ws::CommandOutput& output) {
   try {
-    ws::FileInFolder("/data/clouds", "../x.pcd");
+    ws::CommandOutputFile(output);
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "'../x.pcd' is not a plain file name (no '/', no '..'); files go only into /data/clouds");
+    return e.what();
   }
-  EXPECT_THROW(ws::FileInFolder("", "cloud.pcd"), std::invalid_argument);
+  return "";
+}
+
+TEST(CommandOutputFile, OnlyANewPlainFileOfTheCommandsKindInTheFolder) {
+  EXPECT_EQ(ws::CommandOutputFile({"/data/clouds", "cloud.pcd", ".pcd"}), "/data/clouds/cloud.pcd");
+  EXPECT_EQ(ws::CommandOutputFile({".", "calib2.yaml", ".yaml"}), "./calib2.yaml");
+  for (const char* name : {"", "/tmp/outside.pcd", "../x.pcd", "..", "sub/x.pcd", "a/../../b.pcd", "x..pcd", "/",
+                           "a\nb.pcd", "tab\t.pcd", ".pcd"})
+    EXPECT_NE(What({"/data/clouds", name, ".pcd"}), "") << name;
+  EXPECT_NE(What({"/data/clouds", std::string(300, 'a') + ".pcd", ".pcd"}), "");
+  EXPECT_EQ(What({"/data/clouds", "../x.pcd", ".pcd"}),
+            "not a plain file name (no '/', no '..', no control characters, at most 200 bytes); files go only "
+            "into /data/clouds");
+  // Another kind: the views state, a log, a recording, a report for a calibration.
+  for (const char* name : {"stereo-calibrate-views.lcmlog", "stereo-calibrate.log", "run.lcmlog", "calib.json"})
+    EXPECT_EQ(What({"/data", name, ".yaml"}), "this command writes only .yaml files") << name;
+  EXPECT_NE(What({"", "cloud.pcd", ".pcd"}), "");
+}
+
+TEST(CommandOutputFile, AnExistingFileOrSymlinkOnlyWithOverwriteAndKeptAsABackup) {
+  const std::string dir = ws::test::TempDir("command-output");
+  ws::WriteFileAtomically(dir + "/refined.yaml", "old\n");
+  std::filesystem::create_symlink("/nonexistent/target.yaml", dir + "/dangling.yaml");
+  EXPECT_EQ(What({dir, "refined.yaml", ".yaml"}),
+            dir + "/refined.yaml exists; overwrite=1 replaces it and keeps the old one as a backup");
+  EXPECT_NE(What({dir, "dangling.yaml", ".yaml"}), "");
+  EXPECT_EQ(ws::CommandOutputFile({dir, "refined.yaml", ".yaml", true}), dir + "/refined.yaml");
+
+  EXPECT_EQ(ws::KeepBackup(dir + "/refined.yaml"), dir + "/refined.yaml.1.bak");
+  EXPECT_EQ(ws::KeepBackup(dir + "/refined.yaml"), dir + "/refined.yaml.2.bak");  // never replaces a backup
+  ws::WriteFileAtomically(dir + "/refined.yaml", "new\n");
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/refined.yaml"), "new\n");
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/refined.yaml.1.bak"), "old\n");
+  EXPECT_EQ(ws::KeepBackup(dir + "/none.yaml"), "");
 }
 
 TEST(RequireWritableFolderOf, AMissingFolderIsAnErrorNamingTheOptionAndTheFolder) {

@@ -1,0 +1,206 @@
+#include "view/view_node.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "runtime/wall_clock.h"
+#include "view/page_events.h"
+#include "widestereo/command_t.hpp"
+
+namespace ws::view {
+namespace {
+
+using Policy = NewestFirst<int>::Policy;
+
+template <class Msg>
+NewestFirst<Msg> Stage(Process& process, const char* channel, std::function<void(Msg&)> work) {
+  return NewestFirst<Msg>(process.file_input() ? NewestFirst<Msg>::Policy::in_line : NewestFirst<Msg>::Policy::newest,
+                          std::move(work), [&process, channel](const Msg&) { process.Counters(channel).skipped++; });
+}
+
+// A stage's work: an event, or the reason it could not be made, counted as rejected.
+template <class Fn>
+void Guarded(Process& process, const char* channel, Fn fn) {
+  try {
+    fn();
+  } catch (const std::exception& e) {
+    process.HandleRejected(channel, e.what());
+  }
+}
+
+}  // namespace
+
+ViewNode::ViewNode(Process& process, EventHub& hub, ViewOptions options)
+    : process_(process),
+      hub_(hub),
+      options_(options),
+      frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
+                                                [this](auto& frame) { ShowFrame(frame); })),
+      disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
+        Guarded(process_, channel::kStereoDisparity,
+                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width)); });
+      })),
+      clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
+        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points));
+      })) {}
+
+ViewNode::~ViewNode() = default;
+
+void ViewNode::SetRig(const StereoRig& rig, const std::string& source) {
+  {
+    std::lock_guard<std::mutex> lock(rig_mutex_);
+    rig_ = rig;
+    rig_source_ = source;
+    rect_.reset();  // rebuilt by the frame thread for the next frame
+  }
+  process_.log().Info("depth view: rectifying with " + source);
+}
+
+std::string ViewNode::CommandsRefused() const {
+  if (process_.options().key_file.empty())
+    return "read-only: stereo-view was started without the rig key (--key-file), so it sends no "
+           "commands";
+  return "";
+}
+
+std::string ViewNode::Command(const std::string& command) {
+  if (std::string why = CommandsRefused(); !why.empty()) return why;
+  if (command != "solve" && command != "save" && command != "reset" && command != "restore")
+    return "unknown command '" + command + "' (solve, save, reset or restore)";
+  widestereo::command_t msg{};
+  msg.utime = WallMicros();
+  msg.command = command;
+  msg.target = "stereo-calibrate";
+  process_.Publish(channel::kStereoCommand, msg);  // signed with the rig key
+  process_.log().Info("sent " + command + " to stereo-calibrate, from the page");
+  return "";
+}
+
+Rectification ShownRectification(const StereoRig& rig, int max_width) {
+  RectifyOptions options;
+  options.mode = RectificationMode::kAuto;
+  options.focal_scale = std::min(1.0, double(max_width) / rig.left.image_width);
+  Rectification rect = BuildRectification(rig, options);
+  if (rect.mode != RectificationMode::kPinhole || options.focal_scale == 1.0) return rect;
+  options.mode = RectificationMode::kPinhole;  // its size is the input's unless given
+  options.size = cv::Size(int(std::lround(rig.left.image_width * options.focal_scale)),
+                          int(std::lround(rig.left.image_height * options.focal_scale)));
+  return BuildRectification(rig, options);
+}
+
+bool ViewNode::Due(int64_t& last_us) {
+  const int64_t now = process_.Now();
+  if (last_us != INT64_MIN && now - last_us < int64_t(1e6 / options_.image_hz)) return false;
+  last_us = now;
+  return true;
+}
+
+void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
+  Guarded(process_, channel::kStereoImages, [&] {
+    std::string event = FrameEvent(frame, options_.max_width);
+    {
+      std::lock_guard<std::mutex> lock(recent_mutex_);
+      recent_[frame.frame_id] = event;
+      if (recent_.size() > kRecentFrames) recent_.erase(recent_.begin());
+    }
+    hub_.Publish("frame", std::move(event));
+    if (IsNoImage(frame.right)) return;
+    std::shared_ptr<const Rectification> rect;
+    {
+      std::lock_guard<std::mutex> lock(rig_mutex_);
+      if (!rig_) return;
+      if (!rect_) rect_ = std::make_shared<const Rectification>(ShownRectification(*rig_, options_.max_width));
+      rect = rect_;
+    }
+    const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
+    if (left.size() != rect->input_size || right.size() != rect->input_size)
+      throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + " is " +
+                                  std::to_string(left.cols) + "x" + std::to_string(left.rows) +
+                                  ", the calibration's images " + std::to_string(rect->input_size.width) +
+                                  "x" + std::to_string(rect->input_size.height));
+    cv::Mat left_rect, right_rect;
+    RectifyPair(*rect, left, right, &left_rect, &right_rect);
+    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width));
+  });
+}
+
+void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
+  std::lock_guard<std::mutex> lock(recent_mutex_);
+  const auto frame = recent_.find(corners.frame_id);
+  if (frame != recent_.end())
+    hub_.Publish("detected", "{\"frame\":" + frame->second + ",\"corners\":" + CornersEvent(corners) + "}");
+}
+
+void ViewNode::PublishView() {
+  nlohmann::json counters = nlohmann::json::object();
+  for (const char* channel : {channel::kStereoImages, channel::kStereoDisparity, channel::kStereoCloudFiltered,
+                              kBrowserCounters}) {
+    const ChannelCounters& c = process_.Counters(channel);
+    counters[channel] = {{"received", c.received.load()},
+                         {"published", c.published.load()},
+                         {"skipped", c.skipped.load()},
+                         {"dropped", c.dropped.load()},
+                         {"rejected", c.rejected.load()}};
+  }
+  std::string rig;
+  {
+    std::lock_guard<std::mutex> lock(rig_mutex_);
+    rig = rig_source_;
+  }
+  const int64_t now = process_.file_input() ? process_.Now() : WallMicros();
+  hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
+                                        {"calibration", rig},
+                                        {"counters", counters},
+                                        {"table", board_.Render(now)}}
+                             .dump());
+}
+
+template <class Msg>
+void ViewNode::SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage) {
+  process_.Subscribe<Msg>(
+      channel,
+      [this, channel, &last_us, &stage](const Msg& msg) {
+        if (Due(last_us))
+          stage.Offer(msg);
+        else
+          process_.Counters(channel).skipped++;
+      },
+      2);  // LCM's queue holds two big messages at most: the stage takes the newest
+}
+
+void ViewNode::Start() {
+  const bool live = !process_.file_input();
+  auto received = [this] { return process_.file_input() ? process_.Now() : WallMicros(); };
+  SubscribeSampled(channel::kStereoImages, last_frame_us_, frames_);
+  process_.Subscribe<widestereo::stereo_corners_t>(
+      channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
+  process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
+    board_.Add(m);
+    hub_.Publish("coverage", CoverageEvent(m));
+  });
+  process_.Subscribe<widestereo::calibration_result_t>(
+      channel::kCalibrationResult, [this](const auto& m) { hub_.Publish("result", ResultEvent(m)); });
+  process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
+    SetRig(StereoRigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
+  });
+  SubscribeSampled(channel::kStereoDisparity, last_disparity_us_, disparities_);
+  SubscribeSampled(channel::kStereoCloudFiltered, last_cloud_us_, clouds_);
+  process_.Subscribe<widestereo::cloud_stats_t>(channel::kCloudStats, [this, received](const auto& m) {
+    board_.Add(m, received());
+    hub_.Publish("cloud_stats", CloudStatsEvent(m));
+  });
+  process_.Subscribe<widestereo::calibration_health_t>(channel::kCalibrationHealth, [this](const auto& m) {
+    board_.Add(m);
+    hub_.Publish("health", HealthEvent(m));
+  });
+  process_.Subscribe<widestereo::process_status_t>(
+      channel::kProcessStatus, [this, received](const auto& m) { board_.Add(m, received()); });
+  process_.Every(1000000, [this] { PublishView(); });
+  if (live) PublishView();
+}
+
+}  // namespace ws::view

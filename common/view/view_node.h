@@ -1,0 +1,99 @@
+// stereo-view's bus side: turns what the page shows into events on an
+// EventHub (view/event_hub.h) and the page's buttons into commands.
+//
+//  - STEREO_IMAGES at most `image_hz` (JPEG, both images; with a calibration
+//    also the rectified pair); STEREO_CORNERS with the image they were found
+//    in (when that frame was one of the last kRecentFrames shown: the
+//    corners of other frames are not drawn), CALIBRATION_STATUS,
+//    CALIBRATION_RESULT: the calibration view;
+//  - STEREO_DISPARITY (colours and legend, at most image_hz),
+//    STEREO_CLOUD_FILTERED (at most image_hz), CLOUD_STATS,
+//    CALIBRATION_HEALTH: the depth view;
+//  - PROCESS_STATUS and the rest: stereo-status's table, every second.
+//
+// The images, disparities and clouds are turned into events on threads of
+// their own (runtime/newest_first.h), so the input thread only hands them
+// over: one that arrives within 1 / image_hz of the last shown, or is
+// replaced by a newer one before its thread took it, is counted as skipped
+// on its channel. From a file:// log everything runs in line.
+//
+// Commands (Command): solve, save, reset, restore to stereo-calibrate, no
+// arguments (the page names no file); sent signed, and only with the rig key.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "monitor/status_board.h"
+#include "rectify/rectification.h"
+#include "runtime/newest_first.h"
+#include "runtime/process.h"
+#include "view/event_hub.h"
+#include "widestereo/disparity_t.hpp"
+#include "widestereo/point_cloud_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
+
+namespace ws::view {
+
+struct ViewOptions {
+  double image_hz = 3;      // images, disparities and clouds shown per second at most
+  int max_width = 640;      // pixels across of the images sent to the page
+  int cloud_points = 20000; // points of a cloud sent to the page at most
+};
+
+// The pseudo-channel of PROCESS_STATUS counting the page's events: published
+// (sent to a browser), skipped (replaced before a slow browser took it).
+inline constexpr const char* kBrowserCounters = "browsers";
+
+// The rectification the page shows: `auto` (stereo-match's default), at a
+// focal length scaled so that the rectified images are at most max_width
+// across (rectified that small, not shrunk after).
+Rectification ShownRectification(const StereoRig& rig, int max_width);
+
+class ViewNode {
+ public:
+  ViewNode(Process& process, EventHub& hub, ViewOptions options);
+  ~ViewNode();
+
+  // The calibration the depth view rectifies with until a STEREO_CALIBRATION comes.
+  void SetRig(const StereoRig& rig, const std::string& source);
+  void Start();
+
+  // Whether the page may send commands, and why not ("" when it may).
+  std::string CommandsRefused() const;
+  // Sends `command` (solve, save, reset, restore) to stereo-calibrate; ""
+  // when sent, else why not (then nothing is sent).
+  std::string Command(const std::string& command);
+
+ private:
+  static constexpr size_t kRecentFrames = 64;  // 21 s at 3 Hz: a slow detector's latency
+
+  bool Due(int64_t& last_us);
+  // Hands a message of `channel` to `stage` when at least 1 / image_hz has
+  // passed since `last_us`; else counts it as skipped.
+  template <class Msg>
+  void SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage);
+  void ShowCorners(const widestereo::stereo_corners_t& corners);
+  void ShowFrame(widestereo::stereo_frame_t& frame);
+  void PublishView();
+
+  Process& process_;
+  EventHub& hub_;
+  ViewOptions options_;
+  StatusBoard board_;
+  int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
+  std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)
+  std::optional<StereoRig> rig_;
+  std::string rig_source_;
+  std::shared_ptr<const Rectification> rect_;
+  std::mutex recent_mutex_;  // guards recent_
+  std::map<int64_t, std::string> recent_;  // the frames shown last, their "frame" events by frame id
+  NewestFirst<widestereo::stereo_frame_t> frames_;
+  NewestFirst<widestereo::disparity_t> disparities_;
+  NewestFirst<widestereo::point_cloud_t> clouds_;
+};
+
+}  // namespace ws::view

@@ -1,0 +1,64 @@
+// stereo-view: the live page of the rig, in any browser: the calibration
+// coach (both images with the corners found, the coverage, after a solve the
+// residual and uncertainty maps and the model table, the hint, the command
+// buttons) and the depth view (the rectified pair, the disparity in metres,
+// the filtered cloud in 3-D, the plane, the health, every process's rates).
+#include <cstdio>
+#include <string>
+
+#include "page_server.h"
+#include "rectify/stereo_rig.h"
+#include "runtime/process.h"
+#include "runtime/process_cli.h"
+#include "view/view_node.h"
+
+int main(int argc, char** argv) {
+  ws::ProcessCli cli("stereo-view",
+                     "Serves the rig's live page over HTTP (open http://ADDRESS:PORT/): the calibration "
+                     "view (both images with the corners found, the coverage, the residual and projection "
+                     "uncertainty maps and the model table after a solve, the hint, buttons for solve, "
+                     "save, reset and restore) and the depth view (the rectified pair, the disparity in "
+                     "metres, the filtered cloud in 3-D, the plane, the health, the processes' rates). "
+                     "Read-only without --key-file; with it the buttons send signed commands to "
+                     "stereo-calibrate. A slow browser only misses updates (counted as skipped on "
+                     "'browsers' in PROCESS_STATUS); the bus is never kept waiting.");
+  auto& app = cli.app();
+  int port = 8077;
+  std::string address = "127.0.0.1", calib_file, three_dir = "/usr/share/javascript/three";
+  ws::view::ViewOptions options;
+  app.add_option("--port", port, "TCP port of the page (0: any free port, printed and logged)")->check(CLI::Range(0, 65535))->capture_default_str();
+  app.add_option("--listen", address,
+                 "Address to listen on: 127.0.0.1 (this host only), 0.0.0.0 (every network: anyone "
+                 "who reaches the port sees the rig, and with the key can command it)")
+      ->capture_default_str();
+  app.add_option("--calib", calib_file,
+                 "Calibration file the depth view rectifies with until a STEREO_CALIBRATION comes")
+      ->check(CLI::ExistingFile);
+  app.add_option("--image-hz", options.image_hz, "Images, disparities and clouds sent to the page per second, at most")
+      ->check(CLI::Range(0.1, 30.0))
+      ->capture_default_str();
+  app.add_option("--max-width", options.max_width, "Pixels across of the images sent to the page, at most")
+      ->check(CLI::Range(64, 4096))
+      ->capture_default_str();
+  app.add_option("--cloud-points", options.cloud_points, "Points of a cloud sent to the page, at most")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  app.add_option("--three-dir", three_dir, "Folder of three.js (Debian's libjs-three)")->capture_default_str();
+  if (auto rc = cli.Parse(argc, argv)) return *rc;
+
+  try {
+    ws::Process process(cli.options());
+    ws::view::EventHub hub;
+    ws::view::ViewNode node(process, hub, options);
+    if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
+    ws::view::PageServer server(process, hub, node, address, port, three_dir);
+    if (!cli.options().quiet)
+      std::printf("stereo-view: open http://%s:%d/\n", address == "0.0.0.0" ? "localhost" : address.c_str(), server.port()),
+          std::fflush(stdout);
+    node.Start();
+    return process.Run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereo-view: %s\n", e.what());
+    return 1;
+  }
+}

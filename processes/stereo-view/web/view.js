@@ -1,0 +1,338 @@
+// stereo-view's page: every topic of the event stream (/events) drawn where it
+// belongs. Numbers the checks read are also kept as data-* attributes.
+"use strict";
+
+const $ = (selector) => document.querySelector(selector);
+const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0 };
+
+// ---- tabs -------------------------------------------------------------------
+for (const tab of document.querySelectorAll(".tab")) {
+  tab.addEventListener("click", () => {
+    for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t === tab);
+    for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== tab.dataset.view;
+    if (tab.dataset.view === "depth") cloudView.resize();
+  });
+}
+
+// ---- drawing helpers --------------------------------------------------------
+function loadImage(jpeg) {
+  return new Promise((resolve) => {
+    const img = new Image();
+    img.onload = () => resolve(img);
+    img.src = "data:image/jpeg;base64," + jpeg;
+  });
+}
+
+// A value in [0, 1] as a colour from dark blue through green to yellow (viridis-like).
+function scaleColour(t) {
+  const stops = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+  t = Math.min(1, Math.max(0, t)) * (stops.length - 1);
+  const i = Math.min(stops.length - 2, Math.floor(t)), f = t - i;
+  return stops[i].map((c, k) => Math.round(c + (stops[i + 1][k] - c) * f));
+}
+
+function fmt(value, digits = 3) { return value === null || value === undefined ? "—" : Number(value).toFixed(digits); }
+
+// ---- calibration view -------------------------------------------------------
+function drawCamera(side) {
+  const figure = $("#cam-" + side), canvas = figure.querySelector("canvas");
+  const image = state.frame && state.frame[side], img = state.images[side];
+  if (!image || !img) return;
+  canvas.width = img.width; canvas.height = img.height;
+  const ctx = canvas.getContext("2d");
+  ctx.drawImage(img, 0, 0);
+  const sx = img.width / image.width, sy = img.height / image.height;
+  // The coverage of the accepted views.
+  const cov = state.coverage;
+  let covered = 0;
+  if (cov && cov.grid_rows > 0) {
+    const grid = cov["coverage_" + side], cw = img.width / cov.grid_cols, ch = img.height / cov.grid_rows;
+    const most = Math.max(1, ...grid.flat());
+    for (let r = 0; r < cov.grid_rows; ++r)
+      for (let c = 0; c < cov.grid_cols; ++c) {
+        const n = grid[r][c];
+        covered += n;
+        ctx.fillStyle = n === 0 ? "rgba(255, 40, 40, 0.28)" : `rgba(30, 90, 255, ${0.12 + 0.4 * n / most})`;
+        ctx.fillRect(c * cw, r * ch, cw, ch);
+      }
+  }
+  figure.dataset.coverage = covered;
+  // The corners of the newest detection.
+  const corners = state.corners && state.corners[side];
+  let drawn = 0;
+  if (corners && state.corners.frame_id === state.frame.frame_id && corners.width === image.width &&
+      corners.height === image.height) {
+    ctx.strokeStyle = "#00ff00";
+    ctx.lineWidth = 2;
+    for (const [u, v] of corners.points) {
+      ctx.beginPath();
+      ctx.arc((u + 0.5) * sx, (v + 0.5) * sy, 4, 0, 2 * Math.PI);
+      ctx.stroke();
+      ++drawn;
+    }
+  }
+  figure.dataset.corners = drawn;
+  figure.dataset.frameId = state.frame.frame_id;
+  figure.querySelector(".info").textContent =
+    `frame ${state.frame.frame_id}, ${image.width}×${image.height}, ${drawn} corners` +
+    (state.corners ? "" : " (waiting for stereo-detect's corners of a frame)");
+}
+
+// At most one redraw per displayed frame, whatever the number of events.
+let redraw = null;
+function drawPair() {
+  if (redraw === null) redraw = requestAnimationFrame(() => { redraw = null; drawCamera("left"); drawCamera("right"); });
+}
+
+// Each image decoded once, when it comes. The calibration view shows what the
+// detector saw: each frame it has found corners in (or none), with them; the
+// newest frames only while no detection came for 30 s (no stereo-detect).
+async function showFrame(frame, corners) {
+  if (!corners && Date.now() - state.detectedAt < 30000) return;
+  const images = {};
+  for (const side of ["left", "right"]) if (frame[side]) images[side] = await loadImage(frame[side].jpeg);
+  state.frame = frame;
+  state.images = images;
+  state.corners = corners;
+  if (corners) state.detectedAt = Date.now();
+  drawPair();
+}
+
+function showCoverage(cov) {
+  state.coverage = cov;
+  $("#calib-state").textContent = cov.state;
+  $("#views").textContent = `${cov.views_left} left, ${cov.views_right} right, ${cov.views_stereo} stereo`;
+  $("#calib-rms").textContent = fmt(cov.rms);
+  $("#calib-heldout").textContent = fmt(cov.heldout_rms);
+  $("#hint").textContent = cov.hint || "—";
+  drawPair();
+}
+
+// A map (rows of values, negative: none) on a canvas, with its largest value.
+function drawMap(title, rows, unit) {
+  const figure = document.createElement("figure"), canvas = document.createElement("canvas");
+  const nrows = rows.length, ncols = nrows ? rows[0].length : 0;
+  canvas.width = 32 * Math.max(1, ncols); canvas.height = 32 * Math.max(1, nrows);
+  canvas.style.width = "320px";
+  const ctx = canvas.getContext("2d");
+  // The scale's top at the 95th percentile, so that a few extreme cells (the
+  // image's corners, far from any view) do not flatten the rest.
+  const values = rows.flat().filter((v) => v >= 0).sort((a, b) => a - b);
+  const most = values.length ? values[Math.floor(0.95 * (values.length - 1))] : 0;
+  ctx.fillStyle = "#ccc";
+  ctx.fillRect(0, 0, canvas.width, canvas.height);
+  rows.forEach((row, r) => row.forEach((v, c) => {
+    if (v < 0) return;
+    const [R, G, B] = scaleColour(most > 0 ? v / most : 0);
+    ctx.fillStyle = `rgb(${R},${G},${B})`;
+    ctx.fillRect(c * 32, r * 32, 32, 32);
+  }));
+  const caption = document.createElement("figcaption");
+  caption.textContent = `${title}: yellow ${fmt(most)} ${unit} or more, up to ${fmt(values[values.length - 1])}; grey: none`;
+  figure.append(canvas, caption);
+  return figure;
+}
+
+function showResult(result) {
+  $("#result").hidden = false;
+  $("#chosen-model").textContent = result.chosen;
+  const body = $("#models tbody");
+  body.replaceChildren();
+  for (const m of result.models) {
+    const tr = document.createElement("tr");
+    tr.dataset.model = m.model;
+    tr.classList.toggle("chosen", m.model === result.chosen);
+    const cells = [m.model, fmt(m.left_rms, 4), fmt(m.left_heldout_rms, 4), fmt(m.right_rms, 4),
+                   fmt(m.right_heldout_rms, 4), fmt(m.stereo_rms, 4), m.error ? "failed: " + m.error : ""];
+    for (const [k, text] of cells.entries()) {
+      const td = document.createElement("td");
+      td.textContent = text;
+      td.className = ["model", "left_rms", "left_heldout_rms", "right_rms", "right_heldout_rms", "stereo_rms", "error"][k];
+      tr.append(td);
+    }
+    for (const key of ["left_rms", "right_rms", "stereo_rms", "left_heldout_rms", "right_heldout_rms"])
+      if (m[key] !== null) tr.dataset[key.replace(/_(\w)/g, (_, c) => c.toUpperCase())] = m[key];
+    body.append(tr);
+  }
+  const maps = $("#maps");
+  maps.replaceChildren();
+  for (const camera of result.cameras) {
+    maps.append(drawMap(camera.name + " residual RMS", camera.residual_rms_px, "px"));
+    maps.append(drawMap(camera.name + " projection uncertainty", camera.uncertainty_px, "px"));
+  }
+}
+
+function showStatus(status) {
+  $("#rates").textContent = status.table;
+  const why = status.commands_refused;
+  for (const button of document.querySelectorAll("button.command")) {
+    button.disabled = why !== "";
+    button.title = why;
+  }
+  if (why) $("#command-why").textContent = why;
+  document.body.dataset.browserSkipped = status.counters.browsers.skipped;
+}
+
+for (const button of document.querySelectorAll("button.command")) {
+  button.addEventListener("click", async () => {
+    const reply = await fetch("command", {
+      method: "POST",
+      headers: { "Content-Type": "application/json", "X-Widestereo-Page": "1" },
+      body: JSON.stringify({ command: button.dataset.command }),
+    });
+    const body = await reply.json();
+    $("#command-why").textContent = reply.ok ? `${button.dataset.command} sent` : body.error;
+  });
+}
+
+// ---- depth view ---------------------------------------------------------------
+async function showRectified(event) {
+  for (const side of ["left", "right"]) {
+    const canvas = $("#rect-" + side + " canvas"), img = await loadImage(event[side]);
+    canvas.width = img.width; canvas.height = img.height;
+    const ctx = canvas.getContext("2d");
+    ctx.drawImage(img, 0, 0);
+    ctx.strokeStyle = "#ffeb3b";
+    ctx.lineWidth = 1;
+    for (let k = 1; k < 8; ++k) {
+      const y = Math.round(k * img.height / 8) + 0.5;
+      ctx.beginPath(); ctx.moveTo(0, y); ctx.lineTo(img.width, y); ctx.stroke();
+    }
+  }
+  $("#rect-right .info").textContent = `frame ${event.frame_id}, ${event.width}×${event.height}`;
+}
+
+function showDisparity(event) {
+  $("#disparity").src = "data:image/jpeg;base64," + event.jpeg;
+  $("#disparity-figure").dataset.frameId = event.frame_id;
+  const legend = $("#legend");
+  legend.replaceChildren();
+  for (const tick of event.ticks) {
+    const span = document.createElement("span");
+    span.dataset.disparity = tick.disparity;
+    span.dataset.metres = tick.metres;
+    span.style.background = `rgb(${tick.rgb.join(",")})`;
+    span.textContent = `${fmt(tick.metres, 2)} m`;
+    legend.append(span);
+  }
+  legend.dataset.f = event.f;
+  legend.dataset.baseline = event.baseline;
+  legend.dataset.rectification = event.rectification;
+  $("#disparity-figure .info").textContent =
+    `frame ${event.frame_id}, ${event.rectification}, disparities ${event.min_disparity} to ${event.max_disparity} px (far to near)`;
+}
+
+function showCloudStats(stats) {
+  $("#cloud-frame").textContent = stats.frame_id;
+  $("#cloud-points").textContent = stats.points;
+  $("#plane").textContent = stats.plane_found
+    ? `n = (${stats.plane_normal.map((v) => fmt(v, 3)).join(", ")}), inlier RMS ${fmt(stats.inlier_rms * 1000, 1)} mm`
+    : "not found";
+  $("#plane-distance").textContent = stats.plane_found ? fmt(Math.abs(stats.plane_offset), 4) : "—";
+  const panel = $("#cloud-points");
+  panel.dataset.frameId = stats.frame_id;
+  panel.dataset.points = stats.points;
+  panel.dataset.planeOffset = stats.plane_offset;
+}
+
+function showHealth(health) {
+  $("#health-verdict").textContent = health.verdict;
+  $("#health-verdict").dataset.verdict = health.verdict;
+  $("#health-dy").textContent = fmt(health.dy_median_px, 3);
+  $("#health-matches").textContent = `${health.matches} matches in ${health.frames} frames`;
+}
+
+// The filtered cloud in 3-D (three.js), in the left rectified frame: x right,
+// y down, z ahead; seen from behind the cameras.
+const cloudView = (() => {
+  const container = $("#cloud");
+  let renderer = null, camera, controls, scene, points = null, last = null, framed = false, pointSize = 0.01;
+  try {
+    renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+    scene = new THREE.Scene();
+    scene.background = new THREE.Color(0x101010);
+    camera = new THREE.PerspectiveCamera(60, 4 / 3, 0.01, 100);
+    camera.up.set(0, -1, 0);
+    camera.position.set(0, -0.5, -1.5);
+    controls = new THREE.OrbitControls(camera, renderer.domElement);
+    controls.target.set(0, 0, 2);
+    controls.update();
+    container.append(renderer.domElement);
+    controls.addEventListener("change", () => renderer.render(scene, camera));
+  } catch (e) {
+    container.textContent = "no WebGL in this browser: " + e.message;
+    renderer = null;
+  }
+  function resize() {
+    if (!renderer) return;
+    const w = container.clientWidth || 480, h = container.clientHeight || 360;
+    renderer.setSize(w, h, false);
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+    renderer.render(scene, camera);
+  }
+  function show(event) {
+    last = event || last;
+    if (!last) return;
+    const bytes = Uint8Array.from(atob(last.xyz), (c) => c.charCodeAt(0));
+    const xyz = new Float32Array(bytes.buffer);
+    container.dataset.frameId = last.frame_id;
+    container.dataset.shown = xyz.length / 3;
+    $("#cloud-figure .info").textContent = `frame ${last.frame_id}: ${last.npoints} points, ${xyz.length / 3} shown`;
+    if (!renderer) return;
+    const byRange = $("#colour-by").value === "range";
+    const values = new Float32Array(xyz.length / 3);
+    for (let i = 0; i < values.length; ++i) {
+      const x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
+      values[i] = byRange ? Math.hypot(x, y, z) : -y;
+    }
+    let lo = Infinity, hi = -Infinity;
+    for (const v of values) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+    const colours = new Float32Array(xyz.length);
+    values.forEach((v, i) => {
+      const rgb = scaleColour(hi > lo ? (v - lo) / (hi - lo) : 0.5);
+      for (let k = 0; k < 3; ++k) colours[3 * i + k] = rgb[k] / 255;
+    });
+    if (!framed) {  // the first cloud: look at it from behind the cameras, above and to the left
+      framed = true;
+      let c = [0, 0, 0];
+      for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
+      let r = 0;
+      for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
+      r = Math.max(r, 0.1);
+      controls.target.set(c[0], c[1], c[2]);
+      camera.position.set(c[0] - 0.9 * r, c[1] - 0.8 * r, c[2] - 1.6 * r);
+      pointSize = r / 120;
+      controls.update();
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position", new THREE.BufferAttribute(xyz, 3));
+    geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
+    if (points) { scene.remove(points); points.geometry.dispose(); }
+    points = new THREE.Points(geometry, new THREE.PointsMaterial({ size: pointSize, vertexColors: THREE.VertexColors }));
+    scene.add(points);
+    renderer.render(scene, camera);
+  }
+  $("#colour-by").addEventListener("change", () => show(null));
+  return { show, resize };
+})();
+
+// ---- the event stream ---------------------------------------------------------
+function connect() {
+  const source = new EventSource("events");
+  const on = (topic, fn) => source.addEventListener(topic, (e) => fn(JSON.parse(e.data)));
+  source.onopen = () => { $("#connection").textContent = "live"; $("#connection").className = "on"; };
+  source.onerror = () => { $("#connection").textContent = "reconnecting…"; $("#connection").className = "off"; };
+  on("frame", (e) => showFrame(e, null));
+  on("detected", (e) => showFrame(e.frame, e.corners));
+  on("coverage", showCoverage);
+  on("result", showResult);
+  on("status", showStatus);
+  on("rectified", showRectified);
+  on("disparity", showDisparity);
+  on("cloud", (e) => cloudView.show(e));
+  on("cloud_stats", showCloudStats);
+  on("health", showHealth);
+}
+cloudView.resize();
+connect();

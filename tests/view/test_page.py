@@ -1,0 +1,268 @@
+"""stereo-view's page in Debian's headless Chromium (Selenium), over real LCM:
+the simulated rig's processes on a bus of their own (udpm, ttl 0), lcm-logger
+recording it, and the page checked against what the bus carried."""
+import json
+import os
+import random
+import secrets
+import signal
+import socket
+import subprocess
+import time
+import urllib.request
+
+import cv2
+import numpy as np
+import pytest
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+
+import widestereo
+
+SOURCE = os.environ.get("WS_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BUILD = os.environ.get("WS_BINARY_DIR", os.path.join(SOURCE, "build"))
+BIN = os.path.join(BUILD, "bin")
+CALIBRATION = os.path.join(SOURCE, "config", "calib", "sim-default.yaml")
+
+
+def until(condition, timeout, what):
+    """Polls condition() until it is true (returns its value) or fails the test after timeout seconds."""
+    end = time.monotonic() + timeout
+    while True:
+        value = condition()
+        if value:
+            return value
+        if time.monotonic() > end:
+            pytest.fail("after %.0f s still not: %s" % (timeout, what))
+        time.sleep(0.1)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Bus:
+    """Processes on a private udpm bus, each with its output in the test's folder, and a recording."""
+
+    def __init__(self, folder, channels):
+        self.folder = str(folder)
+        # Ports apart from the other tests' (tests/support UniqueUdpmUrl: 20000 to 39999).
+        self.url = "udpm://239.255.76.67:%d?ttl=0&recv_buf_size=16777216" % random.randrange(41000, 49000)
+        self.log = os.path.join(self.folder, "bus.lcmlog")
+        self.processes = []
+        self.start("lcm-logger", ["-f", "-s", "--channel=" + channels, "--lcm-url=" + self.url, self.log], own=False)
+
+    def start(self, name, args, own=True):
+        executable = os.path.join(BIN, name) if own else name
+        argv = [executable] + args
+        if own:
+            argv += ["--in-url", self.url, "--out-url", self.url, "--log-dir", self.folder]
+        out = open(os.path.join(self.folder, "%s-%d.out" % (name, len(self.processes))), "w")
+        process = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, cwd=SOURCE)
+        self.processes.append((name, process, out.name))
+        return process
+
+    def page(self, port, process):
+        """Waits for stereo-view to serve its page; its address."""
+        address = "http://127.0.0.1:%d/" % port
+
+        def up():
+            assert process.poll() is None, "stereo-view ended: " + self.output("stereo-view")
+            try:
+                return urllib.request.urlopen(address, timeout=1).status == 200
+            except OSError:
+                return False
+        until(up, 30, "stereo-view serves " + address)
+        return address
+
+    def output(self, name):
+        return "\n".join(open(path).read() for n, _, path in self.processes if n == name)
+
+    def stop(self):
+        for _, process, _ in reversed(self.processes):
+            if process.poll() is None:
+                process.send_signal(signal.SIGINT)
+        for name, process, path in reversed(self.processes):
+            try:
+                process.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+
+    def events(self, channel):
+        return [e.message for e in widestereo.read_log(self.log, channels={channel})]
+
+
+@pytest.fixture
+def bus(tmp_path, request):
+    """The bus, recording the channels the test's `recorded` mark names (not the images: GBs)."""
+    b = Bus(tmp_path, request.node.get_closest_marker("recorded").args[0])
+    yield b
+    b.stop()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    options = webdriver.ChromeOptions()
+    for flag in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1400,1200",
+                 "--enable-unsafe-swiftshader", "--use-angle=swiftshader"):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    driver.set_script_timeout(120)  # a loaded machine's renderer may lag behind
+    yield driver
+    driver.quit()
+
+
+def attribute(driver, selector, name):
+    return driver.find_element(By.CSS_SELECTOR, selector).get_attribute(name)
+
+
+def green_pixels(png):
+    image = cv2.imdecode(np.frombuffer(png, np.uint8), cv2.IMREAD_COLOR)
+    b, g, r = image[:, :, 0].astype(int), image[:, :, 1].astype(int), image[:, :, 2].astype(int)
+    return int(np.count_nonzero((g > 180) & (r < 90) & (b < 90)))
+
+
+def screenshot(driver, bus, name):
+    path = os.path.join(bus.folder, name)
+    driver.save_screenshot(path)
+    return path
+
+
+def key_file(folder):
+    path = os.path.join(str(folder), "rig.key")
+    with os.fdopen(os.open(path, os.O_WRONLY | os.O_CREAT, 0o600), "wb") as f:
+        f.write(secrets.token_bytes(32))
+    return path
+
+
+@pytest.mark.recorded("STEREO_COMMAND")
+def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, browser, tmp_path):
+    key = key_file(tmp_path)
+    report = os.path.join(bus.folder, "report.json")
+    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop"])
+    bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05"])
+    # The quickest solve: one model, no non-radial field or board bow to choose.
+    bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
+                                   "--report", report, "--key-file", key])
+    keyed_port, open_port = free_port(), free_port()
+    keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
+    readonly = bus.start("stereo-view", ["--port", str(open_port)])
+
+    # Both images, the corners drawn on them (in the DOM and in the pixels).
+    browser.get(bus.page(keyed_port, keyed))
+
+    def corners_drawn(side):  # the page redraws at every frame: both checks at one moment
+        canvas = browser.find_element(By.CSS_SELECTOR, "#cam-%s canvas" % side)
+        return green_pixels(canvas.screenshot_as_png) > 50 and int(attribute(browser, "#cam-" + side, "data-corners")) > 0
+    until(lambda: corners_drawn("left") and corners_drawn("right"), 180, "corners drawn on both images")
+
+    # The coverage grows as views are accepted.
+    until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 60, "coverage shown")
+    first = int(attribute(browser, "#cam-left", "data-coverage"))
+    until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > first, 180, "the coverage grows")
+    screenshot(browser, bus, "calibration-collecting.png")
+
+    # Without the key: the buttons are disabled, say why, and the server sends nothing.
+    browser.get(bus.page(open_port, readonly))
+    until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
+    assert all(not b.is_enabled() for b in browser.find_elements(By.CSS_SELECTOR, "button.command"))
+    status = browser.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        fetch('command', {method: 'POST', headers: {'X-Widestereo-Page': '1', 'Content-Type': 'application/json'},
+                          body: JSON.stringify({command: 'solve'})}).then(r => done(r.status));""")
+    assert status == 403
+
+    # With it: solve from the page, accepted by the keyed stereo-calibrate.
+    browser.get(bus.page(keyed_port, keyed))
+    until(lambda: browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").is_enabled(), 20,
+          "the solve button enabled")
+    until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 30, "coverage shown")
+    browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").click()
+    row = until(lambda: browser.find_elements(By.CSS_SELECTOR, "#models tr.chosen"), 300, "the model table")[0]
+    screenshot(browser, bus, "calibration-solved.png")
+    with open(report) as f:
+        solved = json.load(f)
+    assert row.get_attribute("data-model") == solved["model"]
+    assert float(row.get_attribute("data-stereo-rms")) == solved["stereo"]["rms_px"]
+    assert float(row.get_attribute("data-left-rms")) == solved["cameras"][0]["rms_px"]
+    maps = browser.find_elements(By.CSS_SELECTOR, "#maps canvas")
+    assert len(maps) == 4, "residual and uncertainty maps of both cameras"
+
+    bus.stop()
+    commands = bus.events("STEREO_COMMAND")
+    senders = [c.auth.sender for c in commands]
+    assert not [s for s in senders if " pid %d" % readonly.pid in s], "the read-only stereo-view sent a command"
+    assert len(commands) == 1 and " pid %d" % keyed.pid in senders[0], senders
+    assert commands[0].command == "solve" and commands[0].auth.key_id != 0
+
+
+def view_counters(bus, pid):
+    """stereo-view's heartbeats: (utime, {channel: counters})."""
+    return [(s.utime, {c.channel: c for c in s.channels}) for s in bus.events("PROCESS_STATUS")
+            if s.name == "stereo-view" and s.pid == pid]
+
+
+@pytest.mark.recorded("CLOUD_STATS|PROCESS_STATUS|STEREO_DISPARITY")
+def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothing(bus, browser):
+    bus.start("stereo-capture", ["--source", "sim:config/sim/wall.yaml", "--rate", "5", "--loop"])
+    bus.start("stereo-match", ["--config", "config/stereo-match-live.yaml", "--calib", CALIBRATION])
+    bus.start("stereo-cloud", ["--config", "config/stereo-cloud-live.yaml"])
+    port = free_port()
+    view = bus.start("stereo-view", ["--port", str(port), "--calib", CALIBRATION])
+    browser.get(bus.page(port, view))
+    browser.find_element(By.ID, "tab-depth").click()
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#legend span"), 60, "the disparity's legend")
+    until(lambda: attribute(browser, "#cloud-points", "data-frame-id"), 60, "the cloud's statistics")
+    until(lambda: attribute(browser, "#cloud", "data-shown"), 60, "the cloud in 3-D")
+    until(lambda: attribute(browser, "#rect-right canvas", "width") != "640" or
+          "frame" in browser.find_element(By.CSS_SELECTOR, "#rect-right .info").text, 60, "the rectified pair")
+    shown = browser.execute_script("""
+        const p = document.querySelector('#cloud-points').dataset, l = document.querySelector('#legend');
+        return {frame: p.frameId, points: p.points, offset: p.planeOffset, f: l.dataset.f,
+                baseline: l.dataset.baseline,
+                ticks: [...l.querySelectorAll('span')].map(s => [s.dataset.disparity, s.dataset.metres])};""")
+    screenshot(browser, bus, "depth.png")
+
+    # A browser that stops reading: its events are skipped, the input goes on.
+    stalled = socket.socket()
+    stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+    stalled.connect(("127.0.0.1", port))
+    stalled.sendall(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+    stalled_at = time.time()
+    until(lambda: int(browser.find_element(By.TAG_NAME, "body").get_attribute("data-browser-skipped") or 0) > 0, 60,
+          "stereo-view counts the stalled browser's skipped events")
+    until(lambda: "frame" in browser.find_element(By.CSS_SELECTOR, "#disparity-figure .info").text, 5,
+          "the reading page still updated")
+    stalled.close()
+    bus.stop()
+
+    stats = [s for s in bus.events("CLOUD_STATS") if str(s.frame_id) == shown["frame"]]
+    assert stats, "no CLOUD_STATS of frame " + shown["frame"]
+    assert int(shown["points"]) == stats[0].stage_points[-1]
+    assert float(shown["offset"]) == stats[0].plane_offset
+    disparity = bus.events("STEREO_DISPARITY")[0]
+    assert float(shown["f"]) == disparity.f and float(shown["baseline"]) == disparity.baseline
+    ticks = [(float(d), float(m)) for d, m in shown["ticks"]]
+    assert ticks[0][0] == max(1.0, disparity.min_disparity)
+    assert ticks[-1][0] == disparity.min_disparity + disparity.num_disparities
+    for d, metres in ticks:
+        assert metres == pytest.approx(disparity.f * disparity.baseline / d, rel=1e-12)
+
+    heartbeats = view_counters(bus, view.pid)
+    before = [c for t, c in heartbeats if t <= stalled_at * 1e6]
+    assert before and heartbeats[-1][0] > stalled_at * 1e6
+    images_before, images_after = before[-1]["STEREO_IMAGES"], heartbeats[-1][1]["STEREO_IMAGES"]
+    assert heartbeats[-1][1]["browsers"].skipped > before[-1]["browsers"].skipped
+    captured = [(s.utime, {c.channel: c for c in s.channels}) for s in bus.events("PROCESS_STATUS")
+                if s.name == "stereo-capture"]
+    sent = [c["STEREO_IMAGES"].published for t, c in captured]
+    received = images_after.received - images_before.received
+    window = heartbeats[-1][0] - [t for t, c in heartbeats if t <= stalled_at * 1e6][-1]
+    # The capture's rate over the same window, from its own heartbeats.
+    rate = (sent[-1] - sent[0]) / ((captured[-1][0] - captured[0][0]) * 1e-6)
+    assert received >= 0.8 * rate * window * 1e-6, (received, rate, window)
+    assert images_after.dropped == images_before.dropped
