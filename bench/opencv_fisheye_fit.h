@@ -59,7 +59,7 @@ inline OpenCvFisheyeFit FitOpenCvFisheye(const calib::CameraData& data,
   fit.kb4.fy = K(1, 1);
   fit.kb4.cx = K(0, 2);
   fit.kb4.cy = K(1, 2);
-  fit.kb4.distortion = Distortion{"kb4", 0, {}, {D[0], D[1], D[2], D[3]}};
+  fit.kb4.distortion = Distortion{ModelKind::kKb4, 0, {}, {D[0], D[1], D[2], D[3]}};
   return fit;
 }
 

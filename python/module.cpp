@@ -76,7 +76,7 @@ struct PyCamera {
     if (!own) return py::none();
     const CameraModel& m = own->model();
     py::dict d;
-    d["model"] = m.distortion.kind;
+    d["model"] = ModelName(m.distortion.kind);
     d["image_width"] = m.image_width, d["image_height"] = m.image_height;
     d["fx"] = m.fx, d["fy"] = m.fy, d["cx"] = m.cx, d["cy"] = m.cy, d["p1"] = m.p1, d["p2"] = m.p2;
     d["degree"] = m.distortion.degree;

@@ -31,9 +31,7 @@ foreach(test_and_cost
     StereoCalibrateProcess.OnceOverALogGivesTheSameCalibrationTwice=12
     HealthReplay.SameLogGivesTheSameHealthMessages=11
     HostilePeer.WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce=11
-    HealthReplay.TrueCalibrationIsOkOnBoardAndWall=10
-    view_page_calibration=45
-    view_page_depth=20)
+    HealthReplay.TrueCalibrationIsOkOnBoardAndWall=10)
   string(REPLACE "=" ";" pair ${test_and_cost})
   list(GET pair 0 test)
   list(GET pair 1 cost)

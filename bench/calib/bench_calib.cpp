@@ -40,7 +40,7 @@ ws::CameraModel BenchCamera() {
   camera.cy = 478.9;
   camera.p1 = 3e-4;
   camera.p2 = -2e-4;
-  camera.distortion = ws::Distortion{"poly6", 0, {}, {-0.12, 0.03, -0.004}};
+  camera.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.12, 0.03, -0.004}};
   return camera;
 }
 
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
     int corners = 0;
     for (const auto& view : data.views) corners += view.size();
     ws::calib::CalibrationOptions options;
-    options.model = "poly6";
+    options.model = ws::ModelKind::kPoly6;
     double ours_rms = 0;
     const double ours_s = MedianSeconds(
         repeats, [&] { ours_rms = ws::calib::CalibrateCamera(data, options).rms_px; });

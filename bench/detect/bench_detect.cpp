@@ -44,7 +44,7 @@ std::vector<widestereo::stereo_frame_t> RenderPairs(const ws::BoardSpec& board, 
     ws::RenderSettings settings;
     settings.size = size;
     settings.seed = uint64_t(i + 1);
-    widestereo::stereo_frame_t frame;
+    widestereo::stereo_frame_t frame{};
     frame.utime = i;
     frame.frame_id = i;
     frame.left = ws::MatToImage(ws::RenderBoard(board, ws::BoardToImage(board, pose, size), settings).image, i);

@@ -44,7 +44,7 @@ double Seconds(const std::function<void()>& run) { return 1e-3 * ws::bench::Mill
 
 void PrintFit(const std::string& name, const CameraData& data) {
   ws::calib::CalibrationOptions options;
-  options.model = "kb4";
+  options.model = ws::ModelKind::kKb4;
   options.outliers = ws::calib::OutlierRule::kOff;
   options.board_warp = ws::calib::WarpRule::kFlat;
   options.nonradial = ws::calib::FieldRule::kNone;

@@ -27,6 +27,8 @@ namespace {
 using namespace ws::calib;
 using ws::Camera;
 using ws::CameraModel;
+using ws::ModelKind;
+using ws::ModelName;
 
 struct Row {
   std::string name;
@@ -64,7 +66,7 @@ Row OpenCvFisheye(const CameraData& data, const CameraModel* camera, double max_
 void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_sigma) {
   std::printf("held out (train: even views, test: odd views; test RMS px over every corner)\n");
   const CameraData* cameras[2] = {&data.left, &data.right};
-  for (const std::string kind : {"kb4", "bspline_theta"})
+  for (const ModelKind kind : {ModelKind::kKb4, ModelKind::kBsplineTheta})
     for (int s = 0; s < 2; ++s) {
       CalibrationOptions options;
       options.model = kind;
@@ -74,7 +76,7 @@ void PrintHeldOut(const StereoData& data, bool mono, int knots, double outlier_s
         options.outlier_sigma = outlier_sigma;
         options.board_warp = WarpRule::kEstimated;
       }
-      std::printf("%-52s", (kind + (s ? ", outlier rejection + board warp" : "")).c_str());
+      std::printf("%-52s", (ModelName(kind) + (s ? ", outlier rejection + board warp" : "")).c_str());
       for (int c = 0; c < (mono ? 1 : 2); ++c) {
         CameraData train = *cameras[c], test = *cameras[c];
         for (size_t v = 0; v < train.views.size(); ++v) (v % 2 ? train : test).views[v] = BoardView();
@@ -138,7 +140,8 @@ int main(int argc, char** argv) {
         ws::channel::kStereoCorners, [&](const auto& msg) { AddStereoCorners(data, msg); });
     if (const int rc = process.Run()) return rc;
     const bool mono = data.right.image_width == 0;
-    const std::vector<std::string> kinds = {"bspline", "poly12", "kb4", "bspline_theta"};
+    const std::vector<ModelKind> kinds = {ModelKind::kBspline, ModelKind::kPoly12, ModelKind::kKb4,
+                                          ModelKind::kBsplineTheta};
     std::vector<Row> rows;
     const CameraModel* theta_camera[2] = {nullptr, nullptr};
     ModelCalibrations settings[2];
@@ -162,14 +165,14 @@ int main(int argc, char** argv) {
       }
       for (const StereoCalibration& result : settings[s].solved) {
         Row row;
-        row.name = result.model + suffix + (mono || result.flow == StereoFlow::kJoint ? "" : " (paper)");
+        row.name = ModelName(result.model) + suffix + (mono || result.flow == StereoFlow::kJoint ? "" : " (paper)");
         const CameraCalibration* cameras[2] = {&result.left, &result.right};
         for (int c = 0; c < (mono ? 1 : 2); ++c) {
           row.rms[c] = cameras[c]->rms_px;
           row.views[c] = cameras[c]->views;
           row.outliers[c] = cameras[c]->outliers;
           row.corners[c] = cameras[c]->points;
-          if (s == 0 && result.model == "bspline_theta") theta_camera[c] = &cameras[c]->model;
+          if (s == 0 && result.model == ModelKind::kBsplineTheta) theta_camera[c] = &cameras[c]->model;
         }
         rows.push_back(row);
       }
@@ -185,7 +188,7 @@ int main(int argc, char** argv) {
       for (const StereoCalibration& result : settings[s].solved)
         for (const CameraCalibration* camera : {&result.left, &result.right})
           if (camera->uncertainty.median_px >= 0)
-            std::printf("%s%s %s\n", result.model.c_str(), s ? " + warp" : "",
+            std::printf("%s%s %s\n", ModelName(result.model).c_str(), s ? " + warp" : "",
                         UncertaintyLine(*camera).c_str());
     if (heldout) PrintHeldOut(data, mono, knots, outlier_sigma);
     return 0;

@@ -29,7 +29,7 @@
 #include "runtime/process.h"
 #include "runtime/process_cli.h"
 #include "runtime/wall_clock.h"
-#include "sim/sim_source.h"
+#include "source/sim_source.h"
 #include "sim/truth_calibration.h"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"

@@ -47,4 +47,5 @@ PY
     > "$RUN/$variant/launch.out"
   echo "== $variant.yaml, ${OTHER:-this tree}: capture at $RATE Hz for $DURATION s"
   cat "$RUN/$variant/bench_transport.out"
+  grep -h "^browser: Chromium" "$RUN/$variant/browser.out" 2>/dev/null || true
 done

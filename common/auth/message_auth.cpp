@@ -15,14 +15,18 @@ std::string Seconds(int64_t us) {
 
 }  // namespace
 
-std::array<uint8_t, 32> Mac(const RigKey& key, const std::string& channel, const std::vector<uint8_t>& encoded) {
-  static_assert(crypto_auth_hmacsha512256_BYTES == 32 && crypto_auth_hmacsha512256_KEYBYTES == 32);
-  crypto_auth_hmacsha512256_state state;
-  crypto_auth_hmacsha512256_init(&state, key.mac_key().data(), key.mac_key().size());
-  crypto_auth_hmacsha512256_update(&state, reinterpret_cast<const uint8_t*>(channel.c_str()), channel.size() + 1);
-  crypto_auth_hmacsha512256_update(&state, encoded.data(), encoded.size());
+std::array<uint8_t, 32> Mac(const RigKey& key, const std::string& channel, const uint8_t* encoded, size_t size) {
+  static_assert(crypto_generichash_blake2b_KEYBYTES_MIN <= 32 && crypto_generichash_blake2b_KEYBYTES_MAX >= 32);
+  constexpr size_t kMacBytes = 32;
+  const size_t head = size < kMacBytes ? 0 : size - kMacBytes;
+  const uint8_t zeros[kMacBytes] = {};
+  crypto_generichash_blake2b_state state;
+  crypto_generichash_blake2b_init(&state, key.mac_key().data(), key.mac_key().size(), kMacBytes);
+  crypto_generichash_blake2b_update(&state, reinterpret_cast<const uint8_t*>(channel.c_str()), channel.size() + 1);
+  crypto_generichash_blake2b_update(&state, encoded, head);
+  crypto_generichash_blake2b_update(&state, zeros, size - head);
   std::array<uint8_t, 32> mac;
-  crypto_auth_hmacsha512256_final(&state, mac.data());
+  crypto_generichash_blake2b_final(&state, mac.data(), mac.size());
   return mac;
 }
 
@@ -32,12 +36,12 @@ int64_t RandomNonce() {
   return nonce;
 }
 
-void AuthCheck::CheckSigned(const std::string& channel, const widestereo::auth_t& auth,
-                            const std::vector<uint8_t>& mac_input, int64_t now_us) {
+void AuthCheck::CheckSigned(const std::string& channel, const widestereo::auth_t& auth, const uint8_t* encoded,
+                            size_t size, int64_t now_us) {
   if (auth.key_id != key_.id())
     throw AuthError("refused: signed with another rig key (key id " + KeyIdText(auth.key_id) + ", this rig's is " +
                     key_.IdText() + ")");
-  const std::array<uint8_t, 32> mac = Mac(key_, channel, mac_input);
+  const std::array<uint8_t, 32> mac = Mac(key_, channel, encoded, size);
   if (crypto_verify_32(mac.data(), auth.mac) != 0)
     throw AuthError("refused: its MAC does not match (changed after signing, or forged)");
   const int64_t age = now_us - auth.utime;

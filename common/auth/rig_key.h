@@ -1,5 +1,6 @@
 // The rig key: a secret shared by every process of one rig (--key-file), from
-// which the MACs of commands and calibrations are made (message_auth.h).
+// which the MACs of commands, calibrations, corners and images are made
+// (message_auth.h).
 #pragma once
 
 #include <array>
@@ -24,7 +25,8 @@ class RigKey {
   // The key of a secret (at least kMinSecretBytes bytes; KeyFileError else).
   static RigKey FromSecret(const std::string& secret);
 
-  // The 32-byte HMAC-SHA512-256 key: BLAKE2b-256 of the secret.
+  // The 32-byte MAC key (keyed BLAKE2b-256, message_auth.h): BLAKE2b-256 of
+  // the secret.
   const std::array<uint8_t, 32>& mac_key() const { return mac_key_; }
   // Names the key in messages and errors without revealing it (never 0).
   int64_t id() const { return id_; }

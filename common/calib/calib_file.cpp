@@ -23,7 +23,8 @@ const std::string kHeader[] = {
     "  r = sqrt(x^2 + y^2)",
     "  xd = (1 + D(r)) x + 2 p1 x y + p2 (r^2 + 2 x^2)",
     "  yd = (1 + D(r)) y + p1 (r^2 + 2 y^2) + 2 p2 x y",
-    "  (xf, yf) = (xd, yd) + F(xd, yd), F = 0 without 'nonradial'",
+    "  (xt, yt) = (x' / w', y' / w'), [x'; y'; w'] = M(tau) [xd; yd; 1], (xd, yd) without 'tilt'",
+    "  (xf, yf) = (xt, yt) + F(xt, yt), F = 0 without 'nonradial' 'cols'",
     "  u = fx xf + cx,  v = fy yf + cy   (pixel centres at integer coordinates, as in OpenCV)",
     "D(r): bspline: sum_i alpha_i N_{i,degree}(r), the de Boor-Cox B-spline basis on 'knots'",
     "      (clamped; beyond the last knot the last polynomial piece continues);",
@@ -33,25 +34,28 @@ const std::string kHeader[] = {
     "F(s, t): nonradial: sum_ij c_ij N_i(s) M_j(t), clamped uniform cubic B-splines of 'cols' x",
     "      'rows' control points over 'domain' [s0 s1 t0 t1] (outside it: its nearest point);",
     "      'coeffs' the x components c_ij at j cols + i, then the y components (docs/models.md).",
+    "M(tau): nonradial: 'tilt' [tau_x tau_y] (radians), OpenCV's tilted sensor (CALIB_TILTED_MODEL):",
+    "      M = [cx 0 0; -sx sy cy 0; sy -cy sx cy cx], cx = cos tau_x, sx = sin tau_x, cy, sy of tau_y.",
     "Stereo: X_right = R X_left + T (metres)."};
-
-bool IsSpline(const std::string& kind) {
-  return kind == BsplineDistortion::Kind() || kind == BsplineThetaDistortion::Kind();
-}
 
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
                  int views) {
   fs << name << "{";
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
   fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
-  fs << "model" << m.distortion.kind << "degree" << m.distortion.degree;
-  if (IsSpline(m.distortion.kind)) fs << "knots" << m.distortion.knots;
-  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
+  const ModelTraits& traits = Traits(m.distortion.kind);
+  fs << "model" << traits.name << "degree" << m.distortion.degree;
+  if (traits.spline) fs << "knots" << m.distortion.knots;
+  fs << traits.coeff_key << m.distortion.coeffs;
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
   if (!m.nonradial.empty()) {
     const NonRadial& f = m.nonradial;
-    fs << "nonradial" << "{" << "cols" << f.cols << "rows" << f.rows << "domain"
-       << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs << "}";
+    fs << "nonradial" << "{";
+    if (f.cols > 0)
+      fs << "cols" << f.cols << "rows" << f.rows << "domain"
+         << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs;
+    if (f.tilted()) fs << "tilt" << std::vector<double>(f.tilt.begin(), f.tilt.end());
+    fs << "}";
   }
   fs << "}";
 }
@@ -153,8 +157,15 @@ class Reader {
 // A camera's non-radial field: its grid (4 to 64 control points a side),
 // rectangle and 2 cols rows coefficients.
 NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::string& at) {
-  if (!node.isMap()) in.Fail(at.substr(0, at.size() - 1), "not a map of cols, rows, domain, coeffs");
+  if (!node.isMap() || (node["cols"].empty() && node["tilt"].empty()))
+    in.Fail(at.substr(0, at.size() - 1), "not a map of cols, rows, domain, coeffs and/or tilt");
   NonRadial f;
+  if (!node["tilt"].empty()) {
+    const std::vector<double> tilt = in.Reals(node, "tilt", at + "tilt", 2);
+    if (tilt.size() != 2) in.Fail(at + "tilt", "not the 2 numbers tau_x tau_y");
+    std::copy(tilt.begin(), tilt.end(), f.tilt.begin());
+  }
+  if (node["cols"].empty()) return f;
   f.cols = in.Int(node, "cols", at + "cols", 4);
   f.rows = in.Int(node, "rows", at + "rows", 4);
   if (f.cols > 64 || f.rows > 64) in.Fail(at + "cols", "at most 64 control points a side");
@@ -171,6 +182,16 @@ NonRadial ReadNonRadial(const Reader& in, const cv::FileNode& node, const std::s
     in.Fail(at + "domain", e.what());
   }
   return f;
+}
+
+// The model kind named by node's "model" (`field` in messages).
+ModelKind ReadModelKind(const Reader& in, const cv::FileNode& node, const std::string& field) {
+  const std::string name = in.String(node, "model", field);
+  try {
+    return ParseModelKind(name);
+  } catch (const std::invalid_argument&) {
+    in.Fail(field, "unknown model '" + name + "' (known: " + KnownModelNames() + ")");
+  }
 }
 
 CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::string& name,
@@ -190,28 +211,26 @@ CameraModel ReadCamera(const Reader& in, const cv::FileNode& root, const std::st
   m.cx = K(0, 2);
   m.cy = K(1, 2);
   Distortion& d = m.distortion;
-  d.kind = in.String(node, "model", at + "model");
-  const auto kinds = ModelKinds();
-  if (std::find(kinds.begin(), kinds.end(), d.kind) == kinds.end())
-    in.Fail(at + "model", "unknown model '" + d.kind + "' (bspline, poly6 or poly12)");
-  const std::string coeffs_key = CoefficientKey(d.kind);
-  for (const std::string key : {"alpha", "k"})
-    if (key != coeffs_key && !node[key].empty())
-      in.Fail(at + key, "not a coefficient of a " + d.kind + " model");
-  if (IsSpline(d.kind)) {
+  d.kind = ReadModelKind(in, node, at + "model");
+  const ModelTraits& traits = Traits(d.kind);
+  const std::string coeffs_key = traits.coeff_key;
+  for (const ModelTraits& other : kModelTraits)
+    if (other.coeff_key != coeffs_key && !node[other.coeff_key].empty())
+      in.Fail(at + other.coeff_key, "not a coefficient of a " + ModelName(d.kind) + " model");
+  if (traits.spline) {
     d.degree = in.Int(node, "degree", at + "degree", 1);
     d.knots = in.Reals(node, "knots", at + "knots", kMaxKnots);
   } else {
     if (!node["degree"].empty() && in.Int(node, "degree", at + "degree", 0) != 0)
-      in.Fail(at + "degree", "must be 0 for " + d.kind);
+      in.Fail(at + "degree", "must be 0 for " + ModelName(d.kind));
     if (!node["knots"].empty() && !in.Reals(node, "knots", at + "knots", kMaxKnots).empty())
-      in.Fail(at + "knots", "must be empty for " + d.kind);
+      in.Fail(at + "knots", "must be empty for " + ModelName(d.kind));
   }
   d.coeffs = in.Reals(node, coeffs_key, at + coeffs_key, kMaxKnots);
   try {
     MakeModel(d, Coefficients::kAll);
   } catch (const std::exception& e) {
-    in.Fail(at + (IsSpline(d.kind) ? "knots" : "model"), e.what());
+    in.Fail(at + (traits.spline ? "knots" : "model"), e.what());
   }
   m.p1 = in.Real(node, "p1", at + "p1");
   m.p2 = in.Real(node, "p2", at + "p2");
@@ -252,7 +271,7 @@ void WriteCalibrationFile(const std::string& path, const CalibrationFile& file) 
     cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     for (const std::string& line : kHeader) fs.writeComment(line);
     if (!file.note.empty()) fs.writeComment(file.note);
-    fs << "model" << file.model;
+    fs << "model" << ModelName(file.model);
     WriteCamera(fs, "left", file.left, file.left_rms, file.left_views);
     if (!file.mono) {
       WriteCamera(fs, "right", file.right, file.right_rms, file.right_views);
@@ -275,27 +294,32 @@ CalibrationFile ReadCalibrationFile(const std::string& path) {
   const Reader in(path);
   cv::FileStorage fs;
   try {
-    OpenOpenCvYaml(fs, path);  // refuses the layouts OpenCV's reader hangs or crashes on
+    // Refuses the layouts OpenCV's reader hangs or crashes on, and files far
+    // larger than a calibration (two cameras of kMaxKnots knots and
+    // coefficients and a field of NonRadialField::kMaxCoeffs: 500 KB).
+    constexpr size_t kMaxCalibrationFileBytes = size_t(4) << 20;
+    OpenOpenCvYaml(fs, path, kMaxCalibrationFileBytes);
   } catch (const YamlFileError& e) {
     in.Fail("(file)", e.what());
   }
   const cv::FileNode root = fs.root();
   if (!root.isMap()) in.Fail("(file)", "not a map of fields");
   CalibrationFile f;
-  f.model = in.String(root, "model", "model");
+  f.model = ReadModelKind(in, root, "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
   // A one-camera file has neither "right" nor "stereo".
   f.mono = root["right"].empty() && root["stereo"].empty();
   if (f.mono) {
     if (f.left.distortion.kind != f.model)
-      in.Fail("model", "'" + f.model + "', but the camera's model is '" + f.left.distortion.kind + "'");
+      in.Fail("model", "'" + ModelName(f.model) + "', but the camera's model is '" +
+                           ModelName(f.left.distortion.kind) + "'");
     return f;
   }
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
   for (const auto* camera : {&f.left, &f.right})
     if (camera->distortion.kind != f.model)
       in.Fail("model",
-              "'" + f.model + "', but a camera's model is '" + camera->distortion.kind + "'");
+              "'" + ModelName(f.model) + "', but a camera's model is '" + ModelName(camera->distortion.kind) + "'");
   const cv::FileNode stereo = in.Required(root, "stereo", "stereo");
   if (!stereo.isMap()) in.Fail("stereo", "not a map of fields");
   f.R = in.Matrix(stereo, "R", "stereo.R", 3, 3);

@@ -45,7 +45,7 @@ namespace ws::calib {
 inline constexpr char kCalibrationFileTitle[] = "widestereo stereo calibration";
 
 struct CalibrationFile {
-  std::string model;  // the kind of both cameras' models
+  ModelKind model = ModelKind::kBspline;  // the kind of both cameras' models
   bool mono = false;  // one camera: `left` only, no right, no stereo
   CameraModel left, right;
   double left_rms = 0, right_rms = 0;  // pixels

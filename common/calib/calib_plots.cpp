@@ -47,7 +47,7 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
   std::vector<bool> families;
   for (bool angle : {false, true})
     for (const auto& c : calibrations)
-      if (Camera(c.left.model).IsAngleModel() == angle) {
+      if (Traits(c.left.model.distortion.kind).angle == angle) {
         families.push_back(angle);
         break;
       }
@@ -68,7 +68,7 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
       double r_end = 0, r_seen = 0;
       std::vector<const StereoCalibration*> drawn;
       for (const auto& c : calibrations) {
-        if ((c.mono && side == 1) || Camera(Side(c, side).model).IsAngleModel() != angle) continue;
+        if ((c.mono && side == 1) || Traits(Side(c, side).model.distortion.kind).angle != angle) continue;
         drawn.push_back(&c);
         const Distortion& d = Side(c, side).model.distortion;
         if (!d.knots.empty()) r_end = std::max(r_end, d.knots.back());
@@ -88,7 +88,7 @@ void WriteDistortionCurvesPng(const std::vector<StereoCalibration>& calibrations
           hi = std::max(hi, d.back());
         }
         panel.series.emplace_back(
-            c->model + " (RMS " + Format("%.3f", Side(*c, side).rms_px) + " px)", r, d);
+            ModelName(c->model) + " (RMS " + Format("%.3f", Side(*c, side).rms_px) + " px)", r, d);
       }
       if (r_seen > 0) {
         plot::Series& mark = panel.series.emplace_back(
@@ -117,7 +117,7 @@ void WriteResidualMapPng(const std::vector<StereoCalibration>& calibrations,
       const double cell_size = g.cols > 0 ? double(g.image_width) / g.cols : 1.0;
       const double scale = largest > 0 ? 0.45 * cell_size / largest : 1.0;
       plot::Panel& panel = figure.panels.emplace_back(
-          cam.name + " camera, " + c.model + ": RMS " + Format("%.3f", cam.rms_px) +
+          cam.name + " camera, " + ModelName(c.model) + ": RMS " + Format("%.3f", cam.rms_px) +
               " px, arrows x" + Format("%.0f", scale) + " (longest " + Format("%.3f", largest) +
               " px)",
           "u [px]", "v [px]");
@@ -181,13 +181,13 @@ bool WriteKnotCurvePng(const std::vector<StereoCalibration>& calibrations,
         heldout.push_back(t.heldout_rms_px);
         fitted.push_back(t.rms_px);
       }
-      panel.series.emplace_back(c.model + " held-out", n, heldout, plot::Style::kLinesPoints);
-      panel.series.emplace_back(c.model + " fitted", n, fitted, plot::Style::kLinesPoints);
+      panel.series.emplace_back(ModelName(c.model) + " held-out", n, heldout, plot::Style::kLinesPoints);
+      panel.series.emplace_back(ModelName(c.model) + " fitted", n, fitted, plot::Style::kLinesPoints);
       const double chosen = double(camera.param_names.size()) - 6;
       for (const KnotTrial& t : camera.knot_curve)
         if (t.knots == chosen)
           panel.series
-              .emplace_back(c.model + " chosen: " + Format("%.0f", chosen),
+              .emplace_back(ModelName(c.model) + " chosen: " + Format("%.0f", chosen),
                                     std::vector<double>{chosen},
                                     std::vector<double>{t.heldout_rms_px}, plot::Style::kPoints)
               .point_size = 2.5;
@@ -206,7 +206,7 @@ bool WriteUncertaintyPng(const std::vector<StereoCalibration>& calibrations,
     for (int side = 0; side < (c.mono ? 1 : 2); ++side)
       if (!Side(c, side).uncertainty.empty()) {
         cameras.push_back(&Side(c, side));
-        models.push_back(c.model);
+        models.push_back(ModelName(c.model));
       }
   if (cameras.empty()) return false;
   const int rows = (static_cast<int>(cameras.size()) + 1) / 2;

@@ -18,17 +18,10 @@
 namespace ws::calib {
 
 void CheckOptions(const CalibrationOptions& options) {
-  const auto kinds = ModelKinds();
-  if (std::find(kinds.begin(), kinds.end(), options.model) == kinds.end()) {
-    std::string known;
-    for (const auto& kind : kinds) known += (known.empty() ? "" : ", ") + kind;
-    throw CalibrationError("unknown model '" + options.model + "' (known: " + known + ")");
-  }
   if (options.knots != kAutoKnots && (options.knots < 2 || options.knots > 64))
     throw CalibrationError("the B-spline needs 2 to 64 knots, not " +
                            std::to_string(options.knots));
-  const bool spline = options.model.rfind("bspline", 0) == 0;  // bspline, bspline_theta
-  if (spline && options.knots == kAutoKnots && options.cv_folds < 2)
+  if (Traits(options.model).spline && options.knots == kAutoKnots && options.cv_folds < 2)
     throw CalibrationError("--knots auto needs cross-validation (at least 2 folds)");
   if (options.min_views < 3) throw CalibrationError("min_views must be at least 3");
   if (!(options.smoothness >= 0)) throw CalibrationError("the smoothness weight must be >= 0");
@@ -49,17 +42,24 @@ int ParseKnots(const std::string& value) {
 
 void ParseFieldRule(const std::string& value, CalibrationOptions* options) {
   options->field_cols = options->field_rows = 0;
+  options->field_tilt = false;
   if (value == "auto" || value == "none") {
     options->nonradial = value == "auto" ? FieldRule::kAuto : FieldRule::kNone;
     return;
   }
+  options->nonradial = FieldRule::kGrid;
+  const std::string tilt = "tilt";
+  options->field_tilt = value.rfind(tilt, 0) == 0;
+  if (value == tilt) return;
+  const std::string grid = options->field_tilt && value.size() > tilt.size() && value[tilt.size()] == '+'
+                               ? value.substr(tilt.size() + 1)
+                               : value;
   int cols = 0, rows = 0;
   char x = 0, extra = 0;
-  if (std::sscanf(value.c_str(), "%d%c%d%c", &cols, &x, &rows, &extra) != 3 || x != 'x' ||
+  if (std::sscanf(grid.c_str(), "%d%c%d%c", &cols, &x, &rows, &extra) != 3 || x != 'x' ||
       cols < 4 || rows < 4 || cols > 64 || rows > 64)
-    throw std::invalid_argument("--nonradial must be auto, none or COLSxROWS (4 to 64 each, as 8x6), "
-                                "not '" + value + "'");
-  options->nonradial = FieldRule::kGrid;
+    throw std::invalid_argument("--nonradial must be auto, none, tilt, COLSxROWS or tilt+COLSxROWS "
+                                "(4 to 64 each, as 8x6), not '" + value + "'");
   options->field_cols = cols;
   options->field_rows = rows;
 }
@@ -168,7 +168,7 @@ int ChooseModel(const std::vector<StereoCalibration>& solved) {
 
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
-                                           const std::vector<std::string>& kinds) {
+                                           const std::vector<ModelKind>& kinds) {
   ModelCalibrations results;
   // Several models are compared radially; the chosen one then gets its
   // non-radial field.
@@ -180,7 +180,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     try {
       results.solved.push_back(CalibrateStereo(data, o));
     } catch (const CalibrationError& e) {
-      results.failed.push_back({kind, e.what()});
+      results.failed.push_back({ModelName(kind), e.what()});
     }
   }
   if (results.solved.empty() && !results.failed.empty())
@@ -192,7 +192,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     try {
       results.solved[results.chosen] = CalibrateStereo(data, o);
     } catch (const CalibrationError& e) {  // the radial solution stands
-      results.failed.push_back({o.model + " with a non-radial field", e.what()});
+      results.failed.push_back({ModelName(o.model) + " with a non-radial field", e.what()});
     }
   }
   return results;

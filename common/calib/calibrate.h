@@ -43,9 +43,11 @@ struct KnotTrial {
   std::vector<double> fold_rms_px;
 };
 
-// One candidate of --nonradial auto (mono_solve.h): the camera with a field
-// of cols x rows control points (0 x 0: none), its fitted and held-out RMS.
+// One candidate of --nonradial auto (mono_solve.h): the camera with a sensor
+// tilt or not and a field of cols x rows control points (0 x 0: none), its
+// fitted and held-out RMS.
 struct FieldTrial {
+  bool tilt = false;
   int cols = 0, rows = 0;
   double rms_px = 0;
   double heldout_rms_px = -1;
@@ -63,7 +65,7 @@ struct CameraCalibration {
   int heldout_extrapolated = 0;           // held-out corners past the training views' field, left out
   std::vector<HeldOutCorner> heldout_corners;  // camera 0: this one (FoldRmsOnCommonCorners)
   std::vector<KnotTrial> knot_curve;      // --knots auto: every count tried, in order
-  std::vector<FieldTrial> field_curve;    // --nonradial auto: none, then every grid tried
+  std::vector<FieldTrial> field_curve;    // --nonradial auto: none, the tilt, then every grid tried
   int field_chosen = 0;                   // its index in field_curve
   int views = 0;                          // views used
   int points = 0;                         // inlier corners used
@@ -87,7 +89,7 @@ struct CameraCalibration {
 };
 
 struct StereoCalibration {
-  std::string model;  // the model kind
+  ModelKind model = ModelKind::kBspline;
   // A one-camera rig (no right view at all): `right` empty, no R, T.
   bool mono = false;
   StereoFlow flow = StereoFlow::kJoint;
@@ -168,7 +170,7 @@ double HeldOutRms(const StereoCalibration& calibration);
 // still solved; throws the first model's CalibrationError when every one fails.
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
-                                           const std::vector<std::string>& kinds);
+                                           const std::vector<ModelKind>& kinds);
 
 // The residuals a known camera and known board poses give on the views
 // (e.g. the RMS of the true model on synthetic data): every corner of every

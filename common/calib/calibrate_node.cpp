@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <map>
 #include <regex>
-#include <set>
 #include <sstream>
 
 #include "calib/calib_file.h"
@@ -19,6 +18,7 @@
 #include "models/model_registry.h"
 #include "runtime/escaped.h"
 #include "runtime/output_folder.h"
+#include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
 
 namespace ws::calib {
@@ -26,9 +26,9 @@ namespace ws::calib {
 namespace {
 
 // calib.yaml and "poly6" -> calib.poly6.yaml
-std::string ModelFilePath(const std::string& yaml, const std::string& model) {
+std::string ModelFilePath(const std::string& yaml, ModelKind model) {
   const std::filesystem::path path(yaml);
-  return (path.parent_path() / (path.stem().string() + "." + model + path.extension().string())).string();
+  return (path.parent_path() / (path.stem().string() + "." + ModelName(model) + path.extension().string())).string();
 }
 
 // The folder of an output file (--out, --report), where `save` may write; ""
@@ -41,16 +41,17 @@ std::string FolderOf(const std::string& file) {
 
 }  // namespace
 
-std::vector<std::string> ParseModelList(const std::string& spec) {
-  const auto kinds = ModelKinds();
-  if (spec == "all") return kinds;
-  if (std::find(kinds.begin(), kinds.end(), spec) == kinds.end())
-    throw CalibrationError("unknown model '" + spec + "' (bspline, poly6, poly12, kb4, bspline_theta or all)");
-  return {spec};
+std::vector<ModelKind> ParseModelList(const std::string& spec) {
+  if (spec == "all") return ModelKinds();
+  try {
+    return {ParseModelKind(spec)};
+  } catch (const std::invalid_argument&) {
+    throw CalibrationError("unknown model '" + spec + "' (" + KnownModelNames() + " or all)");
+  }
 }
 
 CalibrateNode::CalibrateNode(Process& process, NodeOptions options)
-    : process_(process), options_(std::move(options)), session_(options_.session) {}
+    : process_(process), options_(std::move(options)), session_(options_.session), commands_(Commands()) {}
 
 CalibrateNode::~CalibrateNode() {
   if (worker_.joinable()) worker_.join();
@@ -61,10 +62,11 @@ void CalibrateNode::Start() {
   if (!options_.session.state_path.empty())
     process_.log().Info("views kept in " + options_.session.state_path + " (" +
                         std::to_string(restored) + " restored)");
+  ReportStateDamage();
   process_.Subscribe<widestereo::stereo_corners_t>(channel::kStereoCorners,
                                                    [this](const auto& msg) { OnCorners(msg); });
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
-                                            [this](const auto& msg) { OnCommand(msg); });
+                                            [this](const auto& msg) { commands_.Dispatch(msg); });
   process_.Every(1000000, [this] { PublishStatus(); });
   if (options_.once && process_.file_input())
     process_.AtEndOfInput([this] {
@@ -74,7 +76,7 @@ void CalibrateNode::Start() {
                               "(COLSxROWS counts inner corners: a board of 10x7 squares is 9x6)");
       std::vector<int64_t> frames;
       const StereoData data = session_.Data(&frames);
-      if (!SolveNow(data, frames, options_.models, options_.calibration))
+      if (!SolveNow(data, frames, options_.models, options_.calibration) && !StopRequested())
         process_.Fatal("no calibration from the views of the log");
     });
   process_.SetProgress([this] {
@@ -87,6 +89,12 @@ void CalibrateNode::Start() {
     return line.str();
   });
   process_.SetState("collecting");
+}
+
+// In the text log and the status's last error: an operator sees the damage
+// and where the damaged file is.
+void CalibrateNode::ReportStateDamage() {
+  if (const std::string damage = session_.StateDamage(); !damage.empty()) process_.ReportError(damage);
 }
 
 void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
@@ -107,39 +115,39 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
   }
 }
 
-// A command for this process that it cannot carry out as sent (unknown, bad
-// argument) throws, so that it is counted as rejected on STEREO_COMMAND; an
-// unknown command sent to every process is meant for another one.
-void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
-  if (!msg.target.empty() && msg.target != process_.options().name) return;
-  static const std::set<std::string> kKnown = {"solve", "reset", "restore", "save"};
-  if (!kKnown.count(msg.command)) {
-    if (msg.target.empty()) return;
-    throw std::invalid_argument("unknown command '" + msg.command +
-                                "' (stereo-calibrate knows: solve, reset, restore, save)");
-  }
-  std::vector<std::string> models = options_.models;
+// Every command takes the same arguments (model, knots: the solve's;
+// path, report, overwrite: the save's).
+CommandDispatcher CalibrateNode::Commands() {
+  const std::vector<std::string> keys = {"model", "knots", "path", "report", "overwrite"};
+  const auto run = [this](const CommandArgs& args) { OnCommand(args); };
+  std::vector<CommandSpec> commands;
+  for (const char* name : {"solve", "reset", "restore", "save"}) commands.push_back({name, name, keys, run});
+  return CommandDispatcher(process_.options().name, commands);
+}
+
+// A command it cannot carry out as sent throws (counted as rejected on
+// STEREO_COMMAND).
+void CalibrateNode::OnCommand(const CommandArgs& args) {
+  const std::string& command = args.command;
+  std::vector<ModelKind> models = options_.models;
   CalibrationOptions calibration = options_.calibration;
   CommandOutput yaml{FolderOf(options_.out_yaml), "", ".yaml"}, json{FolderOf(options_.report_json), "", ".json"};
-  for (const auto& arg : msg.args) {
-    const auto eq = arg.find('=');
-    const std::string key = arg.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
+  for (const CommandArgs::Arg& arg : args.args) {
     try {
-      if (key == "model")
-        models = ParseModelList(value);
-      else if (key == "knots")
-        calibration.knots = ParseKnots(value);
-      else if (key == "path")
-        yaml.name = value;
-      else if (key == "report")
-        json.name = value;
-      else if (key == "overwrite" && (value == "0" || value == "1"))
-        yaml.overwrite = json.overwrite = value == "1";
+      if (arg.key == "model")
+        models = ParseModelList(arg.value);
+      else if (arg.key == "knots")
+        calibration.knots = ParseKnots(arg.value);
+      else if (arg.key == "path")
+        yaml.name = arg.value;
+      else if (arg.key == "report")
+        json.name = arg.value;
+      else if (arg.key == "overwrite" && (arg.value == "0" || arg.value == "1"))
+        yaml.overwrite = json.overwrite = arg.value == "1";
       else
         throw std::invalid_argument("unknown argument");
     } catch (const std::exception& e) {
-      throw std::invalid_argument("command '" + msg.command + "': bad argument " + Quoted(arg) + ": " + e.what());
+      args.Refuse(arg, e.what());
     }
   }
   // The names a save writes: the process's own --out and --report, or new
@@ -148,22 +156,23 @@ void CalibrateNode::OnCommand(const widestereo::command_t& msg) {
     try {
       return output.name.empty() ? own : CommandOutputFile(output);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("command '" + msg.command + "': " + Quoted(output.name) + ": " + e.what());
+      throw std::invalid_argument("command '" + command + "': " + Quoted(output.name) + ": " + e.what());
     }
   };
   const std::string yaml_path = named(yaml, options_.out_yaml), json_path = named(json, options_.report_json);
-  if (msg.command == "solve") {
+  if (command == "solve") {
     Solve(models, calibration);
-  } else if (msg.command == "reset" || msg.command == "restore") {
-    if (solving_) throw std::runtime_error(msg.command + " refused: a solve is running");
+  } else if (command == "reset" || command == "restore") {
+    if (solving_) throw std::runtime_error(command + " refused: a solve is running");
     const int views = session_.views();
-    if (msg.command == "reset") {
+    if (command == "reset") {
       const std::string archive = session_.Reset(WallMicros());
       process_.log().Info(archive.empty() ? "reset: no view to archive"
                                           : "reset: " + std::to_string(views) + " views archived in " + archive +
                                                 " ('restore' brings them back)");
     } else {
       const std::string archive = session_.RestoreLastArchive(WallMicros());
+      ReportStateDamage();
       process_.log().Info("restore: " + std::to_string(session_.views()) + " views back from " + archive +
                           (views ? ", the " + std::to_string(views) + " before it archived" : ""));
     }
@@ -210,7 +219,7 @@ void CalibrateNode::SetState(const std::string& state, double rms, double heldou
   process_.SetState(state);
 }
 
-void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions options) {
+void CalibrateNode::Solve(std::vector<ModelKind> models, CalibrationOptions options) {
   if (solving_.exchange(true)) return process_.ReportError("solve ignored: a solve is running");
   std::vector<int64_t> frames;
   StereoData data = session_.Data(&frames);
@@ -222,7 +231,7 @@ void CalibrateNode::Solve(std::vector<std::string> models, CalibrationOptions op
   if (worker_.joinable()) worker_.join();
   worker_ = std::thread([this, data = std::move(data), frames = std::move(frames), models, options] {
     const bool ok = SolveNow(data, frames, models, options);
-    if (options_.once) ok ? process_.Stop() : process_.Fatal("the solve failed");
+    if (options_.once) ok || StopRequested() ? process_.Stop() : process_.Fatal("the solve failed");
   });
 }
 
@@ -286,12 +295,12 @@ void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::ve
 }
 
 bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
-                             const std::vector<std::string>& models, const CalibrationOptions& options) {
+                             const std::vector<ModelKind>& models, const CalibrationOptions& options) {
   solving_ = true;
   SetState("solving", -1);
   PublishStatus();
   std::string names;
-  for (const auto& m : models) names += (names.empty() ? "" : ", ") + m;
+  for (const ModelKind m : models) names += (names.empty() ? "" : ", ") + ModelName(m);
   process_.log().Info("solving " + std::to_string(data.size()) + " views (" + names + ")");
   bool ok = false;
   double rms = -1, heldout = -1;
@@ -321,11 +330,11 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
              << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right}) {
-        if (!camera->knot_curve.empty()) process_.log().Info(r.model + " " + KnotChoiceLine(*camera));
+        if (!camera->knot_curve.empty()) process_.log().Info(ModelName(r.model) + " " + KnotChoiceLine(*camera));
         for (const std::string& line : {OutlierLine(*camera), WarpChoiceLine(*camera)})
-          if (!line.empty()) process_.log().Info(r.model + " " + line);
+          if (!line.empty()) process_.log().Info(ModelName(r.model) + " " + line);
         if (camera->uncertainty.median_px >= 0)
-          process_.log().Info(r.model + " " + UncertaintyLine(*camera));
+          process_.log().Info(ModelName(r.model) + " " + UncertaintyLine(*camera));
       }
       for (const auto* camera : {&r.left, &r.right})
         for (const auto& skipped : camera->skipped)
@@ -365,12 +374,14 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
     rms = primary.rms_px;
     heldout = HeldOutRms(primary);
     ok = true;
+  } catch (const Stopped&) {
+    process_.log().Info("solve stopped on request: nothing written or published");
   } catch (const std::exception& e) {
     process_.ReportError(std::string("solve failed: ") + e.what());
   }
   // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;
-  SetState(ok ? "solved" : "failed", rms, heldout);
+  SetState(ok ? "solved" : StopRequested() ? "stopped" : "failed", rms, heldout);
   PublishStatus();
   return ok;
 }

@@ -43,13 +43,14 @@
 
 #include "calib/calibrate.h"
 #include "calib/calibration_session.h"
+#include "runtime/command_dispatcher.h"
 #include "runtime/process.h"
 #include "widestereo/command_t.hpp"
 
 namespace ws::calib {
 
 struct NodeOptions {
-  std::vector<std::string> models{"bspline"};  // solved in this order
+  std::vector<ModelKind> models{ModelKind::kBspline};  // solved in this order
   CalibrationOptions calibration;
   SessionOptions session;
   std::string out_yaml, report_json, plot_dir;
@@ -61,7 +62,7 @@ struct NodeOptions {
 };
 
 // "all" -> every registered kind; else the one kind (checked).
-std::vector<std::string> ParseModelList(const std::string& spec);
+std::vector<ModelKind> ParseModelList(const std::string& spec);
 
 class CalibrateNode {
  public:
@@ -73,14 +74,17 @@ class CalibrateNode {
 
  private:
   void OnCorners(const widestereo::stereo_corners_t& msg);
-  void OnCommand(const widestereo::command_t& msg);
+  CommandDispatcher Commands();
+  void OnCommand(const CommandArgs& args);
   void PublishStatus();
-  void Solve(std::vector<std::string> models, CalibrationOptions options);
+  // Reports what the session's last read of its state file found damaged.
+  void ReportStateDamage();
+  void Solve(std::vector<ModelKind> models, CalibrationOptions options);
   // Solves the views (`frames`: the frame id of each), writes every output
   // and publishes; false (after reporting why) when the solve or writing the
   // calibration file or report failed.
   bool SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
-                const std::vector<std::string>& models, const CalibrationOptions& options);
+                const std::vector<ModelKind>& models, const CalibrationOptions& options);
   // "view 3 (left04.jpg + right04.jpg)", or "view 3 (frame 7)" without names.
   std::string ViewName(int view, const std::vector<int64_t>& frames) const;
   // The warnings of the published calibration that change the result: views
@@ -94,6 +98,7 @@ class CalibrateNode {
   Process& process_;
   NodeOptions options_;
   CalibrationSession session_;
+  CommandDispatcher commands_;
   std::mutex mutex_;  // guards state_, rms_, last_
   std::string state_ = "collecting";
   double rms_ = -1;

@@ -1,8 +1,12 @@
 #include "calib/calibration_session.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <lcm/lcm-cpp.hpp>
@@ -11,7 +15,11 @@
 
 #include "calib/corner_noise.h"
 #include "lcm_io/channels.h"
+#include "lcm_io/decode.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/atomic_file.h"
+#include "runtime/escaped.h"
+#include "runtime/wall_clock.h"
 
 namespace ws::calib {
 namespace {
@@ -30,9 +38,24 @@ std::string ArchiveTime(int64_t wall_us) {
 }
 constexpr size_t kArchiveTimeChars = 23;
 
-// views.lcmlog -> views-<time>.lcmlog, beside it.
-fs::path ArchivePath(const fs::path& state, int64_t wall_us) {
-  return state.parent_path() / (state.stem().string() + "-" + ArchiveTime(wall_us) + state.extension().string());
+// views.lcmlog -> views-<kind><time>.lcmlog, beside it.
+fs::path ArchivePath(const fs::path& state, const std::string& kind, int64_t wall_us) {
+  return state.parent_path() /
+         (state.stem().string() + "-" + kind + ArchiveTime(wall_us) + state.extension().string());
+}
+
+// A damaged state file's archive says so, and is never taken for one of
+// reset's (ArchiveFiles: their names are shorter).
+constexpr const char* kDamaged = "damaged-";
+
+bool IsCornersEvent(const std::string& channel, const uint8_t* data, size_t size) {
+  if (channel != channel::kStereoCorners) return false;
+  try {
+    DecodeMessage<widestereo::stereo_corners_t>(data, int(size));
+    return true;
+  } catch (const DecodeError&) {
+    return false;
+  }
 }
 
 }  // namespace
@@ -47,28 +70,41 @@ CalibrationSession::~CalibrationSession() = default;
 int CalibrationSession::Restore() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (options_.state_path.empty()) return 0;
-  const int restored = ReadStateLocked();
+  const int restored = ReadStateLocked(WallMicros());
   OpenStateForAppend();
   return restored;
 }
 
-int CalibrationSession::ReadStateLocked() {
+int CalibrationSession::ReadStateLocked(int64_t wall_us) {
   const std::string& path = options_.state_path;
   state_events_ = 0;
+  state_damage_.clear();
   if (!fs::exists(path)) return 0;
-  const LcmLogScan scan = ScanLcmLog(path);
-  if (!scan.complete()) fs::resize_file(path, scan.valid_bytes);
-  lcm::LogFile log(path, "r");
-  if (!log.good()) throw std::runtime_error("cannot read the state file " + path);
+  const LcmLogRecovery log = RecoverLcmLog(path, IsCornersEvent);
+  std::string archive;
+  if (!log.intact()) {
+    // The damaged file is kept as it is, and the views continue in a new
+    // one holding every intact event: what follows the damage is not lost.
+    archive = ArchiveLocked(kDamaged, wall_us);
+    WriteFileAtomically(path, EncodeLcmLog(log.events));
+  }
   int restored = 0;
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    ++state_events_;
-    if (event->channel != channel::kStereoCorners) continue;
-    widestereo::stereo_corners_t msg;
-    if (msg.decode(event->data, 0, event->datalen) != event->datalen) continue;
+  for (const LcmLogEvent& event : log.events) {
+    const auto msg = DecodeMessage<widestereo::stereo_corners_t>(event.data.data(), int(event.data.size()));
     if (AddLocked(msg, nullptr, false) == Outcome::kAccepted) ++restored;
   }
+  state_events_ = int64_t(log.events.size());
+  if (!log.intact())
+    state_damage_ = "the views file " + Quoted(path) + " was damaged (" + log.first_damage + ") and is kept as " +
+                    Quoted(archive) + ": intact events recovered: " + std::to_string(log.events.size()) + " (" +
+                    std::to_string(restored) + " views restored); events lost: " + std::to_string(log.lost_events) +
+                    " (" + std::to_string(log.lost_bytes) + " of " + std::to_string(log.file_bytes) + " bytes)";
   return restored;
+}
+
+std::string CalibrationSession::StateDamage() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return state_damage_;
 }
 
 void CalibrationSession::OpenStateForAppend() {
@@ -137,8 +173,7 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
   left_grid_.Add(left, data_.left.image_width, data_.left.image_height);
   right_grid_.Add(right, data_.right.image_width, data_.right.image_height);
   if (save && state_) {
-    std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
-    msg.encode(bytes.data(), 0, int(bytes.size()));
+    std::vector<uint8_t> bytes = EncodeMessage(msg);
     lcm::LogEvent event;
     event.eventnum = state_events_++;
     event.timestamp = msg.utime;
@@ -187,7 +222,7 @@ std::string CalibrationSession::RestoreLastArchive(int64_t wall_us) {
   }
   fs::rename(archives.back(), options_.state_path);
   ClearLocked();
-  ReadStateLocked();
+  ReadStateLocked(wall_us);
   OpenStateForAppend();
   return archives.back();
 }
@@ -203,11 +238,23 @@ void CalibrationSession::ClearLocked() {
 
 std::string CalibrationSession::ArchiveStateLocked(int64_t wall_us) {
   state_.reset();
-  fs::path archive = ArchivePath(options_.state_path, wall_us);
-  while (fs::exists(archive)) archive = ArchivePath(options_.state_path, ++wall_us);
-  fs::rename(options_.state_path, archive);
+  const std::string archive = ArchiveLocked("", wall_us);
+  fs::remove(options_.state_path);
   state_events_ = 0;
-  return archive.string();
+  return archive;
+}
+
+// link(2) gives the file its archive's name without ever replacing a file
+// that has it (an earlier archive), and leaves the state file in place until
+// the caller replaces or removes it: a crash in between loses nothing.
+std::string CalibrationSession::ArchiveLocked(const std::string& kind, int64_t wall_us) {
+  for (;; ++wall_us) {
+    const std::string archive = ArchivePath(options_.state_path, kind, wall_us).string();
+    if (link(options_.state_path.c_str(), archive.c_str()) == 0) return archive;
+    if (errno != EEXIST)
+      throw std::runtime_error("cannot keep " + Quoted(options_.state_path) + " as " + Quoted(archive) + ": " +
+                               std::strerror(errno));
+  }
 }
 
 std::vector<std::string> CalibrationSession::ArchiveFiles() const {

@@ -6,8 +6,10 @@
 // State file: an LCM log of every accepted STEREO_CORNERS message, appended
 // and flushed as each is accepted, and read back when the session starts, so
 // a process killed halfway loses nothing the person holding the board did.
-// A log cut in the middle of an event (a kill during a write) is truncated
-// to its last complete event before appending.
+// A damaged file (cut in the middle of an event by a kill during a write, a
+// flipped byte) is never truncated: it is kept beside itself as
+// STATE-damaged-<UTC time>.lcmlog, and every intact event, those after the
+// damage too (lcm_io/lcm_log.h, RecoverLcmLog), goes to a new state file.
 //
 // Nothing is ever thrown away: Reset() archives the views (the state file is
 // renamed STATE-<UTC time>.lcmlog beside it; without a state file they are
@@ -64,6 +66,10 @@ class CalibrationSession {
   // returns how many views it restored. Throws std::runtime_error when the
   // file cannot be read or written.
   int Restore();
+  // What the last read of the state file (Restore, RestoreLastArchive) found
+  // damaged, where the damaged file was kept and what was recovered and
+  // lost; "" when it was intact.
+  std::string StateDamage() const;
 
   enum class Outcome { kAccepted, kDuplicate, kNoBoard, kRejected };
   // Adds a STEREO_CORNERS message: accepted (and saved), a near duplicate of
@@ -88,12 +94,16 @@ class CalibrationSession {
 
  private:
   Outcome AddLocked(const widestereo::stereo_corners_t& msg, std::string* why, bool save);
-  // Adds the views of the state file (trimmed to its complete events).
-  int ReadStateLocked();
+  // Adds the views of the state file; a damaged one is archived first and
+  // replaced by its intact events (`wall_us` names the archive).
+  int ReadStateLocked(int64_t wall_us);
   void OpenStateForAppend();
   void ClearLocked();
   // Renames the state file to a new archive; returns the archive's path.
   std::string ArchiveStateLocked(int64_t wall_us);
+  // Gives the state file a new archive's name too (STATE-<kind><time>);
+  // returns it.
+  std::string ArchiveLocked(const std::string& kind, int64_t wall_us);
   // The archives of the state file, oldest first.
   std::vector<std::string> ArchiveFiles() const;
 
@@ -105,6 +115,7 @@ class CalibrationSession {
   int duplicates_ = 0;
   std::unique_ptr<lcm::LogFile> state_;
   int64_t state_events_ = 0;
+  std::string state_damage_;
   std::vector<widestereo::stereo_corners_t> accepted_;  // the views' messages, in order
   std::vector<std::vector<widestereo::stereo_corners_t>> memory_archives_;  // without a state file
 };

@@ -38,7 +38,7 @@ std::vector<double> RefitSpline(const CameraBlock& from, const Spline& to, doubl
 
 }  // namespace
 
-CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
+CameraBlock PinholeBlock(ModelKind kind, const CalibrationOptions& options, double fx,
                          double fy, double cx, double cy) {
   CameraBlock camera(MakeCalibrationModel(kind, SetupFor(options, 1.0)));
   camera.intrinsics = {fx, fy, cx, cy, 0, 0};
@@ -66,31 +66,31 @@ CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& option
         }
       },
       camera.model);
-  if (!out.field.empty()) out.field_prior = NonRadialPrior(out, options.smoothness);
+  if (out.field.grid()) out.field_prior = NonRadialPrior(out, options.smoothness);
   return out;
 }
 
-CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, int width,
-                               int height, double lambda) {
+CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, bool tilt,
+                               int width, int height, double lambda) {
+  const int n = NumRadialCoeffs(camera);
+  std::array<double, 2> tau{};  // the camera's tilt carried over, or 0
+  if (camera.field.tilt())
+    std::copy_n(camera.coeffs.begin() + n + camera.field.GridCoeffs(), 2, tau.begin());
   CameraBlock out = camera;
-  out.coeffs.resize(NumRadialCoeffs(camera));
-  out.field = NonRadialField();
+  out.coeffs.resize(n);
   out.field_prior.resize(0, 0);
-  if (cols == 0) return out;
   const double* in = camera.intrinsics.data();
   const double margin_u = 0.01 * width, margin_v = 0.01 * height;
   out.field = NonRadialField(cols, rows,
                              {(-0.5 - margin_u - in[kCx]) / in[kFx],
                               (width - 0.5 + margin_u - in[kCx]) / in[kFx],
                               (-0.5 - margin_v - in[kCy]) / in[kFy],
-                              (height - 0.5 + margin_v - in[kCy]) / in[kFy]});
-  out.coeffs.resize(out.coeffs.size() + out.field.NumCoeffs(), 0.0);
-  out.field_prior = NonRadialPrior(out, lambda);
+                              (height - 0.5 + margin_v - in[kCy]) / in[kFy]},
+                             tilt);
+  out.coeffs.resize(n + out.field.GridCoeffs(), 0.0);
+  if (tilt) out.coeffs.insert(out.coeffs.end(), tau.begin(), tau.end());
+  if (out.field.grid()) out.field_prior = NonRadialPrior(out, lambda);
   return out;
-}
-
-std::string Kind(const CameraBlock& camera) {
-  return std::visit([](const auto& m) { return m.Kind(); }, camera.model);
 }
 
 double FieldEnd(const CameraBlock& camera) {
@@ -100,11 +100,6 @@ double FieldEnd(const CameraBlock& camera) {
         return 0.0;
       },
       camera.model);
-}
-
-bool IsSpline(const CameraBlock& camera) {
-  return std::visit([](const auto& m) { return kIsBspline<std::decay_t<decltype(m)>>; },
-                    camera.model);
 }
 
 std::vector<std::string> ParamNames(const CameraBlock& camera) {

@@ -37,7 +37,7 @@ struct CameraBlock {
 // A pinhole start: the model of `kind` on knots over [0, 1] with zero
 // coefficients, only fx fy cx cy free (pinhole_only). For an angle model
 // (D = 0 over theta) that is the equidistant fisheye, r_pixels = f theta.
-CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& options, double fx,
+CameraBlock PinholeBlock(ModelKind kind, const CalibrationOptions& options, double fx,
                          double fy, double cx, double cy);
 
 // The same camera with its model (and, for B-splines, knots) for the field
@@ -46,19 +46,17 @@ CameraBlock PinholeBlock(const std::string& kind, const CalibrationOptions& opti
 // r_max, everything free.
 CameraBlock ForField(const CameraBlock& camera, const CalibrationOptions& options, double r_max);
 
-// The same camera with a non-radial field of cols x rows control points
-// (nonradial_field.h; 0 x 0: none) over its image of width x height pixels
-// as the camera sees it (the distorted normalized rectangle, 1 % wider each
+// The same camera with a non-radial part (nonradial_field.h): a field of
+// cols x rows control points (0 x 0: none) over its image of width x height
+// pixels as the camera sees it (the normalized rectangle, 1 % wider each
 // side), starting at F = 0, with its prior (nonradial_prior.h) at the
-// camera's parameters and the smoothness weight lambda.
-CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, int width,
-                               int height, double lambda);
+// camera's parameters and the smoothness weight lambda; and, with `tilt`,
+// a sensor tilt (the camera's, or 0 if it has none).
+CameraBlock WithNonRadialField(const CameraBlock& camera, int cols, int rows, bool tilt,
+                               int width, int height, double lambda);
 
-std::string Kind(const CameraBlock& camera);
 // A B-spline's field end r_max (its last knot); 0 for the polynomials.
 double FieldEnd(const CameraBlock& camera);
-// Whether the model is a B-spline (bspline, bspline_theta).
-bool IsSpline(const CameraBlock& camera);
 // fx fy cx cy p1 p2, then the model's coefficient names (alpha2.., k1..),
 // then the field's (field_x_0_0..).
 std::vector<std::string> ParamNames(const CameraBlock& camera);

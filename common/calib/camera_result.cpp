@@ -34,12 +34,12 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
     // A pinhole radius r = tan(theta) runs to infinity at 90 degrees: a
     // curve in r that must flatten towards it folds first.
     const std::string fisheye =
-        IsAngleModel(camera.model)
+        Traits(KindOf(camera.model)).angle
             ? ""
             : "; the fold is " + Fixed(std::atan(*fold) * 180 / M_PI, 0) +
                   " degrees off axis, and a pinhole-radius model cannot follow a lens whose "
                   "views reach towards 90 degrees: bspline_theta or kb4 can";
-    throw CalibrationError(p.name + " camera (" + Kind(camera) +
+    throw CalibrationError(p.name + " camera (" + ModelName(KindOf(camera.model)) +
                            "): the solved distortion curve folds back at r = " + Fixed(*fold, 3) +
                            ", inside the observed field; the views do not constrain the model "
                            "(more views, fewer knots or a stronger smoothness prior" + fisheye + ")");

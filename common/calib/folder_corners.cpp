@@ -1,6 +1,7 @@
 #include "calib/folder_corners.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "runtime/ordered_pipeline.h"
+#include "runtime/stop_request.h"
 #include "source/dir_source.h"
 
 namespace ws::calib {
@@ -75,7 +77,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   OrderedPipeline pipeline({workers, 2 * workers, OrderedPipeline::WhenFull::wait});
   const int64_t total = int64_t(result.folder.pairs.size());
   std::string first_board;  // the first left image with the board
-  for (int64_t id = 0;; ++id) {
+  for (int64_t id = 0; !StopRequested(); ++id) {
     std::optional<StereoPair> pair = source.Next();
     for (const std::string& event : source.TakeEvents()) log.Info(event);
     if (!pair) break;
@@ -86,7 +88,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     }
     ++result.read;
     result.names[id] = pair->label;
-    widestereo::stereo_frame_t frame;
+    widestereo::stereo_frame_t frame{};
     frame.frame_id = id;
     frame.utime = (id + 1) * 100000;
     frame.left = MatToImage(pair->left, frame.utime);
@@ -124,6 +126,10 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
                    (one_camera ? "images" : "pairs"));
   }
   pipeline.Drain();
+  if (StopRequested()) {  // the log of part of the folder is no log of it
+    std::filesystem::remove(corners_log);
+    throw Stopped();
+  }
   const std::string what = one_camera ? " images" : " pairs";
   log.Info("read " + std::to_string(result.read) + " of " + std::to_string(total) + what + " (" +
            LayoutName(result.folder.layout) + ")");

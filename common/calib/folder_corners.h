@@ -30,7 +30,9 @@ struct FolderCorners {
 // how many boards each camera shows and which images show none. Throws
 // std::runtime_error with what to do when nothing can be read, when no image
 // shows the board (naming a size that is found), or when the images show a
-// larger board than `finder`'s, of which it would find parts.
+// larger board than `finder`'s, of which it would find parts. Throws
+// Stopped (runtime/stop_request.h) when a stop is requested before every
+// pair is read, its images in hand detected and `corners_log` removed.
 FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCornerFinder& finder, int workers,
                            const std::string& corners_log, TextLog& log);
 

@@ -21,8 +21,8 @@ CameraBlock FixedBlock(const CameraModel& model) {
   block.coeffs = std::visit([&](const auto& m) { return m.EstimatedCoeffs(model.distortion.coeffs); },
                             block.model);
   block.field = NonRadialField::FromData(model.nonradial);
-  block.coeffs.insert(block.coeffs.end(), model.nonradial.coeffs.begin(),
-                      model.nonradial.coeffs.end());
+  const std::vector<double> nonradial = block.field.Coeffs(model.nonradial);
+  block.coeffs.insert(block.coeffs.end(), nonradial.begin(), nonradial.end());
   block.fixed = true;
   return block;
 }

@@ -105,7 +105,7 @@ Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
 Init Initialize(Prepared& p, const CalibrationOptions& options) {
   if (p.width <= 0 || p.height <= 0)
     throw CalibrationError(p.name + " camera: no image size in the corners");
-  if (IsAngleModel(MakeCalibrationModel(options.model, CalibrationSetup{1.0})))
+  if (Traits(options.model).angle)
     return InitializeAngle(p, options);
   const int n = static_cast<int>(p.views.size());
   Init init;

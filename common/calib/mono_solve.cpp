@@ -176,64 +176,92 @@ int FieldRows(int cols, int width, int height) {
   return std::max(NonRadialField::kDegree + 1, int(std::lround(cols * double(height) / width)));
 }
 
-// --nonradial (options.h, FieldRule): a given grid; or, auto, every grid of
-// kFieldLadder solved from the radial camera with F = 0 on the same corners
-// and cross-validated (the held-out RMS need not fall steadily: a grid
-// whose knots miss the pattern can do worse than a coarser one); the grid
-// of the lowest held-out RMS is kept if it beats no field beyond the
-// fold-to-fold noise (ChooseWithinNoise of the two).
+// Whether `candidate` predicts worse than `best` beyond the fold-to-fold
+// noise: the mean of the paired per-fold differences exceeds its standard
+// error (the mirror of ChooseWithinNoise's test).
+bool WorseBeyondNoise(const FinalSolve& candidate, const FinalSolve& best) {
+  return ChooseCandidate({candidate, best}) == 1;  // not even the simpler within the noise
+}
+
+// --nonradial (options.h, FieldRule): a given tilt and grid; or, auto, the
+// sensor tilt solved from the radial camera and kept if it beats none
+// beyond the fold-to-fold noise (ChooseWithinNoise of the two); then the
+// grids of kFieldLadder solved from what that kept with F = 0 on the same
+// corners and cross-validated (the held-out RMS need not fall steadily: a
+// grid whose knots miss the pattern can do worse than a coarser one),
+// until two grids in a row predict worse than the best so far beyond the
+// fold-to-fold noise: finer grids only add parameters to a field that
+// already over-fits. The grid of the lowest held-out RMS is kept if it
+// beats no field beyond the fold-to-fold noise.
 void ChooseField(const CalibrationOptions& options, const std::string& what, MonoState* s) {
   const Prepared& p = s->prepared;
   const bool warp_free = s->warp.free;
-  const CameraBlock radial = s->problem.cameras[0];
-  auto solve = [&](int cols, int rows) {
+  auto name = [](bool tilt, int cols, int rows) {
+    const std::string grid = std::to_string(cols) + " x " + std::to_string(rows) + " field";
+    return cols == 0 ? std::string(tilt ? "the sensor tilt" : "none")
+                     : (tilt ? "the sensor tilt and a " : "a ") + grid;
+  };
+  auto solve = [&](const CameraBlock& from, bool tilt, int cols, int rows) {
     return SolveCandidate(
-        WithNonRadialField(radial, cols, rows, p.width, p.height, options.smoothness), warp_free,
-        options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) + " field",
-        s);
+        WithNonRadialField(from, cols, rows, tilt, p.width, p.height, options.smoothness),
+        warp_free, options, what + " with " + name(tilt, cols, rows), s);
   };
   if (options.nonradial == FieldRule::kGrid) {
-    solve(options.field_cols, options.field_rows);
+    solve(s->problem.cameras[0], options.field_tilt, options.field_cols, options.field_rows);
     return;
   }
   if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
   if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
+  // A candidate solved: kept where the views hold it (every fold solved,
+  // a finite held-out RMS), with its point on the field curve.
   std::vector<FinalSolve> candidates = {Keep(*s)};
-  s->field_curve.push_back({0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
-  for (int cols : kFieldLadder) {
-    const int rows = FieldRows(cols, p.width, p.height);
-    Restore(candidates[0], s);
+  s->field_curve.push_back({false, 0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
+  auto tried = [&](const CameraBlock& from, bool tilt, int cols, int rows) {
     try {
-      candidates.push_back(solve(cols, rows));
+      candidates.push_back(solve(from, tilt, cols, rows));
     } catch (const CalibrationError& e) {
-      Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
-                       " field: " + e.what());
-      break;
+      Say(options, what + " with " + name(tilt, cols, rows) + ": " + e.what());
+      return false;
     }
-    if (s->heldout.folds != candidates[0].heldout.folds ||
-        !std::isfinite(s->heldout.rms_px[0])) {  // a field the views cannot hold
-      candidates.pop_back();
-      break;
+    if (s->heldout.folds != candidates[0].heldout.folds || !std::isfinite(s->heldout.rms_px[0])) {
+      candidates.pop_back();  // a field the views cannot hold
+      return false;
     }
-    s->field_curve.push_back({cols, rows, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
-    Say(options, what + " with a " + std::to_string(cols) + " x " + std::to_string(rows) +
-                     " field: rms " + Fixed(s->field_curve.back().rms_px) + " px, held-out " +
+    s->field_curve.push_back({tilt, cols, rows, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0]});
+    Say(options, what + " with " + name(tilt, cols, rows) + ": rms " +
+                     Fixed(s->field_curve.back().rms_px) + " px, held-out " +
                      Fixed(s->heldout.rms_px[0]) + " px");
+    return true;
+  };
+  // The tilt: kept where it predicts better than none beyond the noise.
+  size_t base = 0;
+  if (tried(candidates[0].camera, true, 0, 0) && ChooseCandidate({candidates[0], candidates[1]}) == 1)
+    base = 1;
+  const size_t first_grid = candidates.size();
+  const bool tilt = base == 1;
+  size_t best_so_far = base;
+  int worse_in_a_row = 0;
+  for (int cols : kFieldLadder) {
+    if (worse_in_a_row == 2) break;
+    Restore(candidates[base], s);
+    if (!tried(candidates[base].camera, tilt, cols, FieldRows(cols, p.width, p.height))) break;
+    const FinalSolve& newest = candidates.back();
+    worse_in_a_row = WorseBeyondNoise(newest, candidates[best_so_far]) ? worse_in_a_row + 1 : 0;
+    if (newest.heldout.rms_px[0] < candidates[best_so_far].heldout.rms_px[0])
+      best_so_far = candidates.size() - 1;
   }
   // The grid that predicts best, kept only if it beats no field beyond the
   // fold-to-fold noise.
-  size_t best = 1;
-  for (size_t i = 2; i < candidates.size(); ++i)
+  size_t best = first_grid;
+  for (size_t i = first_grid + 1; i < candidates.size(); ++i)
     if (candidates[i].heldout.rms_px[0] < candidates[best].heldout.rms_px[0]) best = i;
-  const int chosen =
-      best < candidates.size() && ChooseCandidate({candidates[0], candidates[best]}) == 1 ? int(best) : 0;
-  s->field_chosen = chosen;
-  Say(options, what + ": non-radial field " +
-                   (chosen == 0 ? std::string("none")
-                                : std::to_string(s->field_curve[chosen].cols) + " x " +
-                                      std::to_string(s->field_curve[chosen].rows)) +
-                   " chosen (the lowest held-out RMS, if it beats none beyond the fold-to-fold "
-                   "noise)");
+  const size_t chosen =
+      best < candidates.size() && ChooseCandidate({candidates[base], candidates[best]}) == 1 ? best : base;
+  s->field_chosen = int(chosen);
+  const FieldTrial& c = s->field_curve[chosen];
+  Say(options, what + ": non-radial part " + name(c.tilt, c.cols, c.rows) +
+                   " chosen (the tilt if it beats none, the grid of the lowest held-out RMS if it "
+                   "beats no grid, each beyond the fold-to-fold noise)");
   Restore(candidates[chosen], s);
 }
 
@@ -310,7 +338,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   s->inliers.assign(p.views.size(), {});
   for (size_t v = 0; v < p.views.size(); ++v) s->inliers[v].assign(p.views[v].size(), 1);
   s->init_method = init.pinhole.method;
-  const std::string what = p.name + " camera (" + options.model + ")";
+  const std::string what = p.name + " camera (" + ModelName(options.model) + ")";
   const int min_points = options.min_points_per_view;
 
   // A pinhole on the central disc.
@@ -350,7 +378,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     r_max = needed;
     camera = ForField(camera, options, r_max);
   };
-  const bool global_coeffs = !IsSpline(camera);
+  const bool global_coeffs = !Traits(KindOf(camera.model)).spline;
   for (int stage = 1; !everything; ++stage) {
     fraction *= 1.4;
     MarkDisc(pinhole, p, fraction, min_points, &disc, &everything);
@@ -388,7 +416,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
-  if (auto_knots && IsSpline(s->problem.cameras[0])) ChooseKnots(choosing, what, s);
+  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(choosing, what, s);
   if (requested.board_warp == WarpRule::kAuto) ChooseWarp(choosing, what, s);
   if (requested.nonradial != FieldRule::kNone) ChooseField(choosing, what, s);
   // The final solve: the chosen model, its outliers left out.

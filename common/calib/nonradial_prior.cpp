@@ -3,7 +3,9 @@
 #include <ceres/cost_function.h>
 #include <ceres/jet.h>
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <vector>
 
 namespace ws::calib {
@@ -11,33 +13,46 @@ namespace {
 
 using Dual = ceres::Jet<double, 1>;
 
-// The first-order moves of the distorted point (s, t) that the camera's
-// other parameters make (nonradial_prior.h), one column each: fx, fy, cx,
-// cy, p1 and p2 where the model has them, each radial coefficient, and the
-// camera turned about x, y and z. Empty where the radial model does not
-// invert at (s, t).
+// The first-order moves of the tilted point (s, t) (the distorted point
+// without a tilt) that the camera's other parameters make
+// (nonradial_prior.h), one column each: fx, fy, cx, cy, p1 and p2 where the
+// model has them, each radial coefficient, the tilt's two angles where the
+// camera has a tilt, and the camera turned about x, y and z. Empty where
+// the tilt or the radial model does not invert at (s, t).
 template <class Model>
 std::vector<Eigen::Vector2d> GaugePatterns(const Model& model, const CameraBlock& camera, double s,
                                            double t) {
   const double* in = camera.intrinsics.data();
-  const double distorted[2] = {s, t};
-  double ideal[2];
+  const int n = model.NumCoeffs();
+  const NonRadialField& field = camera.field;
+  const double* tilt = camera.coeffs.data() + n + field.GridCoeffs();
+  const double tilted[2] = {s, t};
+  double distorted[2] = {s, t}, ideal[2];
+  if (field.tilt() && !UntiltPoint(tilt, tilted, distorted)) return {};
   if (!Undistort(model, camera.coeffs.data(), in[kP1], in[kP2], distorted, ideal)) return {};
   std::vector<Eigen::Vector2d> patterns = {{s, 0}, {0, t}, {1, 0}, {0, 1}};
-  const int n = model.NumCoeffs();
   std::vector<Dual> intrinsics(in, in + kNumIntrinsics), coeffs(camera.coeffs.begin(),
                                                                 camera.coeffs.begin() + n);
+  Dual tau[2] = {Dual(field.tilt() ? tilt[0] : 0.0), Dual(field.tilt() ? tilt[1] : 0.0)};
+  // The tilted point of an ideal point, as ProjectIdeal has it.
+  auto tilted_of = [&](const Dual* ideal_point, Dual* out) {
+    Dual d[2];
+    DistortIdeal(model, intrinsics.data(), coeffs.data(), ideal_point, d);
+    TiltPoint(tau, d, out);
+  };
   const Dual dual_ideal[2] = {Dual(ideal[0]), Dual(ideal[1])};
   auto derivative = [&](Dual* parameter) {
     parameter->v[0] = 1;
     Dual d[2];
-    DistortIdeal(model, intrinsics.data(), coeffs.data(), dual_ideal, d);
+    tilted_of(dual_ideal, d);
     parameter->v[0] = 0;
     patterns.emplace_back(d[0].v[0], d[1].v[0]);
   };
   if (Model::kTangential)
     for (int k : {kP1, kP2}) derivative(&intrinsics[k]);
   for (int k = 0; k < n; ++k) derivative(&coeffs[k]);
+  if (field.tilt())
+    for (Dual& angle : tau) derivative(&angle);
   double ray[3];
   if (!Model::Coordinate::Ray(ideal, ray)) return {};
   for (int axis = 0; axis < 3; ++axis) {  // X + omega (e_axis x X), omega the dual part
@@ -47,7 +62,7 @@ std::vector<Eigen::Vector2d> GaugePatterns(const Model& model, const CameraBlock
     turned[b].v[0] = ray[a];
     Dual turned_ideal[2], d[2];
     if (!Model::Coordinate::Ideal(turned, turned_ideal)) return {};
-    DistortIdeal(model, intrinsics.data(), coeffs.data(), turned_ideal, d);
+    tilted_of(turned_ideal, d);
     patterns.emplace_back(d[0].v[0], d[1].v[0]);
   }
   return patterns;
@@ -82,7 +97,7 @@ class LinearPrior final : public ceres::CostFunction {
 
 Eigen::MatrixXd NonRadialPrior(const CameraBlock& camera, double lambda) {
   const NonRadialField& field = camera.field;
-  const int cols = field.cols(), rows = field.rows(), n = field.NumCoeffs(), half = n / 2;
+  const int cols = field.cols(), rows = field.rows(), n = field.GridCoeffs(), half = n / 2;
   const auto& d = field.domain();
   // The gauge: patterns and field values at the samples.
   std::vector<std::vector<Eigen::Vector2d>> patterns;
@@ -134,11 +149,15 @@ Eigen::MatrixXd NonRadialPrior(const CameraBlock& camera, double lambda) {
   M.topRows(n) = lambda * fx * Eigen::MatrixXd::Identity(n, n);
   for (size_t k = 0; k < second.size(); ++k) M.row(n + k) = lambda * fx * second[k];
   M.bottomRows(A.rows()) = kGaugeWeight * fx * A;
-  return M;
+  // The same cost |M c|^2 = |R c|^2 from R of M = Q R, n rows instead of
+  // about 3 n: the solver forms the prior's outer product every iteration.
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(M);
+  const int kept = int(std::min(M.rows(), M.cols()));
+  return qr.matrixQR().topRows(kept).triangularView<Eigen::Upper>();
 }
 
 void AddNonRadialPrior(ceres::Problem& problem, const CameraBlock& camera, double* coeffs) {
-  if (camera.field.empty() || camera.field_prior.rows() == 0) return;
+  if (!camera.field.grid() || camera.field_prior.rows() == 0) return;
   const int block = int(camera.coeffs.size());
   problem.AddResidualBlock(
       new LinearPrior(camera.field_prior, block - camera.field.NumCoeffs(), block), nullptr,

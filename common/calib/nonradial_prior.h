@@ -33,9 +33,10 @@ namespace ws::calib {
 
 inline constexpr double kGaugeWeight = 10.0;
 
-// The prior's matrix M (e = M c for the field's coefficients c) of `camera`,
-// whose field and radial model are set (the gauge patterns at its
-// parameters).
+// The prior's matrix of `camera`, whose field and radial model are set (the
+// gauge patterns at its parameters): not M itself but its square root R
+// (M = Q R, R upper triangular, at most as many rows as c), the same cost
+// |R c|^2 = |M c|^2 in a third of the rows.
 Eigen::MatrixXd NonRadialPrior(const CameraBlock& camera, double lambda);
 
 // Adds e = camera.field_prior c on the field's part of `coeffs` (the block

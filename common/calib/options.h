@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "models/model_kind.h"
+
 namespace ws::calib {
 
 // How the stereo rig is solved.
@@ -80,27 +82,31 @@ inline constexpr int kContinuationKnots = 25;
 // The default smoothness prior weight lambda (smoothness_prior.h).
 inline constexpr double kDefaultSmoothness = 0.01;
 
-// The non-radial part of the lens model (models/nonradial_field.h).
+// The non-radial part of the lens model (models/nonradial_field.h): a
+// sensor tilt (models/sensor_tilt.h) and a field.
 enum class FieldRule {
   kNone,  // radial only
   // The default: per camera, after the radial model, its knots and the
-  // board's bow are settled, fields of each of kFieldLadder control points
-  // across (rows in proportion to the image) are solved and cross-validated
-  // on the same corners (every grid: a tilted sensor's field is invisible to
-  // the coarse ones, whose low orders the gauge gives to the pinhole and the
-  // pose, and appears at the finer ones); the grid of the lowest held-out RMS is kept where
-  // it beats no field beyond the fold-to-fold noise (ChooseWithinNoise of
-  // the two): whether the lens has a non-radial part is a test, how fine a
-  // grid it needs the best prediction. A radially symmetric lens comes out
-  // as none. With several models, the field is
-  // chosen for the model the radial comparison chose (calibrate.h).
+  // board's bow are settled, first the sensor tilt: solved and
+  // cross-validated on the same corners, kept where it beats no tilt beyond
+  // the fold-to-fold noise (ChooseWithinNoise of the two). Then, on top of
+  // what that kept, fields of each of kFieldLadder control points across
+  // (rows in proportion to the image) are solved and cross-validated in
+  // that order (a coarse one may miss what a finer one finds), until two
+  // grids in a row predict worse than the best so far beyond the
+  // fold-to-fold noise (over-fitting: finer grids only add parameters); the
+  // grid of the lowest held-out RMS is kept where it beats no field beyond
+  // the fold-to-fold noise. Whether the lens has a non-radial part is a
+  // test, how fine a grid it needs the best prediction. A radially
+  // symmetric lens comes out as none. With several models, the non-radial
+  // part is chosen for the model the radial comparison chose (calibrate.h).
   kAuto,
-  kGrid,  // field_cols x field_rows control points
+  kGrid,  // given: field_tilt, and field_cols x field_rows control points (0 x 0: no field)
 };
 inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
 
 struct CalibrationOptions {
-  std::string model = "bspline";  // a registered kind: bspline, poly6, poly12
+  ModelKind model = ModelKind::kBspline;
   // Distinct B-spline knots on [0, r_max]: knots - 1 uniform spans, knots + 2
   // basis functions of which `knots` are estimated (alpha_0 = alpha_1 = 0);
   // kAutoKnots: chosen by cross-validation (above).
@@ -129,6 +135,7 @@ struct CalibrationOptions {
   bool covariance = true;  // parameter standard deviations
   FieldRule nonradial = FieldRule::kAuto;
   int field_cols = 0, field_rows = 0;  // FieldRule::kGrid
+  bool field_tilt = false;             // FieldRule::kGrid
   // The board's deflection (board_warp.h): estimated with each camera's
   // final solve and the joint solve, held flat, or chosen (WarpRule).
   WarpRule board_warp = WarpRule::kAuto;
@@ -143,17 +150,17 @@ struct CalibrationOptions {
   std::function<void(const std::string&)> progress;
 };
 
-// Throws CalibrationError for options no calibration can use (unknown model,
-// knots out of range, min_views below 3).
+// Throws CalibrationError for options no calibration can use (knots out of
+// range, min_views below 3).
 void CheckOptions(const CalibrationOptions& options);
 
 // "auto" (kAutoKnots) or a count from 2 to 64 (--knots, knots=N); throws
 // std::invalid_argument otherwise.
 int ParseKnots(const std::string& value);
 
-// --nonradial: "auto", "none", or "COLSxROWS" (kGrid, 4 to 64 each) into
-// options->nonradial, field_cols, field_rows; throws std::invalid_argument
-// otherwise.
+// --nonradial: "auto", "none", "tilt", "COLSxROWS" or "tilt+COLSxROWS"
+// (kGrid, 4 to 64 each) into options->nonradial, field_tilt, field_cols,
+// field_rows; throws std::invalid_argument otherwise.
 void ParseFieldRule(const std::string& value, CalibrationOptions* options);
 
 // --outlier-sigma: "auto" (kChauvenet), "off" or "0" (kOff), or a positive

@@ -50,7 +50,7 @@ std::optional<Pose> RayPose(const CameraBlock& camera, const BoardView& view,
 // (pinhole models) or from the rays (angle models, which have none).
 bool StartPose(const CameraBlock& camera, const Init& init, const Prepared& p, int v,
                const std::vector<char>& mask, Pose* pose) {
-  if (!IsAngleModel(camera.model)) return HomographyPose(init, p, v, camera.intrinsics.data(), pose);
+  if (!Traits(KindOf(camera.model)).angle) return HomographyPose(init, p, v, camera.intrinsics.data(), pose);
   const auto from_rays = RayPose(camera, p.views[v], mask);
   if (from_rays) *pose = *from_rays;
   return from_rays.has_value();
@@ -95,7 +95,7 @@ bool FitsInsideSupportedField(const CameraBlock& camera, const BoardView& view,
 
 std::vector<Pose> PlanarPoseCandidates(const CameraBlock& camera, const BoardView& view,
                                        const std::vector<char>& mask) {
-  if (IsAngleModel(camera.model)) {  // ideal points are not pinhole ones
+  if (Traits(KindOf(camera.model)).angle) {  // ideal points are not pinhole ones
     const auto pose = RayPose(camera, view, mask);
     return pose ? std::vector<Pose>{*pose} : std::vector<Pose>{};
   }

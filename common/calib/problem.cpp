@@ -11,6 +11,7 @@
 #include "calib/nonradial_prior.h"
 #include "calib/residuals.h"
 #include "calib/smoothness_prior.h"
+#include "runtime/stop_request.h"
 
 namespace ws::calib {
 namespace {
@@ -151,7 +152,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
       cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
     } else {
       std::vector<int> held_intrinsics, held_coeffs;
-      if (!HasTangential(camera.model)) {  // kb4: p1 = p2 = 0 by definition
+      if (!Traits(KindOf(camera.model)).tangential) {  // kb4: p1 = p2 = 0 by definition
         held_intrinsics = {kP1, kP2};
         cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
       }
@@ -200,6 +201,13 @@ bool SolutionValid(const Problem& problem) {
   return true;
 }
 
+// Ends a solve after the iteration during which a stop was requested.
+struct AbortOnStop : ceres::IterationCallback {
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return StopRequested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+};
+
 }  // namespace
 
 Pose BoardPose(const Problem& problem, const Observation& o) {
@@ -209,6 +217,7 @@ Pose BoardPose(const Problem& problem, const Observation& o) {
 }
 
 SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
+  ThrowIfStopRequested();
   Built built(problem);
   Build(problem, settings, &built);
   ceres::Solver::Options options;
@@ -231,8 +240,11 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
   options.gradient_tolerance = 1e-2 * settings.tolerance;
   options.parameter_tolerance = settings.tolerance;
   options.logging_type = ceres::SILENT;
+  AbortOnStop abort_on_stop;
+  options.callbacks.push_back(&abort_on_stop);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &built.ceres, &summary);
+  ThrowIfStopRequested();  // a solve cut short is no solution
   built.arena.CopyBack();
   SolveOutcome outcome;
   outcome.message = summary.BriefReport();
@@ -243,6 +255,7 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
 }
 
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
+  ThrowIfStopRequested();
   Built built(problem);
   Build(problem, settings, &built);
   if (built.free_blocks.empty()) return;

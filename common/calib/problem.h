@@ -75,11 +75,12 @@ Pose BoardPose(const Problem& problem, const Observation& observation);
 // corners cannot be projected at the start (behind the camera, past
 // max_radius) are removed from it and listed in left_out. Throws
 // CalibrationError when nothing is left to solve or the solver does not
-// reach a valid camera.
+// reach a valid camera; throws Stopped (runtime/stop_request.h), the problem
+// unchanged, when a stop is requested before or during the solve.
 SolveOutcome Solve(Problem& problem, const SolveSettings& settings);
 
 // The standard deviations of the free parameters at the current solution
-// (covariance.h), into outcome.
+// (covariance.h), into outcome; throws Stopped as Solve does.
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome);
 
 // The problem linearised at its parameters, without a robust loss: per

@@ -69,12 +69,12 @@ Json CameraReport(const CameraCalibration& c) {
   j["p1"] = m.p1;
   j["p2"] = m.p2;
   j["knots"] = Numbers(m.distortion.knots);
-  j[CoefficientKey(m.distortion.kind)] = Numbers(m.distortion.coeffs);
+  j[Traits(m.distortion.kind).coeff_key] = Numbers(m.distortion.coeffs);
   Json stddev = Json::object();
   for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
     stddev[c.param_names[i]] = c.stddev[i];
   j["stddev"] = stddev;
-  j["model"] = m.distortion.kind;
+  j["model"] = ModelName(m.distortion.kind);
   j["degree"] = m.distortion.degree;
   j["invalid_points"] = c.invalid_points;
   j["view_rms"] = ViewRmsJson(c.view_rms);
@@ -96,11 +96,12 @@ Json CameraReport(const CameraCalibration& c) {
     const NonRadial& f = m.nonradial;
     j["nonradial"] = {{"cols", f.cols}, {"rows", f.rows},
                       {"domain", Numbers(std::vector<double>(f.domain.begin(), f.domain.end()))},
-                      {"coeffs", Numbers(f.coeffs)}};
+                      {"coeffs", Numbers(f.coeffs)},
+                      {"tilt", Numbers(std::vector<double>(f.tilt.begin(), f.tilt.end()))}};
   }
   Json field_curve = Json::array();
   for (const FieldTrial& t : c.field_curve)
-    field_curve.push_back({{"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
+    field_curve.push_back({{"tilt", t.tilt}, {"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
                            {"heldout_rms_px", t.heldout_rms_px}});
   j["field_curve"] = field_curve;
   j["field_chosen"] = c.field_chosen;
@@ -146,7 +147,7 @@ Json CameraReport(const CameraCalibration& c) {
 
 Json StereoReport(const StereoCalibration& s) {
   Json j;
-  j["model"] = s.model;
+  j["model"] = ModelName(s.model);
   j["cameras"] = {CameraReport(s.left)};
   j["flow"] = FlowName(s.flow);
   j["solve_seconds"] = s.solve_seconds;
@@ -195,7 +196,7 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
                      {"coeffs", row.coeffs},
                      {"chosen", row.chosen}});
   j["table_ii"] = table;
-  j["chosen"] = calibrations.solved.empty() ? Json() : Json(Chosen(calibrations).model);
+  j["chosen"] = calibrations.solved.empty() ? Json() : Json(ModelName(Chosen(calibrations).model));
   j["solve_seconds"] = seconds;
   return j;
 }

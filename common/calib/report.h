@@ -25,10 +25,10 @@
 // auto, "board_warp_choice" {"kept", "flat_heldout_rms_px",
 // "warped_heldout_rms_px", "x2_mm", "y2_mm", "stddev_x2_mm", "stddev_y2_mm"}
 // (the bow this camera's views estimated, kept or not). With a non-radial
-// field (models/nonradial_field.h) "nonradial" {"cols", "rows", "domain",
-// "coeffs"}; "field_curve" (--nonradial auto: none, then every grid tried,
-// {"cols", "rows", "rms_px", "heldout_rms_px"}; empty otherwise) and
-// "field_chosen" (its index).
+// part (models/nonradial_field.h) "nonradial" {"cols", "rows", "domain",
+// "coeffs", "tilt"}; "field_curve" (--nonradial auto: none, the tilt, then
+// every grid tried, {"tilt", "cols", "rows", "rms_px", "heldout_rms_px"};
+// empty otherwise) and "field_chosen" (its index).
 // With several models: {"models": [one object as above per model],
 // "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px",
 // "left_heldout_rms_px", "right_heldout_rms_px", "coeffs", "chosen"}],

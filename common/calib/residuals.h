@@ -9,7 +9,7 @@
 // Parameter blocks (all double arrays owned by the caller):
 //   intrinsics[6]  {fx, fy, cx, cy, p1, p2}         (models/projection.h)
 //   coeffs[N]      the model's estimated coefficients, then the non-radial
-//                  field's (N = model.NumCoeffs() + field.NumCoeffs())
+//                  part's (F's, then tau_x, tau_y; N = model.NumCoeffs() + field.NumCoeffs())
 //   pose[6]        board -> camera (pose.h)
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
 //   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
@@ -20,10 +20,12 @@
 // however many knots it has), so the Jet carries those and the fixed-size
 // blocks, and their derivatives go to their columns of the coefficient
 // block (the other columns are 0). The Jet's size, and so the cost per
-// corner, does not grow with the number of knots. The non-radial field
-// (models/nonradial_field.h) is linear in its coefficients: a corner's 16
-// control points and its field's gradient come from its local basis, and
-// the chain rule takes the Jet of (x_d, y_d) through x_d + F(x_d).
+// corner, does not grow with the number of knots. A sensor tilt
+// (models/sensor_tilt.h) carries its two angles in the Jet. The non-radial
+// field (models/nonradial_field.h) is linear in its coefficients: a
+// corner's 16 control points and its field's gradient come from its local
+// basis, and the chain rule takes the Jet of the tilted point x_t through
+// x_t + F(x_t).
 #pragma once
 
 #include <ceres/cost_function.h>
@@ -105,9 +107,11 @@ class ViewCost final : public ceres::CostFunction {
     LensJet intrinsics[kNumIntrinsics];
     Seed(p[0], kNumIntrinsics, kIntrinsicsAt, intrinsics);
     const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
-    const int all = n + field_->NumCoeffs(), half = field_->NumCoeffs() / 2;
+    const int all = n + field_->NumCoeffs(), half = field_->GridCoeffs() / 2;
     const double* field = p[1] + n;
     std::vector<LensJet> coeffs(p[1], p[1] + n);  // constants but for a corner's local ones
+    LensJet tau[2];
+    if (field_->tilt()) Seed(field + field_->GridCoeffs(), 2, kTiltAt, tau);
     for (int i = 0; i < points_.size(); ++i) {
       RigJet ideal[2];
       if (!Ideal(i, warp, R, t, ideal)) return false;
@@ -116,12 +120,18 @@ class ViewCost final : public ceres::CostFunction {
       for (int j = 0; j < local; ++j)
         if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 1.0;
       const LensJet lens_ideal[2] = {LensJet(ideal[0].a, kXAt), LensJet(ideal[1].a, kXAt + 1)};
-      LensJet distorted[2], pixel[2];
-      DistortIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, distorted);
+      LensJet undistorted[2], distorted[2], pixel[2];
+      DistortIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, undistorted);
       for (int j = 0; j < local; ++j)
         if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 0.0;
+      if (field_->tilt()) {  // the tilted point, tau_x, tau_y in the Jet
+        TiltPoint(tau, undistorted, distorted);
+      } else {
+        distorted[0] = undistorted[0];
+        distorted[1] = undistorted[1];
+      }
       NonRadialField::Local basis{};
-      if (!field_->empty()) {  // x_d + F(x_d), F linear about the corner's x_d
+      if (field_->grid()) {  // x_t + F(x_t), F linear about the corner's x_t
         basis = field_->LocalBasis(distorted[0].a, distorted[1].a);
         double f[2] = {0, 0}, by_s[2] = {0, 0}, by_t[2] = {0, 0};
         for (int k = 0; k < NonRadialField::kLocal; ++k)
@@ -146,8 +156,9 @@ class ViewCost final : public ceres::CostFunction {
           for (int j = 0; j < local; ++j)
             if (in_range(j)) J[first + j] = q.v[kLocalAt + j];
           // d pixel_k / d c^k_ij = f_k N_i M_j (fx or fy).
-          for (int j = 0; j < NonRadialField::kLocal && !field_->empty(); ++j)
+          for (int j = 0; j < NonRadialField::kLocal && field_->grid(); ++j)
             J[n + k * half + basis.index[j]] = intrinsics[k == 0 ? kFx : kFy].a * basis.weight[j];
+          if (field_->tilt()) std::copy_n(&q.v[kTiltAt], 2, J + n + 2 * half);
         }
         const RigJet by_rig = q.v[kXAt] * ideal[0] + q.v[kXAt + 1] * ideal[1];
         Scatter(by_rig, kWarpAt, 2, row, jacobians[2]);
@@ -164,7 +175,8 @@ class ViewCost final : public ceres::CostFunction {
   static constexpr int kWarpAt = 0, kPoseAt = 2, kExtrinsicAt = 8;
   using RigJet = ceres::Jet<double, kViaExtrinsic ? 14 : 8>;
   static constexpr int kXAt = 0, kIntrinsicsAt = 2, kLocalAt = kIntrinsicsAt + kNumIntrinsics;
-  using LensJet = ceres::Jet<double, kLocalAt + L>;
+  static constexpr int kTiltAt = kLocalAt + L;  // tau_x, tau_y (a sensor tilt)
+  using LensJet = ceres::Jet<double, kTiltAt + 2>;
 
   void AddBlock(int size) { mutable_parameter_block_sizes()->push_back(size); }
 

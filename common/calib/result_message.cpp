@@ -37,7 +37,7 @@ widestereo::calibration_result_t ToResultMessage(const ModelCalibrations& result
   widestereo::calibration_result_t msg{};
   msg.utime = utime;
   const StereoCalibration& chosen = Chosen(results);
-  msg.chosen = chosen.model;
+  msg.chosen = ModelName(chosen.model);
   for (const TableRow& row : TableRows(results.solved, results.chosen))
     msg.models.push_back({row.model, "", row.left_rms, row.left_heldout, row.right_rms,
                           row.right_heldout, row.stereo_rms});

@@ -150,7 +150,7 @@ SyntheticRig MakeSyntheticRig(const SyntheticRigOptions& options) {
 }
 
 CameraModel GaugeNormalized(const CameraModel& camera) {
-  if (camera.distortion.kind != "bspline") return camera;
+  if (camera.distortion.kind != ModelKind::kBspline) return camera;
   const Camera c(camera);
   const double d0 = c.DistortionCurve(0.0);
   CameraModel out = camera;
@@ -200,7 +200,7 @@ CameraModel BarrelTestCamera(int variant) {
   camera.cy = variant == 0 ? 478.3 : 483.6;
   camera.p1 = variant == 0 ? 3e-4 : -2e-4;
   camera.p2 = variant == 0 ? -2e-4 : 1e-4;
-  camera.distortion = Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.005}};
+  camera.distortion = Distortion{ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.005}};
   if (variant != 0) camera.distortion.coeffs = {-0.19, 0.046, -0.0045};
   return camera;
 }

@@ -14,7 +14,7 @@ std::vector<TableRow> TableRows(const std::vector<StereoCalibration>& calibratio
   std::vector<TableRow> rows;
   for (size_t i = 0; i < calibrations.size(); ++i) {
     const StereoCalibration& c = calibrations[i];
-    rows.push_back({c.model, c.left.rms_px, c.mono ? -1 : c.right.rms_px, c.mono ? -1 : c.rms_px,
+    rows.push_back({ModelName(c.model), c.left.rms_px, c.mono ? -1 : c.right.rms_px, c.mono ? -1 : c.rms_px,
                     c.left.heldout_rms_px, c.mono ? -1 : c.right.heldout_rms_px,
                     std::to_string(Coeffs(c.left)) +
                         (c.mono ? "" : "/" + std::to_string(Coeffs(c.right))),

@@ -20,13 +20,6 @@ std::string Join(const std::vector<std::string>& lines) {
   return text;
 }
 
-// The value of the argument NAME=VALUE, or "".
-std::string Argument(const widestereo::command_t& command, const std::string& name) {
-  for (const std::string& arg : command.args)
-    if (arg.rfind(name + "=", 0) == 0) return arg.substr(name.size() + 1);
-  return "";
-}
-
 // "1167047 points in, 412163 out; plane 1.9996 m, normal (0.0000, 0.0000, -1.0000),
 // inlier RMS 1.10 mm (411950 inliers); 2140 ms"
 std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult& result) {
@@ -50,6 +43,8 @@ std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult
 
 CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
     : process_(process),
+      commands_(kProcessName, {{"save", "save [path=NAME.pcd]", {"path", "overwrite"},
+                                [this](const CommandArgs& args) { SaveCommand(args); }}}),
       filter_(filter),
       save_(std::move(save)),
       stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
@@ -108,15 +103,9 @@ void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   }
 }
 
-void CloudNode::OnCommand(const widestereo::command_t& command) {
-  if (!command.target.empty() && command.target != kProcessName) return;
-  if (command.command != "save") {
-    if (command.target.empty()) return;  // meant for another process
-    throw std::invalid_argument("unknown command '" + command.command +
-                                "' (stereo-cloud knows: save [path=NAME.pcd])");
-  }
+void CloudNode::SaveCommand(const CommandArgs& args) {
   if (save_.pcd_dir.empty()) throw std::runtime_error("save: stereo-cloud was started without --pcd-dir");
-  const std::string name = Argument(command, "path"), overwrite = Argument(command, "overwrite");
+  const std::string name = args.Value("path"), overwrite = args.Value("overwrite");
   if (!overwrite.empty() && overwrite != "0" && overwrite != "1")
     throw std::invalid_argument("save: overwrite=" + Quoted(overwrite) + ": 0 or 1");
   std::string path;

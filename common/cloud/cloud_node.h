@@ -33,6 +33,7 @@
 #include <string>
 
 #include "cloud/cloud_filter.h"
+#include "runtime/command_dispatcher.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
 #include "widestereo/command_t.hpp"
@@ -55,7 +56,7 @@ class CloudNode {
   // Takes the cloud (moves it to the filter's stage).
   void OnCloud(widestereo::point_cloud_t& msg);
   // Throws (so Process counts the command as rejected) when a `save` fails.
-  void OnCommand(const widestereo::command_t& command);
+  void OnCommand(const widestereo::command_t& command) { commands_.Dispatch(command); }
   // "clouds 12 | last 40211 pts, plane 2.003 m, rms 4.1 mm | saved 3"
   std::string Progress() const;
 
@@ -63,8 +64,11 @@ class CloudNode {
   void Filter(const widestereo::point_cloud_t& msg);
   std::string PeriodicPath(const widestereo::point_cloud_t& cloud) const;
   void Save(const widestereo::point_cloud_t& cloud, const std::string& path);
+  // save [path=NAME.pcd] [overwrite=0|1]: the newest filtered cloud.
+  void SaveCommand(const CommandArgs& args);
 
   Process& process_;
+  const CommandDispatcher commands_;
   const CloudFilter filter_;
   const CloudSaveConfig save_;
   mutable std::mutex mutex_;  // guards what follows, but for the stage

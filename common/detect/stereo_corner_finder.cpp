@@ -44,11 +44,13 @@ bool ShowsBoard(cv::Size image, const BoardSpec& board) {
 
 }  // namespace
 
-StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method)
-    : board_(std::move(board)), detector_(MakeCornerDetector(board_, method)) {}
+StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method, int64_t max_image_pixels)
+    : board_(std::move(board)),
+      detector_(MakeCornerDetector(board_, method)),
+      max_image_pixels_(max_image_pixels) {}
 
 widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_frame_t& frame) const {
-  widestereo::stereo_corners_t corners;
+  widestereo::stereo_corners_t corners{};
   corners.utime = frame.utime;
   corners.frame_id = frame.frame_id;
   corners.left = FindInImage(frame.left);
@@ -64,7 +66,7 @@ widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_f
 
 widestereo::camera_corners_t StereoCornerFinder::FindInImage(const widestereo::image_t& image) const {
   RequireCompleteJpeg(image);
-  const cv::Mat gray = ToGray8(ImageToMat(image));
+  const cv::Mat gray = ToGray8(ImageToMat(image, max_image_pixels_));
   if (!ShowsBoard(gray.size(), board_))
     throw DecodeError("a " + std::to_string(gray.cols) + "x" + std::to_string(gray.rows) +
                       " image is too small to show board " + board_.id);

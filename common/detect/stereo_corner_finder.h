@@ -6,6 +6,7 @@
 
 #include "detect/board_spec.h"
 #include "detect/corner_detector.h"
+#include "lcm_io/image_codec.h"
 #include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -13,12 +14,15 @@ namespace ws {
 
 class StereoCornerFinder {
  public:
-  StereoCornerFinder(BoardSpec board, ChessboardMethod method);
+  // Images of more than max_image_pixels are refused before they are decoded.
+  StereoCornerFinder(BoardSpec board, ChessboardMethod method,
+                     int64_t max_image_pixels = kDefaultMaxImagePixels);
 
   // The corners of both images, with the frame's utime and frame_id. A camera
   // that does not see the board gets n = 0. Throws DecodeError for an image
-  // that does not decode (a JPEG cut short included), or that is too small to
-  // show the board at two pixels per square. Safe to call from several threads at once.
+  // that does not decode (a JPEG cut short included), that is larger than
+  // max_image_pixels, or that is too small to show the board at two pixels
+  // per square. Safe to call from several threads at once.
   widestereo::stereo_corners_t Find(const widestereo::stereo_frame_t& frame) const;
   widestereo::camera_corners_t FindInImage(const widestereo::image_t& image) const;
 
@@ -27,6 +31,7 @@ class StereoCornerFinder {
  private:
   BoardSpec board_;
   std::unique_ptr<CornerDetector> detector_;
+  int64_t max_image_pixels_;
 };
 
 }  // namespace ws

@@ -11,6 +11,7 @@
 #include "health/health_report.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "rectify/calibration_size.h"
 
 namespace ws {
 namespace {
@@ -24,7 +25,10 @@ std::string Fixed(double value, int digits = 3) {
 }  // namespace
 
 HealthNode::HealthNode(Process& process, HealthConfig config)
-    : process_(process), config_(std::move(config)), window_(config_.verdict) {
+    : process_(process),
+      commands_(process.options().name, {{"refine", "refine", {}, [this](const CommandArgs&) { RefineCommand(); }}}),
+      config_(std::move(config)),
+      window_(config_.verdict) {
   process_.SetState("waiting for calibration");
 }
 
@@ -36,7 +40,7 @@ void HealthNode::Start(const std::string& calib_file) {
   process_.Subscribe<widestereo::stereo_frame_t>(
       channel::kStereoImages, [this](const auto& msg) { OnFrame(msg); }, 2);
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
-                                            [this](const auto& msg) { OnCommand(msg); });
+                                            [this](const auto& msg) { commands_.Dispatch(msg); });
   process_.Counters(channel::kCalibrationHealth);
   process_.AtEndOfInput([this] { AtEnd(); });
   process_.SetProgress([this] {
@@ -46,9 +50,10 @@ void HealthNode::Start(const std::string& calib_file) {
 }
 
 void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::string& source) {
-  const auto start = std::chrono::steady_clock::now();
   const StereoRig rig{file.left, file.right, file.R, file.T};
-  checker_ = FrameChecker(rig, config_.rectify, config_.features);  // a throw here changes nothing
+  // A throw here changes nothing.
+  calibration_size_ = CalibrationGeometry(rig, config_.rectify, config_.max_image_pixels, source).input_size;
+  checker_.reset();
   rig_ = rig;
   calibration_ = file;
   source_ = source;
@@ -56,12 +61,19 @@ void HealthNode::SetCalibration(const calib::CalibrationFile& file, const std::s
   kept_.clear();
   kept_count_ = 0;
   last_check_utime_ = 0;
+  process_.log().Info("using " + source + " (" + std::to_string(calibration_size_.width) + "x" +
+                      std::to_string(calibration_size_.height) + "); its maps are built for its first frame of that size");
+  process_.SetState("checking");
+}
+
+void HealthNode::BuildChecker() {
+  const auto start = std::chrono::steady_clock::now();
+  checker_ = FrameChecker(rig_, config_.rectify, config_.features);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const Rectification& rect = checker_->rect();
-  process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) +
+  process_.log().Info("rectification maps for " + source_ + " built in " + std::to_string(int(ms)) +
                       " ms: f = " + Fixed(rect.f, 2) + " px, " + std::to_string(rect.size.width) + "x" +
                       std::to_string(rect.size.height));
-  process_.SetState("checking");
 }
 
 void HealthNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
@@ -72,7 +84,7 @@ void HealthNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
 }
 
 void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
-  if (!checker_) {
+  if (!calibration_) {
     if (frames_without_calibration_++ == 0)
       process_.ReportError("frames arrive before any calibration: dropped until one does");
     process_.Counters(channel::kStereoImages).dropped++;
@@ -86,9 +98,11 @@ void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
 }
 
 void HealthNode::Check(const widestereo::stereo_frame_t& frame) {
+  RequireFrameSize(frame, calibration_size_, source_);  // before decoding it or building maps
+  if (!checker_) BuildChecker();
   FrameCheck check;
   try {
-    check = checker_->Check(ImageToMat(frame.left), ImageToMat(frame.right), source_);
+    check = checker_->Check(ImageView(frame.left), ImageView(frame.right), source_);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + ": " + e.what());
   }
@@ -134,7 +148,8 @@ widestereo::calibration_health_t HealthNode::Health(int64_t utime, int64_t frame
 }
 
 RefineResult HealthNode::Refine() {
-  if (!checker_) throw std::runtime_error("refine: no calibration yet");
+  if (!calibration_) throw std::runtime_error("refine: no calibration yet");
+  if (!checker_) throw std::runtime_error("refine: no frame checked with " + source_ + " yet");
   std::vector<RayMatch> matches;
   for (const auto& frame : kept_) matches.insert(matches.end(), frame.begin(), frame.end());
   RefineResult r = RefineExtrinsics(rig_, checker_->rect().f, matches, checker_->rect().size, config_.grid, config_.refine);
@@ -166,13 +181,7 @@ RefineResult HealthNode::Refine() {
   return r;
 }
 
-void HealthNode::OnCommand(const widestereo::command_t& msg) {
-  if (!msg.target.empty() && msg.target != process_.options().name) return;
-  if (msg.command != "refine") {
-    if (msg.target.empty()) return;  // meant for another process
-    throw std::invalid_argument("unknown command '" + msg.command + "' (stereo-health knows: refine)");
-  }
-  if (!msg.args.empty()) throw std::invalid_argument("refine takes no arguments");
+void HealthNode::RefineCommand() {
   const RefineResult r = Refine();
   if (!r.applied) throw std::runtime_error("refine refused: " + r.refused);
 }

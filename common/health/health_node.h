@@ -1,8 +1,10 @@
 // stereo-health's work on a ws::Process:
 //
 //  - the calibration: --calib FILE at the start, then every
-//    STEREO_CALIBRATION (each one rebuilds the maps with the rectification
-//    stereo-match uses and forgets the matches of the one before);
+//    STEREO_CALIBRATION (each one replaces the maps with the rectification
+//    stereo-match uses, built for its first frame of its image size, and
+//    forgets the matches of the one before); one larger than
+//    max_image_pixels is refused (rectify/calibration_size.h);
 //  - STEREO_IMAGES: a frame every `period_s` of message time (0: every
 //    frame) is rectified, matched (health/rectified_matches.h) and added to
 //    the verdict's window (health/verdict.h); CALIBRATION_HEALTH follows
@@ -25,6 +27,8 @@
 #include "health/extrinsic_refine.h"
 #include "health/frame_checker.h"
 #include "health/verdict.h"
+#include "lcm_io/image_codec.h"
+#include "runtime/command_dispatcher.h"
 #include "runtime/process.h"
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -35,6 +39,7 @@ namespace ws {
 
 struct HealthConfig {
   RectifyOptions rectify;
+  int64_t max_image_pixels = kDefaultMaxImagePixels;
   FeatureOptions features;
   VerdictOptions verdict;
   RefineOptions refine;
@@ -53,10 +58,15 @@ class HealthNode {
   void Start(const std::string& calib_file);
 
  private:
+  // Throws std::invalid_argument for a calibration larger than
+  // config.max_image_pixels, or that cannot be rectified, keeping the one before.
   void SetCalibration(const calib::CalibrationFile& file, const std::string& source);
+  // The maps of the calibration in use, for its first frame.
+  void BuildChecker();
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   void OnFrame(const widestereo::stereo_frame_t& frame);
-  void OnCommand(const widestereo::command_t& msg);
+  // refine: the calibration from the kept matches; throws when refused.
+  void RefineCommand();
   void Check(const widestereo::stereo_frame_t& frame);
   widestereo::calibration_health_t Health(int64_t utime, int64_t frame_id) const;
   // Refines from the kept matches; applied, publishes and uses the result.
@@ -64,10 +74,12 @@ class HealthNode {
   void AtEnd();
 
   Process& process_;
+  const CommandDispatcher commands_;
   HealthConfig config_;
   std::optional<calib::CalibrationFile> calibration_;
   StereoRig rig_;
-  std::optional<FrameChecker> checker_;
+  cv::Size calibration_size_;
+  std::optional<FrameChecker> checker_;  // once a frame of calibration_size_ came
   std::string source_;
   VerdictWindow window_;
   std::deque<std::vector<RayMatch>> kept_;  // per checked usable frame

@@ -43,7 +43,7 @@ class WidestereoProjection final : public CameraProjection {
 
   int image_width() const override { return camera_.model().image_width; }
   int image_height() const override { return camera_.model().image_height; }
-  std::string Name() const override { return camera_.model().distortion.kind; }
+  std::string Name() const override { return ModelName(camera_.model().distortion.kind); }
   std::optional<Eigen::Vector2d> Project(const Eigen::Vector3d& point) const override {
     return camera_.Project(point);
   }

@@ -11,8 +11,8 @@ constexpr ExportFormat kFormats[] = {ExportFormat::kOpenCv, ExportFormat::kRos,
 // k1, k2, k3 of a poly6 (or of a poly12 whose k4..k6 are 0); nullopt otherwise.
 std::optional<std::vector<double>> Brown(const CameraModel& camera) {
   const Distortion& d = camera.distortion;
-  if (d.kind == "poly6" && d.coeffs.size() == 3) return d.coeffs;
-  if (d.kind == "poly12" && d.coeffs.size() == 6 && d.coeffs[3] == 0 && d.coeffs[4] == 0 &&
+  if (d.kind == ModelKind::kPoly6 && d.coeffs.size() == 3) return d.coeffs;
+  if (d.kind == ModelKind::kPoly12 && d.coeffs.size() == 6 && d.coeffs[3] == 0 && d.coeffs[4] == 0 &&
       d.coeffs[5] == 0)
     return std::vector<double>(d.coeffs.begin(), d.coeffs.begin() + 3);
   return std::nullopt;
@@ -50,7 +50,7 @@ std::optional<TargetModel> ExactTargetModel(const CameraModel& camera, ExportFor
         return TargetModel{"radtan", {(*k)[0], (*k)[1], p1, p2}};
     }
   }
-  if (camera.distortion.kind == "kb4" && camera.distortion.coeffs.size() == 4) {
+  if (camera.distortion.kind == ModelKind::kKb4 && camera.distortion.coeffs.size() == 4) {
     switch (format) {
       case ExportFormat::kOpenCv: return TargetModel{"fisheye", camera.distortion.coeffs};
       case ExportFormat::kRos:

@@ -41,7 +41,7 @@ Cameras Of(const calib::CalibrationFile& file) {
 }
 
 std::string Header(const calib::CalibrationFile& file, ExportFormat format) {
-  return std::string("widestereo calibration (") + file.model + ") exported by stereo-export --to " +
+  return std::string("widestereo calibration (") + ModelName(file.model) + ") exported by stereo-export --to " +
          ExportFormatName(format);
 }
 
@@ -67,10 +67,10 @@ void OpenCv(const calib::CalibrationFile& file, const std::string& out, ExportRe
   } else {
     report->exact = false;
     report->max_error_px = kMapErrorPx;
-    report->lines.push_back(file.model + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
+    report->lines.push_back(ModelName(file.model) + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
                             "P1, P2, Q and no D; the cameras are maps.yml.gz's remap tables (within " +
                             Px(kMapErrorPx) + ", OpenCV's 1/32 px fixed point)");
-    comments.push_back("NOT EXACT: " + file.model + " is not an OpenCV model; no D: rectify with "
+    comments.push_back("NOT EXACT: " + ModelName(file.model) + " is not an OpenCV model; no D: rectify with "
                        "maps.yml.gz (cv::remap), not with K and D");
   }
   WriteOpenCvStereoFile(out + "/stereo.yaml", c.rig, rect, exact, comments);
@@ -84,7 +84,7 @@ void Ros(const calib::CalibrationFile& file, const std::string& out, ExportRepor
   for (const CameraModel* m : c.models) exact.push_back(ExactTargetModel(*m, ExportFormat::kRos));
   const bool all_exact = std::all_of(exact.begin(), exact.end(), [](const auto& e) { return e.has_value(); });
   if (!all_exact)
-    RequireStereo(file, "of a " + file.model + " camera has neither a ROS model nor a rectification: "
+    RequireStereo(file, "of a " + ModelName(file.model) + " camera has neither a ROS model nor a rectification: "
                         "use --to mrcal or kalibr");
   std::optional<Rectification> rect;
   if (!file.mono) rect = PinholeRectification(c.rig);
@@ -113,10 +113,10 @@ void Ros(const calib::CalibrationFile& file, const std::string& out, ExportRepor
       info.distortion_model = "plumb_bob";
       info.D.assign(5, 0.0);
       info.R = cv::Matx33d::eye();
-      comments.push_back("NOT THE RAW CAMERA: " + file.model + " is not a ROS distortion model. This is "
+      comments.push_back("NOT THE RAW CAMERA: " + ModelName(file.model) + " is not a ROS distortion model. This is "
                          "the " + info.name + " rectified camera: remap the raw images with maps.yml.gz "
                          "(cv::remap, map1_" + info.name + ", map2_" + info.name + ") and publish those");
-      report->lines.push_back(info.name + ": " + file.model + " is not a ROS distortion model: wrote the "
+      report->lines.push_back(info.name + ": " + ModelName(file.model) + " is not a ROS distortion model: wrote the "
                               "rectified camera; remap the raw images with maps.yml.gz first (within " +
                               Px(kMapErrorPx) + ")");
     }
@@ -150,7 +150,7 @@ void Kalibr(const calib::CalibrationFile& file, const std::string& out, ExportRe
     cameras.push_back({&fitted[i], *ExactTargetModel(fit.model, ExportFormat::kKalibr)});
     report->exact = false;
     report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
-    const std::string what = std::string(kNames[i]) + ": " + m.distortion.kind +
+    const std::string what = std::string(kNames[i]) + ": " + ModelName(m.distortion.kind) +
                              " is not a Kalibr model: wrote the closest pinhole-" +
                              cameras.back().distortion.name + ", off by up to " + Px(fit.error.max_px) +
                              " (RMS " + Px(fit.error.rms_px) + ") over the observed field";
@@ -178,7 +178,7 @@ void Mrcal(const calib::CalibrationFile& file, const std::string& out, ExportRep
       model = fit.model;
       report->exact = false;
       report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
-      const std::string what = std::string(kNames[i]) + ": " + m.distortion.kind +
+      const std::string what = std::string(kNames[i]) + ": " + ModelName(m.distortion.kind) +
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
                                ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
                                Px(fit.error.rms_px) + ") over " + std::to_string(fit.error.points) +

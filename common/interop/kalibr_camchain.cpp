@@ -61,12 +61,12 @@ CameraModel ReadCamera(const Reader& in, const YAML::Node& cam, const std::strin
   const std::string coeffs = name + ".distortion_coeffs";
   if (distortion == "radtan") {
     const std::vector<double> d = in.Numbers(cam["distortion_coeffs"], coeffs, 4);
-    m.distortion = Distortion{"poly6", 0, {}, {d[0], d[1], 0}};
+    m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], 0}};
     m.p1 = d[2], m.p2 = d[3];
   } else if (distortion == "equidistant") {
-    m.distortion = Distortion{"kb4", 0, {}, in.Numbers(cam["distortion_coeffs"], coeffs, 4)};
+    m.distortion = Distortion{ModelKind::kKb4, 0, {}, in.Numbers(cam["distortion_coeffs"], coeffs, 4)};
   } else if (distortion == "none") {
-    m.distortion = Distortion{"poly6", 0, {}, {0, 0, 0}};
+    m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {0, 0, 0}};
   } else {
     in.Fail(name + ".distortion_model", "'" + distortion + "': only radtan, equidistant and none are read");
   }

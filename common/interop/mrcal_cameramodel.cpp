@@ -119,7 +119,7 @@ std::shared_ptr<const CameraProjection> MrcalCamera(const MrcalCameraModel& m) {
       k[0] = in[4], k[1] = in[5], camera.p1 = in[6], camera.p2 = in[7];
       if (count == 9) k[2] = in[8];
     }
-    camera.distortion = Distortion{"poly6", 0, {}, k};
+    camera.distortion = Distortion{ModelKind::kPoly6, 0, {}, k};
     return std::make_shared<WidestereoProjection>(camera);
   }
   if (m.lensmodel == "LENSMODEL_OPENCV8" || m.lensmodel == "LENSMODEL_OPENCV12") {

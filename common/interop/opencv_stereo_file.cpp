@@ -78,11 +78,11 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
   try {
     if (fisheye) {
       if (d.size() != 4) in.Fail(d_key, "a fisheye D has 4 coefficients");
-      m.distortion = Distortion{"kb4", 0, {}, d};
+      m.distortion = Distortion{ModelKind::kKb4, 0, {}, d};
       return std::make_shared<WidestereoProjection>(m);
     }
     if (d.size() == 4 || d.size() == 5) {
-      m.distortion = Distortion{"poly6", 0, {}, {d[0], d[1], d.size() == 5 ? d[4] : 0.0}};
+      m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], d.size() == 5 ? d[4] : 0.0}};
       m.p1 = d[2], m.p2 = d[3];
       return std::make_shared<WidestereoProjection>(m);
     }
@@ -107,7 +107,7 @@ void WriteOpenCvStereoFile(const std::string& path, const StereoRig& rig, const 
   for (const std::string& line : comments) fs.writeComment(line);
   fs << "image_width" << rig.left.image_width << "image_height" << rig.left.image_height;
   fs << "distortion_model"
-     << (exact[0] && exact[1] ? exact[0]->name : "none: widestereo " + rig.left.distortion.kind);
+     << (exact[0] && exact[1] ? exact[0]->name : "none: widestereo " + ModelName(rig.left.distortion.kind));
   const CameraModel* cameras[2] = {&rig.left, &rig.right};
   for (int i = 0; i < 2; ++i) {
     const CameraModel& m = *cameras[i];

@@ -1,8 +1,8 @@
-// Reading big-endian integers out of bytes (LCM log headers, JPEG and PNG
-// headers).
+// Big-endian integers in bytes (LCM log headers, JPEG and PNG headers).
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 namespace ws {
 
@@ -11,6 +11,11 @@ inline uint64_t BigEndian(const unsigned char* p, int n) {
   uint64_t v = 0;
   for (int i = 0; i < n; ++i) v = (v << 8) | p[i];
   return v;
+}
+
+// Appends the `n` low bytes of `v` to `out`, most significant first.
+inline void AppendBigEndian(uint64_t v, int n, std::string* out) {
+  for (int i = n - 1; i >= 0; --i) out->push_back(char((v >> (8 * i)) & 0xFF));
 }
 
 }  // namespace ws

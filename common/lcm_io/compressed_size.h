@@ -1,7 +1,7 @@
 // The size a JPEG or PNG payload says it has, read from its header (JPEG's
-// SOFn segment, PNG's IHDR chunk) without decoding it. ImageToMat checks it
-// against the message's width and height first: a 700-byte JPEG claiming
-// tens of megapixels took a second to decode (a fuzz finding).
+// SOFn segment, PNG's IHDR chunk) without decoding it. ValidateImage checks
+// it against the message's width and height: a 700-byte JPEG claiming tens
+// of megapixels took a second to decode (a fuzz finding).
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,10 @@
 // Decoding LCM payloads into typed messages, rejecting anything malformed.
 #pragma once
 
+#include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lcm_io/image_codec.h"  // DecodeError
 #include "lcm_io/validate.h"
@@ -31,6 +34,15 @@ Msg DecodeMessage(const void* data, int size) {
     throw DecodeError(type + ": " + std::to_string(size - used) + " trailing bytes");
   Validate(msg);
   return msg;
+}
+
+// The encoding of msg; throws std::invalid_argument if it does not encode.
+template <class Msg>
+std::vector<uint8_t> EncodeMessage(const Msg& msg) {
+  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
+  if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0)
+    throw std::invalid_argument(Msg::getTypeName() + std::string(": does not encode"));
+  return bytes;
 }
 
 }  // namespace ws

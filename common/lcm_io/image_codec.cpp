@@ -33,6 +33,13 @@ bool IsCompressed(int32_t pixelformat) {
 
 [[noreturn]] void Reject(const std::string& what) { throw DecodeError("image_t: " + what); }
 
+// A compressed payload's size, from its header or decoded, must be the message's.
+void RequireCompressedSize(const image_t& msg, int64_t width, int64_t height) {
+  if (width != msg.width || height != msg.height)
+    Reject("compressed payload is " + std::to_string(width) + "x" + std::to_string(height) +
+           ", header says " + std::to_string(msg.width) + "x" + std::to_string(msg.height));
+}
+
 }  // namespace
 
 bool ImageSizeAcceptable(int64_t width, int64_t height) {
@@ -40,6 +47,13 @@ bool ImageSizeAcceptable(int64_t width, int64_t height) {
   constexpr int64_t kMaxPixels = int64_t(1) << 28;
   return width > 0 && height > 0 && width <= kMaxSide && height <= kMaxSide &&
          width * height <= kMaxPixels;
+}
+
+void RequireAtMostPixels(int64_t width, int64_t height, int64_t max_pixels) {
+  if (width * height > max_pixels)
+    Reject("a " + std::to_string(width) + "x" + std::to_string(height) + " image is " +
+           std::to_string(width * height) + " pixels, more than --max-image-pixels " +
+           std::to_string(max_pixels));
 }
 
 Compression ParseCompression(const std::string& name) {
@@ -69,7 +83,9 @@ void ValidateImage(const image_t& msg) {
     Reject("size field " + std::to_string(msg.size) + " but payload of " +
            std::to_string(msg.data.size()) + " bytes");
   if (IsCompressed(msg.pixelformat)) {
-    if (msg.size == 0) Reject("empty compressed payload");
+    const auto announced = CompressedImageSize(msg.data.data(), msg.data.size());
+    if (!announced) Reject("compressed payload is neither a JPEG nor a PNG with its size");
+    RequireCompressedSize(msg, announced->width, announced->height);
     return;
   }
   RawLayout layout{};
@@ -84,22 +100,15 @@ void ValidateImage(const image_t& msg) {
            " but size is " + std::to_string(msg.size));
 }
 
-cv::Mat ImageToMat(const image_t& msg) {
-  const cv::Mat image = ImageView(msg);
+cv::Mat ImageToMat(const image_t& msg, int64_t max_pixels) {
+  const cv::Mat image = ImageView(msg, max_pixels);
   return image.data == msg.data.data() ? image.clone() : image;
 }
 
-cv::Mat ImageView(const image_t& msg) {
+cv::Mat ImageView(const image_t& msg, int64_t max_pixels) {
   ValidateImage(msg);
+  RequireAtMostPixels(msg.width, msg.height, max_pixels);
   if (IsCompressed(msg.pixelformat)) {
-    auto require_size = [&](int64_t width, int64_t height) {
-      if (width != msg.width || height != msg.height)
-        Reject("compressed payload is " + std::to_string(width) + "x" + std::to_string(height) +
-               ", header says " + std::to_string(msg.width) + "x" + std::to_string(msg.height));
-    };
-    const auto announced = CompressedImageSize(msg.data.data(), msg.data.size());
-    if (!announced) Reject("compressed payload is neither a JPEG nor a PNG with its size");
-    require_size(announced->width, announced->height);  // before decoding it
     cv::Mat decoded;
     try {
       decoded = cv::imdecode(cv::Mat(1, msg.size, CV_8UC1, const_cast<uint8_t*>(msg.data.data())),
@@ -108,7 +117,7 @@ cv::Mat ImageView(const image_t& msg) {
       Reject(std::string("compressed payload does not decode: ") + e.what());
     }
     if (decoded.empty()) Reject("compressed payload does not decode");
-    require_size(decoded.cols, decoded.rows);
+    RequireCompressedSize(msg, decoded.cols, decoded.rows);
     if (decoded.type() == CV_8UC4) cv::cvtColor(decoded, decoded, cv::COLOR_BGRA2BGR);
     return decoded;
   }

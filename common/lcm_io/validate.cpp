@@ -102,7 +102,7 @@ void Validate(const widestereo::camera_calibration_t& msg) {
           t, "the principal point (cx, cy) lies more than an image size outside the image");
   Require(std::abs(msg.p1) <= 1 && std::abs(msg.p2) <= 1, t, "|p1| and |p2| must be at most 1");
   try {  // every kind of the model table: its knots and number of coefficients
-    DistortionFunction(Distortion{msg.model, msg.degree, msg.knots, msg.coeffs});
+    DistortionFunction(Distortion{ParseModelKind(msg.model), msg.degree, msg.knots, msg.coeffs});
   } catch (const std::invalid_argument& e) {
     Reject(t, e.what());
   }
@@ -122,6 +122,9 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   Require(std::all_of(msg.field_coeffs.begin(), msg.field_coeffs.end(),
                       [](double c) { return std::abs(c) <= 1; }),
           t, "a non-radial field coefficient beyond 1 (the focal length)");
+  Require(std::all_of(msg.sensor_tilt, msg.sensor_tilt + 2,
+                      [](double tau) { return std::abs(tau) < kMaxSensorTilt; }),
+          t, "a sensor tilt angle not below kMaxSensorTilt (0.35 rad) or not finite");
 }
 
 void Validate(const widestereo::stereo_calibration_t& msg) {

@@ -8,6 +8,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "match/match_region.h"
+#include "rectify/calibration_size.h"
 #include "view/disparity_colour.h"
 
 namespace ws {
@@ -15,15 +16,11 @@ namespace ws {
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source, StageTimes* times) {
+  RequireFrameSize(frame, rect->input_size, calibration_source);
   std::optional<StageTimer> rectify;
   if (times) rectify.emplace(*times, "rectify");
   // Views of the frame's payloads (it outlives the remap): no copy.
   const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
-  if (left.size() != rect->input_size || right.size() != rect->input_size)
-    throw std::invalid_argument(
-        "frame " + std::to_string(frame.frame_id) + " is " + std::to_string(left.cols) + "x" +
-        std::to_string(left.rows) + " but " + calibration_source + " is for " +
-        std::to_string(rect->input_size.width) + "x" + std::to_string(rect->input_size.height));
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
@@ -100,22 +97,48 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
 MatchNode::~MatchNode() { Drain(); }
 
 void MatchNode::SetRig(const StereoRig& rig, const std::string& source) {
-  const auto start = std::chrono::steady_clock::now();
   RectifyOptions options = config_.rectify;
   options.downscale = config_.matcher.downscale;  // straight to the matcher's resolution
-  auto rect = std::make_shared<const Rectification>(BuildRectification(rig, options));
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  process_.log().Info("rectification maps for " + source + " built in " + std::to_string(int(ms)) + " ms: f = " +
-                      std::to_string(rect->f) + " px, " + RectificationModeName(rect->mode) +
-                      " rectification at " + std::to_string(rect->size.width) + "x" +
-                      std::to_string(rect->size.height) + ", baseline = " +
-                      std::to_string(rect->baseline) + " m, " + rig.left.distortion.kind + " model");
+  auto geometry = std::make_shared<const Rectification>(
+      CalibrationGeometry(rig, options, config_.max_image_pixels, source));
+  const cv::Size size = geometry->input_size;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
-    rect_ = std::move(rect);
+    rig_ = std::make_shared<const StereoRig>(rig);
+    rect_ = std::move(geometry);
+    rect_has_maps_ = false;
     calibration_source_ = source;
   }
+  process_.log().Info("using " + source + " (" + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                      ", " + ModelName(rig.left.distortion.kind) + " model); its maps are built for its first frame of that size");
   process_.SetState("matching");
+}
+
+std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_frame_t& frame, std::string* source) {
+  std::shared_ptr<const StereoRig> rig;
+  Rectification rect;
+  {
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    *source = calibration_source_;
+    RequireFrameSize(frame, rect_->input_size, calibration_source_);
+    if (rect_has_maps_) return rect_;
+    rig = rig_;
+    rect = *rect_;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  BuildRectificationMaps(*rig, &rect);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  process_.log().Info("rectification maps for " + *source + " built in " + std::to_string(int(ms)) + " ms: f = " +
+                      std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
+                      std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " + std::to_string(rect.baseline) + " m, " +
+                      ModelName(rig->left.distortion.kind) + " model");
+  auto built = std::make_shared<const Rectification>(std::move(rect));
+  std::lock_guard<std::mutex> lock(rect_mutex_);
+  if (rig_ == rig) {  // not replaced meanwhile
+    rect_ = built;
+    rect_has_maps_ = true;
+  }
+  return built;
 }
 
 void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
@@ -126,7 +149,7 @@ void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
   bool calibrated;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
-    calibrated = rect_ != nullptr;
+    calibrated = rig_ != nullptr;
   }
   if (!calibrated) {
     if (frames_without_calibration_++ == 0)
@@ -143,14 +166,9 @@ void MatchNode::Drain() {
 }
 
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
-  std::shared_ptr<const Rectification> rect;
-  std::string source;
-  {
-    std::lock_guard<std::mutex> lock(rect_mutex_);
-    rect = rect_;
-    source = calibration_source_;
-  }
   try {
+    std::string source;
+    std::shared_ptr<const Rectification> rect = Maps(frame, &source);
     publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <string>
 
+#include "lcm_io/image_codec.h"
 #include "match/matcher.h"
 #include "match/frame_image_writer.h"
 #include "rectify/disparity_cloud.h"
@@ -18,6 +19,7 @@
 namespace ws {
 
 struct MatchConfig {
+  int64_t max_image_pixels = kDefaultMaxImagePixels;  // a larger calibration is refused
   MatcherConfig matcher;
   RectifyOptions rectify;
   CloudSampling cloud;
@@ -39,9 +41,9 @@ struct MatchedFrame {
 };
 
 // Rectifies and matches one frame. Throws std::invalid_argument when the
-// frame's size is not the calibration's; the message names the calibration
-// by `calibration_source` (e.g. its file). With `times`, the two stages are
-// timed there as "rectify" and "match".
+// frame's size is not the calibration's (before decoding it); the message
+// names the calibration by `calibration_source` (e.g. its file). With
+// `times`, the two stages are timed there as "rectify" and "match".
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source = "the calibration",
@@ -56,7 +58,10 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
                        const std::string& calibration_source = "the calibration");
 
 // Wires MatchFrame to the bus: a calibration file given at the start, and
-// every STEREO_CALIBRATION after it, (re)builds the maps; STEREO_IMAGES
+// every STEREO_CALIBRATION after it, replaces the calibration, whose maps are
+// built for the first frame of its image size (calibration_size.h): a
+// calibration larger than config.max_image_pixels is refused, and frames of
+// another size are rejected before they are decoded; STEREO_IMAGES
 // become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
 // files and the disparity as a colour PNG with its legend in metres when
 // config.save_rectified and save_disparity say so (frame_image_writer.h).
@@ -77,8 +82,10 @@ class MatchNode {
  public:
   MatchNode(Process& process, MatchConfig config);
   ~MatchNode();
-  // Builds the maps now; `source` names the calibration in log lines and
-  // errors ("calibration file calib.yaml", "STEREO_CALIBRATION").
+  // Uses the rig from now on (its maps are built for its first frame);
+  // `source` names the calibration in log lines and errors ("calibration
+  // file calib.yaml", "STEREO_CALIBRATION"). Throws std::invalid_argument
+  // for a rig larger than config.max_image_pixels, keeping the one before.
   void SetRig(const StereoRig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   // Takes the frame's payload (moves it into the pipeline).
@@ -88,6 +95,10 @@ class MatchNode {
 
  private:
   void Match(widestereo::stereo_frame_t& frame);
+  // The rectification of the rig in use and its name; its maps are built on
+  // the first call for it. Throws std::invalid_argument for a frame of
+  // another size.
+  std::shared_ptr<const Rectification> Maps(const widestereo::stereo_frame_t& frame, std::string* source);
   void Publish(MatchedFrame& matched);
 
   Process& process_;
@@ -97,8 +108,11 @@ class MatchNode {
   // At the matcher's resolution (AtMatchScale), as the rectification:
   // used by the matching stage only, but for its const config().
   DisparityMatcher matcher_;
-  std::mutex rect_mutex_;     // guards rect_ and calibration_source_
+  std::mutex rect_mutex_;  // guards rig_, rect_ and calibration_source_
+  std::shared_ptr<const StereoRig> rig_;  // the calibration in use
+  // Its rectification: without maps until a frame of its size comes.
   std::shared_ptr<const Rectification> rect_;
+  bool rect_has_maps_ = false;
   std::string calibration_source_;
   int64_t frames_without_calibration_ = 0;
   // Destroyed (drained) before the rest, matching before publishing.

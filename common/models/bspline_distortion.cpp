@@ -9,7 +9,7 @@ template <class C>
 Bspline<C>::Bspline(std::vector<double> knots, int degree, Coefficients which)
     : knots_(std::move(knots)),
       degree_(degree),
-      first_estimated_(which == Coefficients::kIdentifiable ? 2 : 0) {
+      first_estimated_(which == Coefficients::kIdentifiable ? Traits(kKind).gauge_fixed : 0) {
   ValidateKnots(knots_, degree_);
   if (which == Coefficients::kIdentifiable) {
     if (knots_.front() != 0.0 || knots_[degree_] != 0.0)
@@ -33,7 +33,7 @@ Bspline<C> Bspline<C>::ForCalibration(const CalibrationSetup& setup) {
 
 template <class C>
 Distortion Bspline<C>::ToData(const double* coeffs) const {
-  Distortion data{Kind(), degree_, knots_, std::vector<double>(first_estimated_, 0.0)};
+  Distortion data{kKind, degree_, knots_, std::vector<double>(first_estimated_, 0.0)};
   data.coeffs.insert(data.coeffs.end(), coeffs, coeffs + NumCoeffs());
   return data;
 }
@@ -41,13 +41,13 @@ Distortion Bspline<C>::ToData(const double* coeffs) const {
 template <class C>
 std::vector<double> Bspline<C>::EstimatedCoeffs(const std::vector<double>& stored) const {
   if (static_cast<int>(stored.size()) != NumBasis())
-    throw std::invalid_argument(Kind() + " with " + std::to_string(knots_.size()) +
+    throw std::invalid_argument(ModelName(kKind) + " with " + std::to_string(knots_.size()) +
                                 " knots of degree " + std::to_string(degree_) + " needs " +
                                 std::to_string(NumBasis()) + " coefficients, got " +
                                 std::to_string(stored.size()));
   for (int i = 0; i < first_estimated_; ++i)
     if (stored[i] != 0.0)
-      throw std::invalid_argument("alpha" + std::to_string(i) + " = " + std::to_string(stored[i]) +
+      throw std::invalid_argument(Traits(kKind).coeff_key + std::to_string(i) + " = " + std::to_string(stored[i]) +
                                   ", but the identifiable B-spline fixes it at 0");
   return std::vector<double>(stored.begin() + first_estimated_, stored.end());
 }

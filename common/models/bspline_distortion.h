@@ -37,6 +37,7 @@
 
 #include "models/bspline_basis.h"
 #include "models/distortion.h"
+#include "models/model_kind.h"
 #include "models/radial_coordinate.h"
 #include "models/radial_tangential.h"
 #include "models/scalar_part.h"
@@ -47,12 +48,14 @@ template <class RadialCoordinate>
 class Bspline {
  public:
   using Coordinate = RadialCoordinate;
-  static constexpr bool kTangential = true;  // p1, p2 apply
+  static constexpr ModelKind kKind = Coordinate::kAngle ? ModelKind::kBsplineTheta : ModelKind::kBspline;
+  static_assert(Traits(kKind).spline && Traits(kKind).angle == Coordinate::kAngle,
+                "a B-spline model of model_kind.h's table");
+  static constexpr bool kTangential = Traits(kKind).tangential;  // p1, p2 apply
   // Validates the knots (and, for kIdentifiable, that they start clamped at
   // 0 with at least three basis functions); throws std::invalid_argument.
   Bspline(std::vector<double> knots, int degree, Coefficients which);
 
-  static std::string Kind() { return Coordinate::kAngle ? "bspline_theta" : "bspline"; }
   static Bspline FromData(const Distortion& data, Coefficients which);
   // Uniform clamped knots on [0, r_max] with setup.knot_intervals spans,
   // kIdentifiable.
@@ -62,8 +65,7 @@ class Bspline {
   int degree() const { return degree_; }
   int NumBasis() const { return NumBasisFunctions(knots_, degree_); }
   int NumCoeffs() const { return NumBasis() - first_estimated_; }
-  static constexpr const char* kCoeffKey = "alpha";  // alpha_i: files, reports, parameter names
-  std::string CoeffName(int i) const { return kCoeffKey + std::to_string(i + first_estimated_); }
+  std::string CoeffName(int i) const { return Traits(kKind).coeff_key + std::to_string(i + first_estimated_); }
 
   Distortion ToData(const double* coeffs) const;
   // The estimated coefficients of a stored alpha vector; throws if its size
@@ -123,7 +125,7 @@ class Bspline {
 
   std::vector<double> knots_;
   int degree_;
-  int first_estimated_;  // alpha index of coeffs[0]: 2 for kIdentifiable, else 0
+  int first_estimated_;  // alpha index of coeffs[0]: Traits(kKind).gauge_fixed for kIdentifiable, else 0
 };
 
 using BsplineDistortion = Bspline<TanTheta>;     // "bspline"

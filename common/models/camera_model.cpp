@@ -28,15 +28,20 @@ Camera::Camera(CameraModel model)
       distortion_(model_.distortion),
       field_(NonRadialField::FromData(model_.nonradial)),
       coeffs_(model_.distortion.coeffs) {
-  if (!HasTangential(distortion_.model()) && (model_.p1 != 0 || model_.p2 != 0))
-    throw std::invalid_argument(model_.distortion.kind + " has no tangential terms: p1 = p2 = 0");
+  if (!Traits(model_.distortion.kind).tangential && (model_.p1 != 0 || model_.p2 != 0))
+    throw std::invalid_argument(ModelName(model_.distortion.kind) + " has no tangential terms: p1 = p2 = 0");
   const std::vector<double>& field = model_.nonradial.coeffs;
-  if (int(field.size()) != field_.NumCoeffs())
+  if (int(field.size()) != field_.GridCoeffs())
     throw std::invalid_argument("the non-radial field has " + std::to_string(field.size()) +
-                                " coefficients, its grid " + std::to_string(field_.NumCoeffs()));
+                                " coefficients, its grid " + std::to_string(field_.GridCoeffs()));
   for (double c : field)
     if (!std::isfinite(c)) throw std::invalid_argument("non-finite non-radial field coefficient");
-  coeffs_.insert(coeffs_.end(), field.begin(), field.end());
+  for (double tau : model_.nonradial.tilt)
+    if (!(std::abs(tau) < kMaxSensorTilt))
+      throw std::invalid_argument("a sensor tilt must be finite and below " +
+                                  std::to_string(kMaxSensorTilt) + " rad");
+  const std::vector<double> nonradial = field_.Coeffs(model_.nonradial);
+  coeffs_.insert(coeffs_.end(), nonradial.begin(), nonradial.end());
 }
 
 std::optional<Eigen::Vector2d> Camera::Project(const Eigen::Vector3d& point) const {

@@ -61,7 +61,7 @@ class Camera {
   // D(r), the radial distortion curve: r'/r - 1 without the tangential terms
   // (r = tan(theta), or theta for angle models).
   double DistortionCurve(double r) const { return distortion_(r); }
-  bool IsAngleModel() const { return ws::IsAngleModel(distortion_.model()); }
+  bool IsAngleModel() const { return Traits(model_.distortion.kind).angle; }
   // Whether a camera-frame direction lies in the field the model describes:
   // its ideal radius (radial_coordinate.h) up to a B-spline's last knot (the
   // calibrated field, times a margin; past it the last cubic piece goes on

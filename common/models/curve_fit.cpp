@@ -48,7 +48,7 @@ Distortion FitByLeastSquares(const AnyDistortionModel& any_model, const LensTabl
         using Model = std::decay_t<decltype(model)>;
         const int num_coeffs = model.NumCoeffs();
         if (static_cast<int>(table.ideal.size()) < num_coeffs)
-          throw std::runtime_error("fitting " + Model::Kind() + " needs at least " +
+          throw std::runtime_error("fitting " + ModelName(Model::kKind) + " needs at least " +
                                    std::to_string(num_coeffs) + " table rows");
         std::vector<double> coeffs(num_coeffs, 0.0);
         ceres::Problem problem;
@@ -69,7 +69,7 @@ Distortion FitByLeastSquares(const AnyDistortionModel& any_model, const LensTabl
         ceres::Solver::Summary summary;
         ceres::Solve(options, &problem, &summary);
         if (!summary.IsSolutionUsable())
-          throw std::runtime_error("fitting " + Model::Kind() + " failed: " + summary.message);
+          throw std::runtime_error("fitting " + ModelName(Model::kKind) + " failed: " + summary.message);
         return model.ToData(coeffs.data());
       },
       any_model);

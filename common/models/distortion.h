@@ -15,7 +15,7 @@
 // The model concept. A model class holds only FIXED data (knots, degree) and
 // takes the ESTIMATED coefficients as `const T* coeffs`, Ceres-style:
 //
-//   static std::string Kind();                       // "bspline", ...
+//   static constexpr ModelKind kKind;                // its row of model_kind.h's table
 //   static Model FromData(const Distortion&, Coefficients);
 //   static Model ForCalibration(const CalibrationSetup&);
 //   int NumCoeffs() const;                           // estimated coefficients
@@ -33,20 +33,22 @@
 //   int NumLocalCoeffs() const;
 //   int FirstLocalCoeff(double x, double y) const;
 //
-// A new model (say a spline over the incidence angle for fisheye lenses) is a
-// new header with such a class plus one entry in model_registry.h; solvers and
-// processes only use the concept.
+// A new model is a new header with such a class, one row of model_kind.h's
+// table and one entry in model_registry.h; solvers and processes only use the
+// concept and the table.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "models/model_kind.h"
 
 namespace ws {
 
 // The distortion part of a camera model as stored in files and messages:
 // everything needed to evaluate D(r).
 struct Distortion {
-  std::string kind;             // a registered model: "bspline", "poly6", "poly12"
+  ModelKind kind = ModelKind::kBspline;  // model_kind.h
   int degree = 0;               // B-spline degree K; 0 for the polynomials
   std::vector<double> knots;    // clamped knot vector in the unit of r (bspline); else empty
   std::vector<double> coeffs;   // all of alpha_0..alpha_{n-1} (bspline) or k_1..k_N

@@ -12,7 +12,7 @@ DistortionFunction::DistortionFunction(const Distortion& data)
                          model_)) {
   for (size_t i = 0; i < coeffs_.size(); ++i)
     if (!std::isfinite(coeffs_[i]))
-      throw std::invalid_argument(data.kind + " coefficient " + std::to_string(i) +
+      throw std::invalid_argument(ModelName(data.kind) + " coefficient " + std::to_string(i) +
                                   " is not finite");
 }
 

@@ -26,7 +26,7 @@ CameraModel FisheyeKneeCamera() {
   camera.cx = 639.5;
   camera.cy = 479.5;
   camera.distortion = FitByLeastSquares(
-      MakeCalibrationModel("bspline_theta", CalibrationSetup{1.8, 16, 3}), FisheyeKneeLensTable());
+      MakeCalibrationModel(ModelKind::kBsplineTheta, CalibrationSetup{1.8, 16, 3}), FisheyeKneeLensTable());
   return camera;
 }
 

@@ -1,6 +1,8 @@
 #include "models/model_registry.h"
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace ws {
 namespace {
@@ -10,31 +12,30 @@ struct ModelType {
   using type = Model;
 };
 
-// f(ModelType<Model>{}) for the alternative of AnyDistortionModel whose
-// Kind() is kind.
+// Each alternative of AnyDistortionModel is its kind's row of the table.
+template <size_t... I>
+constexpr bool TableMatchesModels(std::index_sequence<I...>) {
+  return ((std::variant_alternative_t<I, AnyDistortionModel>::kKind == static_cast<ModelKind>(I)) && ...);
+}
+static_assert(std::variant_size_v<AnyDistortionModel> == kNumModelKinds &&
+                  TableMatchesModels(std::make_index_sequence<kNumModelKinds>()),
+              "AnyDistortionModel's alternatives follow ModelKind's order (model_kind.h)");
+
+// f(ModelType<Model>{}) for the alternative of AnyDistortionModel of `kind`.
 template <size_t I = 0, typename F>
-auto ForKind(const std::string& kind, const F& f) -> decltype(f(ModelType<BsplineDistortion>{})) {
+auto ForKind(ModelKind kind, const F& f) -> decltype(f(ModelType<BsplineDistortion>{})) {
   if constexpr (I == std::variant_size_v<AnyDistortionModel>) {
-    std::string known;
-    for (const auto& name : ModelKinds()) known += (known.empty() ? "" : ", ") + name;
-    throw std::invalid_argument("unknown distortion model '" + kind + "' (known: " + known + ")");
+    throw std::invalid_argument("no distortion model of kind " + std::to_string(static_cast<int>(kind)));
   } else {
     using Model = std::variant_alternative_t<I, AnyDistortionModel>;
-    if (kind == Model::Kind()) return f(ModelType<Model>{});
+    if (kind == Model::kKind) return f(ModelType<Model>{});
     return ForKind<I + 1>(kind, f);
   }
 }
 
-template <size_t... I>
-std::vector<std::string> KindsOf(std::index_sequence<I...>) {
-  return {std::variant_alternative_t<I, AnyDistortionModel>::Kind()...};
-}
-
 }  // namespace
 
-std::vector<std::string> ModelKinds() {
-  return KindsOf(std::make_index_sequence<std::variant_size_v<AnyDistortionModel>>());
-}
+ModelKind KindOf(const AnyDistortionModel& model) { return static_cast<ModelKind>(model.index()); }
 
 AnyDistortionModel MakeModel(const Distortion& data, Coefficients which) {
   return ForKind(data.kind, [&](auto type) -> AnyDistortionModel {
@@ -42,23 +43,10 @@ AnyDistortionModel MakeModel(const Distortion& data, Coefficients which) {
   });
 }
 
-AnyDistortionModel MakeCalibrationModel(const std::string& kind, const CalibrationSetup& setup) {
+AnyDistortionModel MakeCalibrationModel(ModelKind kind, const CalibrationSetup& setup) {
   return ForKind(kind, [&](auto type) -> AnyDistortionModel {
     return decltype(type)::type::ForCalibration(setup);
   });
-}
-
-bool IsAngleModel(const AnyDistortionModel& model) {
-  return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::Coordinate::kAngle; },
-                    model);
-}
-
-bool HasTangential(const AnyDistortionModel& model) {
-  return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::kTangential; }, model);
-}
-
-std::string CoefficientKey(const std::string& kind) {
-  return ForKind(kind, [](auto type) -> std::string { return decltype(type)::type::kCoeffKey; });
 }
 
 }  // namespace ws

@@ -17,8 +17,8 @@ std::vector<double> KnotsOver(double lo, double hi, int n, int degree) {
 
 }  // namespace
 
-NonRadialField::NonRadialField(int cols, int rows, const std::array<double, 4>& domain)
-    : cols_(cols), rows_(rows), domain_(domain) {
+NonRadialField::NonRadialField(int cols, int rows, const std::array<double, 4>& domain, bool tilt)
+    : cols_(cols), rows_(rows), tilt_(tilt), domain_(domain) {
   if (cols == 0 && rows == 0) return;
   auto bad = [](int n) { return n < kDegree + 1 || n > kMaxControlPoints; };
   if (bad(cols) || bad(rows))
@@ -33,6 +33,7 @@ NonRadialField::NonRadialField(int cols, int rows, const std::array<double, 4>& 
 }
 
 std::string NonRadialField::CoeffName(int k) const {
+  if (k >= GridCoeffs()) return k == GridCoeffs() ? "tilt_x" : "tilt_y";
   const int half = cols_ * rows_;
   const int j = (k % half) / cols_, i = (k % half) % cols_;
   return std::string(k < half ? "field_x_" : "field_y_") + std::to_string(i) + "_" +
@@ -44,8 +45,15 @@ NonRadial NonRadialField::ToData(const double* coeffs) const {
   data.cols = cols_;
   data.rows = rows_;
   data.domain = domain_;
-  data.coeffs.assign(coeffs, coeffs + NumCoeffs());
+  data.coeffs.assign(coeffs, coeffs + GridCoeffs());
+  if (tilt_) data.tilt = {coeffs[GridCoeffs()], coeffs[GridCoeffs() + 1]};
   return data;
+}
+
+std::vector<double> NonRadialField::Coeffs(const NonRadial& data) const {
+  std::vector<double> out(data.coeffs);
+  if (tilt_) out.insert(out.end(), data.tilt.begin(), data.tilt.end());
+  return out;
 }
 
 NonRadialField::Local NonRadialField::LocalBasis(double s, double t) const {
@@ -69,20 +77,27 @@ NonRadialField::Local NonRadialField::LocalBasis(double s, double t) const {
 }
 
 bool NonRadialField::Invert(const double* coeffs, const double m[2], double p[2]) const {
-  p[0] = m[0];
-  p[1] = m[1];
-  if (empty()) return true;
+  double t[2] = {m[0], m[1]};
+  auto untilt = [&] {
+    if (!tilt_) {
+      p[0] = t[0];
+      p[1] = t[1];
+      return true;
+    }
+    return UntiltPoint(coeffs + GridCoeffs(), t, p);
+  };
+  if (!grid()) return untilt();
   using Jet = ceres::Jet<double, 2>;
   for (int iteration = 0; iteration < 30; ++iteration) {
     Jet f[2];
-    Evaluate(coeffs, Jet(p[0], 0), Jet(p[1], 1), f);
-    const double e[2] = {p[0] + f[0].a - m[0], p[1] + f[1].a - m[1]};
-    if (std::hypot(e[0], e[1]) <= 1e-12 * (1.0 + std::hypot(m[0], m[1]))) return true;
+    Evaluate(coeffs, Jet(t[0], 0), Jet(t[1], 1), f);
+    const double e[2] = {t[0] + f[0].a - m[0], t[1] + f[1].a - m[1]};
+    if (std::hypot(e[0], e[1]) <= 1e-12 * (1.0 + std::hypot(m[0], m[1]))) return untilt();
     const double J[4] = {1.0 + f[0].v[0], f[0].v[1], f[1].v[0], 1.0 + f[1].v[1]};
     const double det = J[0] * J[3] - J[1] * J[2];
     if (!(det > 0.0)) return false;
-    p[0] -= (J[3] * e[0] - J[1] * e[1]) / det;
-    p[1] -= (J[0] * e[1] - J[2] * e[0]) / det;
+    t[0] -= (J[3] * e[0] - J[1] * e[1]) / det;
+    t[1] -= (J[0] * e[1] - J[2] * e[0]) / det;
   }
   return false;
 }

@@ -1,7 +1,9 @@
-// The non-radial part of a camera model: a smooth 2-D correction of the
+// The non-radial part of a camera model: where the lens needs them, a
+// sensor tilt (sensor_tilt.h) and a smooth 2-D correction F of the
 // distorted normalized point before it becomes a pixel,
 //
-//   (x_f, y_f) = (x_d, y_d) + F(x_d, y_d),      u = fx x_f + cx,  v = fy y_f + cy,
+//   (x_t, y_t) = TiltPoint(tau, (x_d, y_d))     (none: (x_d, y_d))
+//   (x_f, y_f) = (x_t, y_t) + F(x_t, y_t),      u = fx x_f + cx,  v = fy y_f + cy,
 //
 //   F(s, t) = sum_{j < rows} sum_{i < cols} c_ij N_i(s) M_j(t),    c_ij in R^2,
 //
@@ -19,8 +21,9 @@
 // corners are, and inverting it is a few Newton steps.
 //
 // Coefficients: 2 cols rows numbers, the x components c^x_ij at j cols + i,
-// then the y components at cols rows + j cols + i. A calibration keeps F free
-// of what the other parameters already describe (calib/nonradial_prior.h).
+// then the y components at cols rows + j cols + i; then, with a tilt,
+// tau_x and tau_y. A calibration keeps F free of what the other parameters
+// (the tilt's included) already describe (calib/nonradial_prior.h).
 #pragma once
 
 #include <array>
@@ -29,15 +32,19 @@
 
 #include "models/bspline_basis.h"
 #include "models/scalar_part.h"
+#include "models/sensor_tilt.h"
 
 namespace ws {
 
-// The stored field: grid, rectangle and coefficients (cols = 0: none).
+// The stored non-radial part: the field's grid, rectangle and coefficients
+// (cols = 0: no field) and the sensor tilt (0, 0: none).
 struct NonRadial {
   int cols = 0, rows = 0;
   std::array<double, 4> domain{};  // s0, s1, t0, t1
   std::vector<double> coeffs;      // 2 cols rows, as above
-  bool empty() const { return cols == 0; }
+  std::array<double, 2> tilt{};    // tau_x, tau_y, radians
+  bool tilted() const { return tilt[0] != 0 || tilt[1] != 0; }
+  bool empty() const { return cols == 0 && !tilted(); }
 };
 
 class NonRadialField {
@@ -47,23 +54,50 @@ class NonRadialField {
   static constexpr int kMaxControlPoints = 64;                    // a side
   static constexpr int kMaxCoeffs = 2 * kMaxControlPoints * kMaxControlPoints;
 
-  NonRadialField() = default;  // none: F = 0
-  // Throws std::invalid_argument unless cols, rows are both 0 (none) or both
-  // at least kDegree + 1 (and at most kMaxControlPoints), and the rectangle is finite and
-  // not empty.
-  NonRadialField(int cols, int rows, const std::array<double, 4>& domain);
+  NonRadialField() = default;  // none: F = 0, no tilt
+  // Throws std::invalid_argument unless cols, rows are both 0 (no field) or
+  // both at least kDegree + 1 (and at most kMaxControlPoints), and the
+  // rectangle is finite and not empty; `tilt`: tau_x, tau_y follow the grid.
+  NonRadialField(int cols, int rows, const std::array<double, 4>& domain, bool tilt = false);
   static NonRadialField FromData(const NonRadial& data) {
-    return NonRadialField(data.cols, data.rows, data.domain);
+    return NonRadialField(data.cols, data.rows, data.domain, data.tilted());
   }
 
-  bool empty() const { return cols_ == 0; }
+  bool empty() const { return cols_ == 0 && !tilt_; }
+  bool grid() const { return cols_ > 0; }  // F is not 0
+  bool tilt() const { return tilt_; }
   int cols() const { return cols_; }
   int rows() const { return rows_; }
   const std::array<double, 4>& domain() const { return domain_; }
-  int NumCoeffs() const { return 2 * cols_ * rows_; }
-  // "field_x_3_2" (component, column i, row j).
+  int GridCoeffs() const { return 2 * cols_ * rows_; }  // tau_x, tau_y follow these
+  int NumCoeffs() const { return GridCoeffs() + (tilt_ ? 2 : 0); }
+  // "field_x_3_2" (component, column i, row j); "tilt_x", "tilt_y".
   std::string CoeffName(int k) const;
+  // The stored form of the coefficients (NumCoeffs() of them).
   NonRadial ToData(const double* coeffs) const;
+  // The coefficients of a stored form with this shape (its grid's, then its
+  // tilt's when tilt()).
+  std::vector<double> Coeffs(const NonRadial& data) const;
+
+  // The tilted point of the distorted point d: d itself without a tilt.
+  template <typename C, typename T>
+  void Tilt(const C* coeffs, const T* d, T* tilted) const {
+    if (tilt_) {
+      TiltPoint(coeffs + GridCoeffs(), d, tilted);
+    } else {
+      tilted[0] = d[0];
+      tilted[1] = d[1];
+    }
+  }
+  // The point (x_f, y_f) of the distorted point d: the tilt, then F.
+  template <typename C, typename T>
+  void Apply(const C* coeffs, const T* d, T* out) const {
+    T t[2], f[2];
+    Tilt(coeffs, d, t);
+    Evaluate(coeffs, t[0], t[1], f);
+    out[0] = t[0] + f[0];
+    out[1] = t[1] + f[1];
+  }
 
   // The control points that reach (s, t) and their basis weights N_i(s)
   // M_j(t), with the weights' derivatives by s and t: the x component of
@@ -80,7 +114,7 @@ class NonRadialField {
   template <typename C, typename T>
   void Evaluate(const C* coeffs, const T& s, const T& t, T* f) const {
     f[0] = f[1] = T(0.0);
-    if (empty()) return;
+    if (!grid()) return;
     const T sc = Clamp(s, domain_[0], domain_[1]), tc = Clamp(t, domain_[2], domain_[3]);
     const int span_s = FindSpan(knots_s_, kDegree, ScalarPart(sc));
     const int span_t = FindSpan(knots_t_, kDegree, ScalarPart(tc));
@@ -97,9 +131,11 @@ class NonRadialField {
       }
   }
 
-  // Solves m = p + F(p) for p by Newton's method from p = m; false when it
-  // does not converge (to 1e-12) in 30 steps or I + dF/dp is not positive
-  // definite in the determinant at an iterate (the field folds there).
+  // Solves m = Apply(p) for the distorted point p: F by Newton's method
+  // from m (to 1e-12, at most 30 steps), then the tilt (UntiltPoint); false
+  // when Newton does not converge, I + dF/dp is not positive in the
+  // determinant at an iterate (the field folds there) or the tilt has no
+  // inverse there.
   bool Invert(const double* coeffs, const double m[2], double p[2]) const;
 
  private:
@@ -111,6 +147,7 @@ class NonRadialField {
   }
 
   int cols_ = 0, rows_ = 0;
+  bool tilt_ = false;
   std::array<double, 4> domain_{};
   std::vector<double> knots_s_, knots_t_;
 };

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "models/distortion.h"
+#include "models/model_kind.h"
 #include "models/radial_coordinate.h"
 #include "models/radial_tangential.h"
 
@@ -32,29 +33,27 @@ class PolyDistortion {
  public:
   static_assert(N >= 1, "a polynomial model needs at least k1");
   using Coordinate = RadialCoordinate;
-  // Kannala-Brandt (over theta) has no tangential terms.
-  static constexpr bool kTangential = !Coordinate::kAngle;
+  static constexpr ModelKind kKind = Coordinate::kAngle ? ModelKind::kKb4 : N == 3 ? ModelKind::kPoly6 : ModelKind::kPoly12;
+  static_assert(Traits(kKind).terms == N && Traits(kKind).angle == Coordinate::kAngle,
+                "a polynomial model of model_kind.h's table");
+  static constexpr bool kTangential = Traits(kKind).tangential;
 
-  static std::string Kind() {
-    return Coordinate::kAngle ? "kb" + std::to_string(N) : "poly" + std::to_string(2 * N);
-  }
   static PolyDistortion FromData(const Distortion& data, Coefficients) {
     if (data.degree != 0 || !data.knots.empty())
-      throw std::invalid_argument(Kind() + " takes neither a degree nor knots");
+      throw std::invalid_argument(ModelName(kKind) + " takes neither a degree nor knots");
     return PolyDistortion();
   }
   static PolyDistortion ForCalibration(const CalibrationSetup&) { return PolyDistortion(); }
 
   int NumCoeffs() const { return N; }
-  static constexpr const char* kCoeffKey = "k";  // k1..kN: files, reports, parameter names
-  std::string CoeffName(int i) const { return kCoeffKey + std::to_string(i + 1); }
+  std::string CoeffName(int i) const { return Traits(kKind).coeff_key + std::to_string(i + 1); }
 
   Distortion ToData(const double* coeffs) const {
-    return Distortion{Kind(), 0, {}, std::vector<double>(coeffs, coeffs + N)};
+    return Distortion{kKind, 0, {}, std::vector<double>(coeffs, coeffs + N)};
   }
   std::vector<double> EstimatedCoeffs(const std::vector<double>& stored) const {
     if (static_cast<int>(stored.size()) != N)
-      throw std::invalid_argument(Kind() + " needs " + std::to_string(N) + " coefficients, got " +
+      throw std::invalid_argument(ModelName(kKind) + " needs " + std::to_string(N) + " coefficients, got " +
                                   std::to_string(stored.size()));
     return stored;
   }

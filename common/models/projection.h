@@ -4,12 +4,13 @@
 //   (x, y) = Model::Coordinate::Ideal(X, Y, Z)    radial_coordinate.h:
 //                                                 (X, Y) / Z, or theta (X, Y) / rho
 //   (x_d, y_d) = model.Distort(coeffs, p1, p2, x, y)   (distortion.h)
-//   (x_f, y_f) = (x_d, y_d) + F(x_d, y_d)              (nonradial_field.h; F = 0 without one)
+//   (x_t, y_t) = TiltPoint(tau, (x_d, y_d))            (sensor_tilt.h; (x_d, y_d) without one)
+//   (x_f, y_f) = (x_t, y_t) + F(x_t, y_t)              (nonradial_field.h; F = 0 without one)
 //   u = fx x_f + cx,  v = fy y_f + cy
 //
 // Intrinsics are the array {fx, fy, cx, cy, p1, p2} (indices kFx..kP2), the
 // coefficients a separate array: model.NumCoeffs() of the radial model, then
-// field.NumCoeffs() of the non-radial field; one parameter block each in a
+// field.NumCoeffs() of the non-radial part (F's, then the tilt's); one parameter block each in a
 // Ceres problem. Everything is templated on the scalar so that Ceres can
 // differentiate it automatically.
 #pragma once
@@ -47,11 +48,9 @@ void ToPixel(const T* intrinsics, const T* normalized, T* pixel) {
 template <typename Model, typename T>
 void ProjectIdeal(const Model& model, const NonRadialField& field, const T* intrinsics,
                   const T* coeffs, const T* ideal, T* pixel) {
-  T p[2], f[2];
-  DistortIdeal(model, intrinsics, coeffs, ideal, p);
-  field.Evaluate(coeffs + model.NumCoeffs(), p[0], p[1], f);
-  p[0] += f[0];
-  p[1] += f[1];
+  T d[2], p[2];
+  DistortIdeal(model, intrinsics, coeffs, ideal, d);
+  field.Apply(coeffs + model.NumCoeffs(), d, p);
   ToPixel(intrinsics, p, pixel);
 }
 
@@ -125,7 +124,7 @@ bool Undistort(const Model& model, const double* coeffs, double p1, double p2,
   return true;
 }
 
-// The ideal point of a pixel: the field inverted (NonRadialField::Invert),
+// The ideal point of a pixel: the non-radial part inverted (NonRadialField::Invert),
 // then the distortion (Undistort); false where either fails.
 template <typename Model>
 bool IdealOfPixel(const Model& model, const NonRadialField& field, const double* intrinsics,

@@ -8,6 +8,8 @@
 #include <opencv2/core/eigen.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "lcm_io/image_codec.h"
+
 namespace ws {
 namespace {
 
@@ -140,7 +142,13 @@ const char* RectificationModeName(RectificationMode mode) {
 }
 
 Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options) {
-  const Camera left(rig.left), right(rig.right);
+  Rectification rect = RectificationGeometry(rig, options);
+  BuildRectificationMaps(rig, &rect);
+  return rect;
+}
+
+Rectification RectificationGeometry(const StereoRig& rig, const RectifyOptions& options) {
+  const Camera left(rig.left), right(rig.right);  // throw for an inconsistent camera
   Rectification rect;
   rect.input_size = cv::Size(rig.left.image_width, rig.left.image_height);
   if (rect.input_size != cv::Size(rig.right.image_width, rig.right.image_height))
@@ -166,9 +174,12 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
   } else {
     if (!(box[1] > box[0] && box[3] > box[2]))
       throw std::invalid_argument("the two cameras of the rig see no common field");
-    rect.size = options.size.empty() ? cv::Size(int(std::ceil((box[1] - box[0]) * rect.f)) + 1,
-                                                int(std::ceil((box[3] - box[2]) * rect.f)) + 1)
-                                     : options.size;
+    const double width = std::ceil((box[1] - box[0]) * rect.f) + 1, height = std::ceil((box[3] - box[2]) * rect.f) + 1;
+    const bool acceptable = width <= 1e9 && height <= 1e9 && ImageSizeAcceptable(int64_t(width), int64_t(height));
+    if (options.size.empty() && !acceptable)
+      throw std::invalid_argument("the lat-lon image of the common field would be " + std::to_string(width) + " x " +
+                                  std::to_string(height) + " pixels");
+    rect.size = options.size.empty() ? cv::Size(int(width), int(height)) : options.size;
     // The box's centre at the image's centre.
     rect.cx = (rect.size.width - 1) / 2.0 - rect.f * 0.5 * (box[0] + box[1]);
     rect.cy = (rect.size.height - 1) / 2.0 - rect.f * 0.5 * (box[2] + box[3]);
@@ -190,11 +201,14 @@ Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& opt
                          0, 1, 0, -rect.cy,
                          0, 0, 0, rect.f,
                          0, 0, 1 / rect.baseline, 0);
-  BuildMaps(left, rect.R_left, rect, &rect.maps_left, &rect.valid_left);
-  BuildMaps(right, rect.R_right, rect, &rect.maps_right, &rect.valid_right);
-  rect.no_image = (rect.valid_left == 0) | (rect.valid_right == 0);
-  rect.common = cv::boundingRect(rect.no_image == 0);
   return rect;
+}
+
+void BuildRectificationMaps(const StereoRig& rig, Rectification* rect) {
+  BuildMaps(Camera(rig.left), rect->R_left, *rect, &rect->maps_left, &rect->valid_left);
+  BuildMaps(Camera(rig.right), rect->R_right, *rect, &rect->maps_right, &rect->valid_right);
+  rect->no_image = (rect->valid_left == 0) | (rect->valid_right == 0);
+  rect->common = cv::boundingRect(rect->no_image == 0);
 }
 
 void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& right,

@@ -89,6 +89,10 @@ struct Rectification {
 // Throws std::invalid_argument if the cameras' image sizes differ, the
 // baseline is zero or downscale is not 1..8.
 Rectification BuildRectification(const StereoRig& rig, const RectifyOptions& options = {});
+// BuildRectification in two steps: everything but the maps and the masks
+// (cheap: what the size and the checks need), then those.
+Rectification RectificationGeometry(const StereoRig& rig, const RectifyOptions& options = {});
+void BuildRectificationMaps(const StereoRig& rig, Rectification* rect);
 
 // Remaps both images (any type cv::remap takes) with bilinear interpolation,
 // each pixel the mean of its samples; with a region, only its pixels (the

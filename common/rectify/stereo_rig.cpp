@@ -15,7 +15,7 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   model.cy = msg.cy;
   model.p1 = msg.p1;
   model.p2 = msg.p2;
-  model.distortion.kind = msg.model;
+  model.distortion.kind = ParseModelKind(msg.model);  // throws std::invalid_argument
   model.distortion.degree = msg.degree;
   model.distortion.knots = msg.knots;
   model.distortion.coeffs = msg.coeffs;
@@ -23,6 +23,7 @@ CameraModel CameraModelFromMessage(const widestereo::camera_calibration_t& msg) 
   model.nonradial.rows = msg.field_rows;
   std::copy(msg.field_domain, msg.field_domain + 4, model.nonradial.domain.begin());
   model.nonradial.coeffs = msg.field_coeffs;
+  std::copy(msg.sensor_tilt, msg.sensor_tilt + 2, model.nonradial.tilt.begin());
   Camera check(model);  // throws std::invalid_argument when inconsistent
   return model;
 }
@@ -55,7 +56,7 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   msg.name = name;
   msg.image_width = model.image_width;
   msg.image_height = model.image_height;
-  msg.model = model.distortion.kind;
+  msg.model = ModelName(model.distortion.kind);
   msg.degree = model.distortion.degree;
   msg.knots = model.distortion.knots;
   msg.nknots = int32_t(msg.knots.size());
@@ -72,6 +73,7 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
   std::copy(model.nonradial.domain.begin(), model.nonradial.domain.end(), msg.field_domain);
   msg.field_coeffs = model.nonradial.coeffs;
   msg.nfield = int32_t(msg.field_coeffs.size());
+  std::copy(model.nonradial.tilt.begin(), model.nonradial.tilt.end(), msg.sensor_tilt);
   return msg;
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 
 namespace ws {
@@ -65,10 +64,16 @@ void CheckOpenCvYamlLayout(const std::string& text) {
   }
 }
 
-void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path) {
+void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path, size_t max_bytes) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw YamlFileError("cannot open the file");
-  const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  std::string text;
+  char chunk[1 << 16];
+  while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
+    text.append(chunk, size_t(file.gcount()));
+    if (text.size() > max_bytes)
+      throw YamlFileError("more than " + std::to_string(max_bytes) + " bytes, larger than such a file can be");
+  }
   if (file.bad()) throw YamlFileError("cannot read the file");
   CheckOpenCvYamlLayout(text);
   try {

@@ -29,7 +29,10 @@ constexpr int kMaxYamlNesting = 64;
 void CheckOpenCvYamlLayout(const std::string& text);
 
 // Reads `path`, checks it (CheckOpenCvYamlLayout) and opens it in `storage`
-// for reading as YAML. Throws YamlFileError.
-void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path);
+// for reading as YAML. Throws YamlFileError, also for a file of more than
+// max_bytes: OpenCV's parse of it cannot be stopped (SIGTERM waits for it),
+// and takes seconds and gigabytes for hundreds of megabytes.
+constexpr size_t kMaxYamlFileBytes = size_t(64) << 20;
+void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path, size_t max_bytes = kMaxYamlFileBytes);
 
 }  // namespace ws

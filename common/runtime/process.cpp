@@ -6,21 +6,22 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
+#include "runtime/stop_request.h"
 #include "runtime/wall_clock.h"
 
 namespace ws {
 namespace {
 
-std::atomic<bool> g_stop{false};
-
-void OnSignal(int) { g_stop = true; }
+void OnSignal(int) { RequestStop(); }
 
 void InstallSignalHandlers() {
   struct sigaction action {};
@@ -76,11 +77,13 @@ Process::Process(const ProcessOptions& options)
             log_.path() + ")");
   if (auth_)
     log_.Info("rig key " + auth_->key().IdText() + " (" + options.key_file +
-              "): commands and calibrations are signed, and refused unless signed with it");
+              "): commands, calibrations, corners and images are signed, and refused unless signed "
+              "with it");
   else if (file_input_)  // a batch run obeys no peer: only the log file needs to say it
-    log_.Detail("no --key-file: commands and calibrations are unauthenticated");
+    log_.Detail("no --key-file: commands, calibrations, corners and images are unauthenticated");
   else
-    log_.Info("no --key-file: commands and calibrations are unauthenticated (any peer on the bus may send them)");
+    log_.Info("no --key-file: commands, calibrations, corners and images are unauthenticated (any "
+              "peer on the bus may send them)");
 }
 
 Process::~Process() {
@@ -118,9 +121,9 @@ void Process::Every(int64_t period_us, std::function<void()> fn) {
 
 void Process::AtEndOfInput(std::function<void()> fn) { at_end_.push_back(std::move(fn)); }
 
-bool Process::Stopping() const { return g_stop || exit_code_ != 0; }
+bool Process::Stopping() const { return StopRequested() || exit_code_ != 0; }
 
-void Process::Stop() { g_stop = true; }
+void Process::Stop() { RequestStop(); }
 
 void Process::Fatal(const std::string& error) {
   ReportError(error);
@@ -163,7 +166,7 @@ int Process::Finish() {
   PublishStatus(exit_code_ ? "failed" : "exited");  // the last heartbeat says it ends
   log_.Detail("final: " + ProgressLine());
   ShowProgress();
-  log_.Info(exit_code_ ? "exiting on error" : g_stop ? "stopped" : "done");
+  log_.Info(exit_code_ ? "exiting on error" : StopRequested() ? "stopped" : "done");
   return exit_code_;
 }
 
@@ -232,21 +235,23 @@ void Process::HandleRejected(const std::string& channel, const std::string& why)
 }
 
 // Frame ids as unsigned, wrap-safe counters: the frames missed between two
-// ids are (id - last - 1) mod 2^64. An id that repeats or steps back a
-// little (a sender started anew) starts the count again; one that jumps
-// further than kMaxFrameGap either way (a sender's reset, a peer's forged
-// id) does too, and is reported, not counted as lost frames.
+// ids are (id - last - 1) mod 2^64, less those that came and were skipped
+// undecoded. An id that repeats or steps back a little (a sender started
+// anew) starts the count again; one that jumps further than kMaxFrameGap
+// either way (a sender's reset, a peer's forged id) does too, and is
+// reported, not counted as lost frames.
 void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
   constexpr uint64_t kMaxFrameGap = 1'000'000;  // 9 h at 30 Hz
   bool reset = false;
   int64_t last = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    const uint64_t skipped = uint64_t(std::exchange(undecoded_skips_[channel], 0));
     auto it = last_frame_id_.find(channel);
     if (it != last_frame_id_.end()) {
       last = it->second;
       const uint64_t missed = uint64_t(frame_id) - uint64_t(last) - 1;
-      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed);
+      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed - std::min(missed, skipped));
       else reset = missed < uint64_t(-1) - kMaxFrameGap;  // not a repeat or a small step back
     }
     last_frame_id_[channel] = frame_id;
@@ -254,6 +259,12 @@ void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
   if (reset)
     ReportError(channel + ": frame id jumped from " + std::to_string(last) + " to " + std::to_string(frame_id) +
                 ": counted as the sender's reset, not as lost frames");
+}
+
+void Process::SkipUndecoded(const std::string& channel) {
+  Counters(channel).skipped++;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++undecoded_skips_[channel];
 }
 
 void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes) {

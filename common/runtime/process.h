@@ -5,8 +5,9 @@
 // log-to-log filter.
 //
 // Authentication. With --key-file, every message type that carries an
-// auth_t (commands, calibrations) is signed by Publish and checked by
-// Subscribe (auth/message_auth.h): one that fails is rejected with the reason.
+// auth_t (commands, calibrations, corners, images) is signed by Publish and
+// checked by Subscribe (auth/message_auth.h): one that fails is rejected with
+// the reason.
 // Without a key they go unsigned and unchecked, and the log says so at start.
 //
 // Batch runs. With a file:// input (or files the process reads itself,
@@ -66,9 +67,17 @@ class Process {
   template <class Msg>
   void Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                  int queue_capacity = 0);
+  // As Subscribe, for a consumer that samples the stream (stereo-view shows a
+  // few of the image pairs that arrive): a message that comes while `due()`
+  // is false is counted as skipped and not handled. Live it is skipped
+  // before it is even decoded; from a file:// log once its time is observed
+  // (the log's clock). Frame-id gaps are counted net of those skips.
+  template <class Msg>
+  void SubscribeSampled(const std::string& channel, std::function<bool()> due,
+                        std::function<void(Msg&)> handler, int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
-  // dropped. A command or calibration is signed first (with a rig key).
+  // dropped. A message that carries an auth_t is signed (with a rig key).
   template <class Msg>
   void Publish(const std::string& channel, const Msg& msg);
 
@@ -127,8 +136,6 @@ class Process {
 
   // The input LCM, opened on first use; null for an empty input log.
   lcm::LCM* Input();
-  template <class Msg>
-  void PublishEncoded(const std::string& channel, const Msg& msg);
   void PublishBytes(const std::string& channel, const std::vector<uint8_t>& bytes);
   // The heartbeat, with `state` instead of the process's own if given.
   void PublishStatus(const char* state = nullptr);
@@ -136,6 +143,8 @@ class Process {
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();
   void CountFrameGap(const std::string& channel, int64_t frame_id);
+  // Counts a message skipped before it was decoded (SubscribeSampled).
+  void SkipUndecoded(const std::string& channel);
 
   ProcessOptions options_;
   TextLog log_;
@@ -160,6 +169,7 @@ class Process {
   std::string last_error_;
   std::map<std::string, std::unique_ptr<ChannelCounters>> counters_;
   std::map<std::string, int64_t> last_frame_id_;
+  std::map<std::string, int64_t> undecoded_skips_;  // since the channel's last frame id
   std::map<std::string, int64_t> last_reject_log_us_;
   std::vector<Timer> timers_;
   std::vector<std::function<void()>> at_end_;
@@ -179,26 +189,42 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 template <class Msg>
 void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                         int queue_capacity) {
+  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity);
+}
+
+template <class Msg>
+void Process::SubscribeSampled(const std::string& channel, std::function<bool()> due,
+                               std::function<void(Msg&)> handler, int queue_capacity) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
-  using Context = std::pair<Process*, std::function<void(Msg&)>>;
-  auto context = std::make_shared<Context>(this, std::move(handler));
+  struct Context {
+    Process* self;
+    std::function<bool()> due;  // null: every message is handled
+    std::function<void(Msg&)> handler;
+  };
+  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler)});
   handler_contexts_.push_back(context);
   lcm::Subscription* subscription = in->subscribeFunction(
       channel,
       +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Context* ctx) {
-        Process* self = ctx->first;
+        Process* self = ctx->self;
         self->Counters(ch).received++;
+        if (ctx->due && !self->file_input_ && !ctx->due()) return self->SkipUndecoded(ch);
         std::optional<StageTimer> timer;
         if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(self->stage_times_, "receive " + ch);
         try {
           Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
           if constexpr (auth::IsAuthenticated<Msg>::value)
-            if (self->auth_) self->auth_->Check(ch, msg, self->Now());
+            if (self->auth_)
+              self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
           if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
-          ctx->second(msg);
+          if (ctx->due && self->file_input_ && !ctx->due()) {
+            self->Counters(ch).skipped++;
+            return;
+          }
+          ctx->handler(msg);
         } catch (const std::exception& e) {
           self->HandleRejected(ch, e.what());
         }
@@ -209,26 +235,18 @@ void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> ha
 
 template <class Msg>
 void Process::Publish(const std::string& channel, const Msg& msg) {
-  if constexpr (auth::IsAuthenticated<Msg>::value) {
-    Msg stamped = msg;
-    if (auth_)
-      auth::Sign(auth_->key(), channel, sender_, Now(), stamped);
-    else
-      auth::ClearAuth(stamped);
-    PublishEncoded(channel, stamped);
-  } else {
-    PublishEncoded(channel, msg);
-  }
-}
-
-template <class Msg>
-void Process::PublishEncoded(const std::string& channel, const Msg& msg) {
   std::optional<StageTimer> timer;
   if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(stage_times_, "publish " + channel);
-  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
-  if (msg.encode(bytes.data(), 0, int(bytes.size())) < 0) {
+  std::vector<uint8_t> bytes;
+  try {
+    if constexpr (auth::IsAuthenticated<Msg>::value)
+      bytes = auth_ ? auth::EncodeSigned(auth_->key(), channel, sender_, Now(), msg)
+                    : auth::EncodeWithAuth(msg, widestereo::auth_t{});
+    else
+      bytes = EncodeMessage(msg);
+  } catch (const std::invalid_argument& e) {
     Counters(channel).dropped++;
-    ReportError(channel + ": message does not encode");
+    ReportError(channel + ": " + e.what());
     return;
   }
   PublishBytes(channel, bytes);

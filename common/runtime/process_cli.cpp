@@ -43,8 +43,8 @@ ProcessCli::ProcessCli(std::string name, std::string description)
   app_.add_option("--log-dir", options_.log_dir, "Folder of the text log <name>.log")
       ->capture_default_str();
   app_.add_option("--key-file", options_.key_file,
-                  "The rig key (a secret only its owner may read): commands and calibrations are then "
-                  "signed, and refused unless signed with it (docs/security.md)");
+                  "The rig key (a secret only its owner may read): commands, calibrations, corners and "
+                  "images are then signed, and refused unless signed with it (docs/security.md)");
   app_.add_option("--max-clock-skew", options_.max_clock_skew_s,
                   "With --key-file: seconds a signed message may be dated ahead of this host's clock")
       ->check(CLI::Range(0.0, 30.0))

@@ -20,7 +20,7 @@ struct ProcessOptions {
   bool batch = false;
   std::string batch_out;
   std::string log_dir = "logs";
-  std::string key_file;  // "" = no rig key: commands and calibrations unauthenticated
+  std::string key_file;  // "" = no rig key: nothing signed or checked
   // How far ahead of this process's clock a signed message may be dated:
   // a sender's clock that runs fast by more is refused, so that "signed
   // before this process started" also holds for it (docs/security.md).

@@ -13,13 +13,15 @@ namespace {
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double max_theta) {
   fs << "{";
   fs << "name" << name;
-  fs << "kind" << m.distortion.kind;
+  fs << "kind" << ModelName(m.distortion.kind);
   fs << "degree" << m.distortion.degree;
   fs << "knots" << m.distortion.knots;
-  fs << CoefficientKey(m.distortion.kind) << m.distortion.coeffs;
+  fs << Traits(m.distortion.kind).coeff_key << m.distortion.coeffs;
   fs << "fx" << m.fx << "fy" << m.fy << "cx" << m.cx << "cy" << m.cy << "p1" << m.p1 << "p2" << m.p2;
   fs << "image_width" << m.image_width << "image_height" << m.image_height;
-  if (!m.nonradial.empty())  // a tilted sensor (sensor_tilt.h)
+  if (m.nonradial.tilted())  // a tilted sensor (models/sensor_tilt.h)
+    fs << "sensor_tilt" << std::vector<double>(m.nonradial.tilt.begin(), m.nonradial.tilt.end());
+  if (m.nonradial.cols > 0)
     fs << "nonradial_cols" << m.nonradial.cols << "nonradial_rows" << m.nonradial.rows
        << "nonradial_domain" << std::vector<double>(m.nonradial.domain.begin(), m.nonradial.domain.end())
        << "nonradial_coeffs" << m.nonradial.coeffs;
@@ -102,10 +104,10 @@ CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::str
     *max_theta = field_deg / 2 * M_PI / 180;
   }
   CameraModel m;
-  m.distortion.kind = r.Text(node, "kind", where);
+  m.distortion.kind = ParseModelKind(r.Text(node, "kind", where));
   m.distortion.degree = r.Int(node, "degree", where);
   m.distortion.knots = r.Reals(node, "knots", where);
-  m.distortion.coeffs = r.Reals(node, CoefficientKey(m.distortion.kind), where);
+  m.distortion.coeffs = r.Reals(node, Traits(m.distortion.kind).coeff_key, where);
   m.fx = r.Real(node, "fx", where);
   m.fy = r.Real(node, "fy", where);
   m.cx = r.Real(node, "cx", where);
@@ -114,6 +116,11 @@ CameraModel ReadCamera(const Reader& r, const cv::FileNode& node, const std::str
   m.p2 = r.Real(node, "p2", where);
   m.image_width = r.Int(node, "image_width", where);
   m.image_height = r.Int(node, "image_height", where);
+  if (!node["sensor_tilt"].isNone()) {
+    const std::vector<double> tilt = r.Reals(node, "sensor_tilt", where);
+    if (tilt.size() != 2) r.Fail(where + "sensor_tilt", "must be 2 numbers");
+    std::copy(tilt.begin(), tilt.end(), m.nonradial.tilt.begin());
+  }
   if (!node["nonradial_cols"].isNone()) {
     m.nonradial.cols = r.Int(node, "nonradial_cols", where);
     m.nonradial.rows = r.Int(node, "nonradial_rows", where);

@@ -109,6 +109,7 @@ std::string Key(const CameraModel& m, double max_theta) {
   out << " | " << m.nonradial.cols << ' ' << m.nonradial.rows;
   for (double d : m.nonradial.domain) out << ' ' << d;
   for (double c : m.nonradial.coeffs) out << ' ' << c;
+  out << " | " << m.nonradial.tilt[0] << ' ' << m.nonradial.tilt[1];
   return out.str();
 }
 

@@ -20,7 +20,6 @@
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
 #include "sim/ray_map.h"
-#include "sim/sensor_tilt.h"
 
 namespace ws {
 namespace {
@@ -237,7 +236,7 @@ std::pair<CameraModel, double> ParseCamera(Fields fields, const std::string& bas
     for (const char* own : {"fit", "focal_length_mm", "pixel_pitch_mm", "image_size"})
       if (fields.Has(own))
         fields.Fail(fields.Path(own), "the fisheye-knee lens has its own (override fx, fy, cx, cy instead)");
-  const std::string fit = fields.Choice("fit", "bspline", {"bspline", "poly6", "poly12"});
+  const ModelKind fit = ParseModelKind(fields.Choice("fit", "bspline", {"bspline", "poly6", "poly12"}));
   const double focal_mm = fields.Real("focal_length_mm", 1.3, 0, kBig, true);
   const double pitch_mm = fields.Real("pixel_pitch_mm", 0.00375, 0, kBig, true);
   int width = 1280, height = 960;
@@ -279,23 +278,24 @@ std::pair<CameraModel, double> ParseCamera(Fields fields, const std::string& bas
     sensor.image_height = height;
     try {
       model = CameraFromLensTable(table, sensor);
-      if (fit != "bspline") {
+      if (fit != ModelKind::kBspline) {
         const LensTable normalized = ScaleLensTable(table, 1.0 / focal_mm);
         model.distortion = FitByLeastSquares(MakeModel(Distortion{fit, 0, {}, {}}, Coefficients::kAll),
                                              normalized);
       }
     } catch (const std::exception& e) {
-      fields.Fail(lens_path, std::string("cannot fit ") + fit + " to the table: " + e.what());
+      fields.Fail(lens_path, "cannot fit " + ModelName(fit) + " to the table: " + e.what());
     }
   } else if (kind == "poly6" || kind == "poly12") {
-    if (fields.Has("fit") && fit != kind)
+    const ModelKind poly = ParseModelKind(kind);
+    if (fields.Has("fit") && fit != poly)
       fields.Fail(fields.Path("fit"), "applies to table lenses only");
     model.image_width = width;
     model.image_height = height;
     model.fx = model.fy = focal_mm / pitch_mm;
     model.cx = width / 2.0;
     model.cy = height / 2.0;
-    model.distortion = Distortion{kind, 0, {}, ParseCoefficients(fields, lens_path, arg, kind == "poly6" ? 3 : 6)};
+    model.distortion = Distortion{poly, 0, {}, ParseCoefficients(fields, lens_path, arg, Traits(poly).terms)};
   } else {
     fields.Fail(lens_path, "must be theia, fisheye-knee, table:PATH, table-percent:PATH, poly6:k1,k2,k3 or "
                            "poly12:k1,...,k6, not '" + lens + "'");
@@ -308,16 +308,12 @@ std::pair<CameraModel, double> ParseCamera(Fields fields, const std::string& bas
   model.p2 = fields.Real("p2", 0, -0.1, 0.1);
   if (fields.Has("sensor_tilt_deg")) {
     const std::vector<double> tilt = fields.Reals("sensor_tilt_deg", 2, -5, 5);
-    try {
-      model = WithSensorTilt(model, {tilt[0] * M_PI / 180, tilt[1] * M_PI / 180});
-    } catch (const std::invalid_argument& e) {
-      fields.Fail(fields.Path("sensor_tilt_deg"), e.what());
-    }
+    model.nonradial.tilt = {tilt[0] * M_PI / 180, tilt[1] * M_PI / 180};
   }
-  const bool angle = IsAngleModel(MakeModel(model.distortion, Coefficients::kAll));
+  const bool angle = Traits(model.distortion.kind).angle;
   field_deg = fields.Real("field_deg", field_deg, 0, angle ? 360 : 180, true);
   if (!angle && field_deg == 180)
-    fields.Fail(fields.Path("field_deg"), "a pinhole model (" + model.distortion.kind + ") sees less than 180 degrees");
+    fields.Fail(fields.Path("field_deg"), "a pinhole model (" + ModelName(model.distortion.kind) + ") sees less than 180 degrees");
   fields.Finish();
   const double max_theta = std::min(M_PI, field_deg / 2 * M_PI / 180);
   try {

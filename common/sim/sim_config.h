@@ -30,8 +30,9 @@
 //   image_size: [W, H]                              (default 1280 x 960)
 //   fx, fy, cx, cy: override (pixels; cx, cy default to W/2, H/2)
 //   p1, p2: tangential distortion (default 0)
-//   sensor_tilt_deg: [tau_x, tau_y]   the sensor tilted in its mount (sensor_tilt.h;
-//              default none, at most 5 degrees), drawn as a non-radial field
+//   sensor_tilt_deg: [tau_x, tau_y]   the sensor tilted in its mount
+//              (models/sensor_tilt.h, OpenCV's tilted model; default none, at
+//              most 5 degrees)
 //   field_deg: the lens's full field (degrees): rays farther than half of it
 //              off axis are not imaged, the pixels past its image circle are
 //              black (default: no limit; pinhole models see less than 180)

@@ -52,7 +52,7 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
       process.Tick();
       continue;
     }
-    widestereo::stereo_frame_t frame;
+    widestereo::stereo_frame_t frame{};
     frame.frame_id = id;
     frame.utime = pair->utime ? pair->utime
                   : options.frame_clock ? (id + 1) * period_us

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "capture/aravis_source.h"
-#include "sim/sim_source.h"
+#include "source/aravis_source.h"
+#include "source/sim_source.h"
 #include "source/dir_source.h"
 
 namespace ws {

@@ -9,7 +9,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lcm_io/image_codec.h"
-#include "view/base64.h"
 #include "view/disparity_colour.h"
 
 namespace ws::view {
@@ -28,9 +27,9 @@ cv::Mat To8Bit(const cv::Mat& image) {
   return out;
 }
 
-json Image(const widestereo::image_t& image, int max_width) {
-  const cv::Mat mat = ImageToMat(image);
-  return {{"width", image.width}, {"height", image.height}, {"jpeg", JpegBase64(To8Bit(mat), max_width)}};
+json Image(const widestereo::image_t& image, int max_width, BlobStore& blobs) {
+  const cv::Mat mat = ImageView(image);
+  return {{"width", image.width}, {"height", image.height}, {"src", blobs.Put("frame", 2 * kFramesKept, Jpeg(To8Bit(mat), max_width))}};
 }
 
 json Corners(const widestereo::camera_corners_t& corners) {
@@ -51,19 +50,20 @@ json Rows(const Grid& grid) {
 
 }  // namespace
 
-std::string JpegBase64(const cv::Mat& image, int max_width) {
+Blob Jpeg(const cv::Mat& image, int max_width) {
   cv::Mat shown = image;
   if (image.cols > max_width)
     cv::resize(image, shown, {max_width, std::max(1, image.rows * max_width / image.cols)}, 0, 0,
                cv::INTER_AREA);
-  std::vector<uint8_t> jpeg;
-  cv::imencode(".jpg", shown, jpeg, {cv::IMWRITE_JPEG_QUALITY, 80});
-  return Base64(jpeg.data(), jpeg.size());
+  Blob jpeg{"image/jpeg", {}};
+  cv::imencode(".jpg", shown, jpeg.bytes, {cv::IMWRITE_JPEG_QUALITY, 80});
+  return jpeg;
 }
 
-std::string FrameEvent(const widestereo::stereo_frame_t& frame, int max_width) {
-  json event = {{"frame_id", frame.frame_id}, {"utime", frame.utime}, {"left", Image(frame.left, max_width)}};
-  if (!IsNoImage(frame.right)) event["right"] = Image(frame.right, max_width);
+std::string FrameEvent(const widestereo::stereo_frame_t& frame, int max_width, BlobStore& blobs) {
+  json event = {
+      {"frame_id", frame.frame_id}, {"utime", frame.utime}, {"left", Image(frame.left, max_width, blobs)}};
+  if (!IsNoImage(frame.right)) event["right"] = Image(frame.right, max_width, blobs);
   return event.dump();
 }
 
@@ -109,18 +109,19 @@ std::string ResultEvent(const widestereo::calibration_result_t& result) {
   return json{{"utime", result.utime}, {"chosen", result.chosen}, {"models", models}, {"cameras", cameras}}.dump();
 }
 
-std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat& right, int max_width) {
+std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat& right, int max_width,
+                           BlobStore& blobs) {
   return json{{"frame_id", frame_id},
               {"width", left.cols},
               {"height", left.rows},
-              {"left", JpegBase64(To8Bit(left), max_width)},
-              {"right", JpegBase64(To8Bit(right), max_width)}}
+              {"left", blobs.Put("rectified", 2 * kPayloadsKept, Jpeg(To8Bit(left), max_width))},
+              {"right", blobs.Put("rectified", 2 * kPayloadsKept, Jpeg(To8Bit(right), max_width))}}
       .dump();
 }
 
-std::string DisparityEvent(const widestereo::disparity_t& disparity, int max_width) {
+std::string DisparityEvent(const widestereo::disparity_t& disparity, int max_width, BlobStore& blobs) {
   const DisparityLegend legend = MakeLegend(disparity);
-  cv::Mat values = ImageToMat(disparity.disparity);
+  cv::Mat values = ImageView(disparity.disparity);
   if (values.cols > max_width)  // coloured at the size shown: nearest, so no disparity is made up
     cv::resize(values, values, {max_width, std::max(1, values.rows * max_width / values.cols)}, 0, 0,
                cv::INTER_NEAREST);
@@ -139,20 +140,25 @@ std::string DisparityEvent(const widestereo::disparity_t& disparity, int max_wid
               {"min_disparity", legend.min_disparity},
               {"max_disparity", legend.max_disparity},
               {"ticks", ticks},
-              {"jpeg", JpegBase64(colour, max_width)}}
+              {"src", blobs.Put("disparity", kPayloadsKept, Jpeg(colour, max_width))}}
       .dump();
 }
 
-std::string CloudEvent(const widestereo::point_cloud_t& cloud, int max_points) {
+std::string CloudEvent(const widestereo::point_cloud_t& cloud, int max_points, BlobStore& blobs) {
+  static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the page reads float32 little-endian");
   const int step = std::max(1, (cloud.npoints + max_points - 1) / std::max(1, max_points));
-  std::vector<float> xyz;
-  xyz.reserve(size_t(cloud.npoints / step + 1) * 3);
-  for (int i = 0; i < cloud.npoints; i += step) xyz.insert(xyz.end(), cloud.xyz[i].begin(), cloud.xyz[i].end());
+  Blob xyz{"application/octet-stream", {}};
+  xyz.bytes.reserve(size_t(cloud.npoints / step + 1) * 3 * sizeof(float));
+  for (int i = 0; i < cloud.npoints; i += step) {
+    const auto* point = reinterpret_cast<const uint8_t*>(cloud.xyz[i].data());
+    xyz.bytes.insert(xyz.bytes.end(), point, point + 3 * sizeof(float));
+  }
+  const size_t shown = xyz.bytes.size() / (3 * sizeof(float));
   return json{{"frame_id", cloud.frame_id},
               {"frame", cloud.frame},
               {"npoints", cloud.npoints},
-              {"shown", xyz.size() / 3},
-              {"xyz", Base64(reinterpret_cast<const uint8_t*>(xyz.data()), xyz.size() * sizeof(float))}}
+              {"shown", shown},
+              {"src", blobs.Put("cloud", kPayloadsKept, std::move(xyz))}}
       .dump();
 }
 

@@ -7,6 +7,7 @@
 
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
+#include "rectify/calibration_size.h"
 #include "runtime/wall_clock.h"
 #include "view/page_events.h"
 #include "widestereo/command_t.hpp"
@@ -34,18 +35,19 @@ void Guarded(Process& process, const char* channel, Fn fn) {
 
 }  // namespace
 
-ViewNode::ViewNode(Process& process, EventHub& hub, ViewOptions options)
+ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options)
     : process_(process),
       hub_(hub),
+      blobs_(blobs),
       options_(options),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
         Guarded(process_, channel::kStereoDisparity,
-                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width)); });
+                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width, blobs_)); });
       })),
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
-        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points));
+        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points, blobs_));
       })) {}
 
 ViewNode::~ViewNode() = default;
@@ -101,7 +103,7 @@ bool ViewNode::Due(int64_t& last_us) {
 
 void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
   Guarded(process_, channel::kStereoImages, [&] {
-    std::string event = FrameEvent(frame, options_.max_width);
+    std::string event = FrameEvent(frame, options_.max_width, blobs_);
     {
       std::lock_guard<std::mutex> lock(recent_mutex_);
       recent_[frame.frame_id] = event;
@@ -113,18 +115,15 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     {
       std::lock_guard<std::mutex> lock(rig_mutex_);
       if (!rig_) return;
+      // Before any map is built or pixel decoded.
+      RequireFrameSize(frame, cv::Size(rig_->left.image_width, rig_->left.image_height), "the calibration");
       if (!rect_) rect_ = std::make_shared<const Rectification>(ShownRectification(*rig_, options_.max_width));
       rect = rect_;
     }
-    const cv::Mat left = ImageToMat(frame.left), right = ImageToMat(frame.right);
-    if (left.size() != rect->input_size || right.size() != rect->input_size)
-      throw std::invalid_argument("frame " + std::to_string(frame.frame_id) + " is " +
-                                  std::to_string(left.cols) + "x" + std::to_string(left.rows) +
-                                  ", the calibration's images " + std::to_string(rect->input_size.width) +
-                                  "x" + std::to_string(rect->input_size.height));
+    const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
     cv::Mat left_rect, right_rect;
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
-    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width));
+    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width, blobs_));
   });
 }
 
@@ -161,14 +160,8 @@ void ViewNode::PublishView() {
 
 template <class Msg>
 void ViewNode::SubscribeSampled(const char* channel, int64_t& last_us, NewestFirst<Msg>& stage) {
-  process_.Subscribe<Msg>(
-      channel,
-      [this, channel, &last_us, &stage](const Msg& msg) {
-        if (Due(last_us))
-          stage.Offer(msg);
-        else
-          process_.Counters(channel).skipped++;
-      },
+  process_.SubscribeSampled<Msg>(
+      channel, [this, &last_us] { return Due(last_us); }, [&stage](Msg& msg) { stage.Offer(std::move(msg)); },
       2);  // LCM's queue holds two big messages at most: the stage takes the newest
 }
 

@@ -13,9 +13,10 @@
 //
 // The images, disparities and clouds are turned into events on threads of
 // their own (runtime/newest_first.h), so the input thread only hands them
-// over: one that arrives within 1 / image_hz of the last shown, or is
-// replaced by a newer one before its thread took it, is counted as skipped
-// on its channel. From a file:// log everything runs in line.
+// over: one that arrives within 1 / image_hz of the last shown (live, not
+// even decoded: Process::SubscribeSampled), or is replaced by a newer one
+// before its thread took it, is counted as skipped on its channel. From a
+// file:// log everything runs in line.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file); sent signed, and only with the rig key.
@@ -31,7 +32,9 @@
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
+#include "view/blob_store.h"
 #include "view/event_hub.h"
+#include "view/page_events.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -55,7 +58,7 @@ Rectification ShownRectification(const StereoRig& rig, int max_width);
 
 class ViewNode {
  public:
-  ViewNode(Process& process, EventHub& hub, ViewOptions options);
+  ViewNode(Process& process, EventHub& hub, BlobStore& blobs, ViewOptions options);
   ~ViewNode();
 
   // The calibration the depth view rectifies with until a STEREO_CALIBRATION comes.
@@ -69,7 +72,7 @@ class ViewNode {
   std::string Command(const std::string& command);
 
  private:
-  static constexpr size_t kRecentFrames = 64;  // 21 s at 3 Hz: a slow detector's latency
+  static constexpr size_t kRecentFrames = kFramesKept;  // view/page_events.h
 
   bool Due(int64_t& last_us);
   // Hands a message of `channel` to `stage` when at least 1 / image_hz has
@@ -82,6 +85,7 @@ class ViewNode {
 
   Process& process_;
   EventHub& hub_;
+  BlobStore& blobs_;
   ViewOptions options_;
   StatusBoard board_;
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;

@@ -14,6 +14,7 @@
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"
 #include "runtime/process_cli.h"
+#include "runtime/stop_request.h"
 
 namespace {
 
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
                  "With --images: chessboard:COLSxROWS:SQUARE or charuco:COLSxROWS:SQUARE:MARKER:DICT "
                  "(inner corners, metres), as stereo-detect's");
   app.add_flag("--mono", mono, "With --images: every image of the folder alone, a one-camera rig");
-  std::vector<std::string> models = ws::ModelKinds();
+  std::vector<std::string> models = ws::ModelNames();
   models.push_back("all");
   app.add_option("--model", model,
                  "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "
@@ -99,9 +100,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   app.add_option("--nonradial", nonradial,
-                 "The lens model's non-radial part, a smooth 2-D field over the image: auto "
-                 "(grids of 4 to 16 control points across tried; the one of the lowest held-out RMS "
-                 "kept where it beats none beyond the fold-to-fold noise), none, or COLSxROWS")
+                 "The lens model's non-radial part, a sensor tilt (OpenCV's tauX, tauY) and a "
+                 "smooth 2-D field over the image: auto (the tilt kept where it lowers the "
+                 "held-out RMS beyond the fold-to-fold noise, then grids of 4 to 16 control points "
+                 "across tried; the one of the lowest held-out RMS kept where it beats none beyond "
+                 "that noise), none, tilt, COLSxROWS or tilt+COLSxROWS")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
@@ -132,7 +135,8 @@ int main(int argc, char** argv) {
                  "The rig's name in the figures' titles (default: the --out file's name)");
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
-                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back); 'none' for none. Default: "
+                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back; a damaged one is kept as "
+                 "NAME-damaged-<UTC time>.lcmlog and its intact views recovered); 'none' for none. Default: "
                  "LOG_DIR/stereo-calibrate-views.lcmlog live, none when replaying a log");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 
@@ -185,9 +189,13 @@ int main(int argc, char** argv) {
     ws::Process process(options);
     if (finder) {
       const std::string corners = ws::LcmFileUrlPath(options.in_url);
-      const auto found = ws::calib::DetectFolder(images, mono, *finder,
-                                                 std::max(1, int(std::thread::hardware_concurrency())),
-                                                 corners, process.log());
+      ws::calib::FolderCorners found;
+      try {
+        found = ws::calib::DetectFolder(images, mono, *finder, std::max(1, int(std::thread::hardware_concurrency())),
+                                        corners, process.log());
+      } catch (const ws::Stopped&) {
+        return process.Finish();  // SIGTERM or Ctrl-C: nothing solved, nothing written
+      }
       node.frame_names = found.names;
       process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
                          corners + "?speed=0' --once)");

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "detect/corner_stage.h"
+#include "runtime/max_image_pixels_option.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"
 
@@ -34,11 +35,13 @@ int main(int argc, char** argv) {
                  "and counted (replaying a log, the input waits). More workers than this stay idle")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  int64_t max_image_pixels;
+  ws::AddMaxImagePixelsOption(app, max_image_pixels);
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 
   try {
     const ws::StereoCornerFinder finder(ws::ParseBoardSpec(board),
-                                        ws::ParseChessboardMethod(chessboard_detector));
+                                        ws::ParseChessboardMethod(chessboard_detector), max_image_pixels);
     ws::Process process(cli.options());
     process.log().Info("board " + board + ", chessboard detector " + chessboard_detector + ", " +
                        std::to_string(workers) + " workers, at most " + std::to_string(max_in_flight) +

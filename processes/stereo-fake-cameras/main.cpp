@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/fake_stereo_cameras.h"
+#include "fake_cameras/fake_stereo_cameras.h"
 #include "capture/gige_address.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"

@@ -53,12 +53,12 @@ plot::Series DesignData(const LensTable& table) {
 }  // namespace
 
 std::string DisplayName(const Distortion& distortion) {
-  if (distortion.kind == "bspline")
+  const ModelTraits& traits = Traits(distortion.kind);
+  if (distortion.kind == ModelKind::kBspline)
     return distortion.degree == 3 ? "cubic B-spline"
                                   : "degree-" + std::to_string(distortion.degree) + " B-spline";
-  if (distortion.kind.rfind("poly", 0) == 0)
-    return distortion.kind.substr(4) + "th-degree polynomial";
-  return distortion.kind;
+  if (!traits.spline && !traits.angle) return std::to_string(2 * traits.terms) + "th-degree polynomial";
+  return traits.name;
 }
 
 plot::Figure FitFigure(const std::string& title, const LensTable& table,

@@ -34,7 +34,7 @@ struct Options {
 // The B-spline by collocation, the polynomials by least squares.
 std::vector<ModelFit> FitModels(const LensTable& table, int degree) {
   std::vector<Distortion> fits{FitBsplineByCollocation(table, degree)};
-  for (const char* kind : {"poly6", "poly12"})
+  for (const ModelKind kind : {ModelKind::kPoly6, ModelKind::kPoly12})
     fits.push_back(FitByLeastSquares(MakeModel(Distortion{kind, 0, {}, {}}, Coefficients::kAll), table));
   std::vector<ModelFit> results;
   for (const Distortion& fit : fits) results.push_back({fit, MeasureFitErrors(fit, table)});
@@ -47,7 +47,7 @@ void PrintTable(const Options& options, const LensTable& table, const std::vecto
   std::printf("%-8s %7s %15s %15s %23s\n", "model", "coeffs", "rms error", "max error",
               "max error between rows");
   for (const ModelFit& fit : fits)
-    std::printf("%-8s %7zu %12.3e %-2s %12.3e %-2s %20.3e %-2s\n", fit.distortion.kind.c_str(),
+    std::printf("%-8s %7zu %12.3e %-2s %12.3e %-2s %20.3e %-2s\n", ModelName(fit.distortion.kind).c_str(),
                 fit.distortion.coeffs.size(), fit.errors.rms, options.unit.c_str(),
                 fit.errors.max_abs, options.unit.c_str(), fit.errors.max_abs_between,
                 options.unit.c_str());
@@ -56,7 +56,7 @@ void PrintTable(const Options& options, const LensTable& table, const std::vecto
 void WriteReport(const Options& options, const LensTable& table, const std::vector<ModelFit>& fits) {
   nlohmann::ordered_json models = nlohmann::ordered_json::array();
   for (const ModelFit& fit : fits)
-    models.push_back({{"name", fit.distortion.kind},
+    models.push_back({{"name", ModelName(fit.distortion.kind)},
                       {"rms_error", fit.errors.rms},
                       {"max_abs_error", fit.errors.max_abs},
                       {"max_abs_error_between", fit.errors.max_abs_between},

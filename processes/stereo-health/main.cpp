@@ -6,6 +6,7 @@
 
 #include "health/health_node.h"
 #include "rectify/rectify_options.h"
+#include "runtime/max_image_pixels_option.h"
 #include "runtime/output_folder.h"
 #include "runtime/process_cli.h"
 
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
                  "Calibration file (stereo-calibrate --out) to start with; a STEREO_CALIBRATION replaces it")
       ->check(CLI::ExistingFile);
   ws::AddRectifyOptions(app, c.rectify);  // as stereo-match's
+  ws::AddMaxImagePixelsOption(app, c.max_image_pixels);
   app.add_option("--period", c.period_s, "Seconds of message time between checked frames (0: every frame)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     options.batch = true;  // files in: without --out-url, a log file out
     ws::Process process(options);
     for (int v = 0; v < data.size(); ++v) {
-      widestereo::stereo_corners_t msg;
+      widestereo::stereo_corners_t msg{};
       msg.frame_id = v;
       msg.utime = int64_t(v) * 100000;  // 10 views a second of message time
       msg.left = ws::calib::ToCornersMessage(data.left.views[v], board_id, data.left.image_width,

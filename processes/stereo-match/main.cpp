@@ -6,6 +6,7 @@
 #include "lcm_io/channels.h"
 #include "match/match_node.h"
 #include "rectify/rectify_options.h"
+#include "runtime/max_image_pixels_option.h"
 #include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
                "Match the whole rectified image, not only the box where both rectified images hold "
                "image (the common field) grown by the matcher's reach (for comparisons)");
   ws::AddRectifyOptions(app, config.rectify);
+  ws::AddMaxImagePixelsOption(app, config.max_image_pixels);
   std::string rectification = "auto";
   app.add_option("--rectification", rectification,
                  "pinhole, latlon (rows are epipolar planes, columns angles: fields to 180 degrees "

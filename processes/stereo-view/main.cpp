@@ -3,7 +3,11 @@
 // residual and uncertainty maps and the model table, the hint, the command
 // buttons) and the depth view (the rectified pair, the disparity in metres,
 // the filtered cloud in 3-D, the plane, the health, every process's rates).
+#include <sys/resource.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include "page_server.h"
@@ -44,14 +48,24 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   app.add_option("--three-dir", three_dir, "Folder of three.js (Debian's libjs-three)")->capture_default_str();
+  int niceness = 10;
+  app.add_option("--nice", niceness,
+                 "Scheduling niceness (0 to 19): the page is for people, the depth chain steers the robot, so "
+                 "stereo-view yields the CPU to it")
+      ->check(CLI::Range(0, 19))
+      ->capture_default_str();
   if (auto rc = cli.Parse(argc, argv)) return *rc;
+  // Before any thread starts: Linux keeps niceness per thread, and new threads inherit it.
+  if (setpriority(PRIO_PROCESS, 0, niceness) != 0)
+    std::fprintf(stderr, "stereo-view: warning: cannot set niceness %d: %s\n", niceness, std::strerror(errno));
 
   try {
     ws::Process process(cli.options());
     ws::view::EventHub hub;
-    ws::view::ViewNode node(process, hub, options);
+    ws::view::BlobStore blobs;
+    ws::view::ViewNode node(process, hub, blobs, options);
     if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
-    ws::view::PageServer server(process, hub, node, address, port, three_dir);
+    ws::view::PageServer server(process, hub, blobs, node, address, port, three_dir);
     if (!cli.options().quiet)
       std::printf("stereo-view: open http://%s:%d/\n", address == "0.0.0.0" ? "localhost" : address.c_str(), server.port()),
           std::fflush(stdout);

@@ -1,5 +1,7 @@
 #include "page_server.h"
 
+#include <sys/socket.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -23,15 +25,30 @@ std::string ReadFile(const std::string& path) {
 
 }  // namespace
 
-PageServer::PageServer(Process& process, EventHub& hub, ViewNode& node, const std::string& address, int port,
-                       const std::string& three_dir)
+PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, ViewNode& node,
+                       const std::string& address, int port, const std::string& three_dir)
     : process_(process),
       hub_(hub),
+      blobs_(blobs),
       node_(node),
-      three_js_(ReadFile(three_dir + "/build/three.min.js")),
-      orbit_controls_js_(ReadFile(three_dir + "/examples/js/controls/OrbitControls.js")),
+      assets_{{"/", {kIndexHtml, "text/html; charset=utf-8"}},
+              {"/view.js", {kViewJs, "text/javascript"}},
+              {"/view.css", {kViewCss, "text/css"}},
+              {"/three.min.js", {ReadFile(three_dir + "/build/three.min.js"), "text/javascript"}},
+              {"/OrbitControls.js",
+               {ReadFile(three_dir + "/examples/js/controls/OrbitControls.js"), "text/javascript"}}},
       server_(std::make_unique<httplib::Server>()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kMaxStreams + 8); };
+  server_->set_socket_options([](int sock) {
+    // Not httplib's SO_REUSEPORT: a second server on this port is refused,
+    // not handed half the browsers.
+    const int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    // A small send buffer (kept by every accepted socket): what a slow browser
+    // has not read stays here, not in the kernel, so it gets the newest events
+    // and not a backlog, and a stalled one is found (the write times out).
+    setsockopt(sock, SOL_SOCKET, SO_SNDBUF, &kSendBufferBytes, sizeof kSendBufferBytes);
+  });
   Routes();
   port_ = port == 0 ? server_->bind_to_any_port(address) : server_->bind_to_port(address, port) ? port : -1;
   if (port_ <= 0)
@@ -48,17 +65,19 @@ PageServer::~PageServer() {
 }
 
 void PageServer::Routes() {
-  auto serve = [this](const char* path, const std::string& body, const char* type) {
-    server_->Get(path, [&body, type](const httplib::Request&, httplib::Response& res) {
-      res.set_content(body, type);
-    });
-  };
-  static const std::string index_html = kIndexHtml, view_js = kViewJs, view_css = kViewCss;
-  serve("/", index_html, "text/html; charset=utf-8");
-  serve("/view.js", view_js, "text/javascript");
-  serve("/view.css", view_css, "text/css");
-  serve("/three.min.js", three_js_, "text/javascript");
-  serve("/OrbitControls.js", orbit_controls_js_, "text/javascript");
+  for (const auto& [path, asset] : assets_)
+    server_->Get(path, [&asset = asset](const httplib::Request& req, httplib::Response& res) { asset.Serve(req, res); });
+
+  // The id is at most 18 digits, so it always fits an int64.
+  server_->Get(R"(/blob/(\d{1,18}))", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto blob = blobs_.Get(std::stoll(req.matches[1].str()));
+    if (!blob) {
+      res.status = 404;
+      return res.set_content("no longer kept: the page shows the next one", "text/plain");
+    }
+    res.set_header("Cache-Control", "private, max-age=60, immutable");  // a blob never changes
+    res.set_content(reinterpret_cast<const char*>(blob->bytes.data()), blob->bytes.size(), blob->content_type.c_str());
+  });
 
   server_->Get("/events", [this](const httplib::Request&, httplib::Response& res) {
     if (++streams_ > kMaxStreams) {

@@ -4,6 +4,8 @@
 //
 //   GET  /                 the page            GET /events   the event stream
 //   GET  /view.js, /view.css, /three.min.js, /OrbitControls.js
+//   GET  /blob/ID          an image or a cloud an event names (view/blob_store.h);
+//                          404 once forgotten
 //   POST /command          {"command": "solve"}: 403 with the reason when
 //                          refused (no rig key), 400 for anything else
 //
@@ -17,8 +19,12 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "runtime/process.h"
+#include "static_asset.h"
+#include "view/blob_store.h"
 #include "view/event_hub.h"
 #include "view/view_node.h"
 
@@ -31,12 +37,13 @@ namespace ws::view {
 class PageServer {
  public:
   static constexpr int kMaxStreams = 8;
+  static constexpr int kSendBufferBytes = 32 * 1024;  // the kernel doubles it
 
   // Reads three.js (throws naming the package when it is missing) and binds
   // to address:port, any free port for 0 (throws when it cannot); serves
   // from a thread of its own.
-  PageServer(Process& process, EventHub& hub, ViewNode& node, const std::string& address, int port,
-             const std::string& three_dir);
+  PageServer(Process& process, EventHub& hub, const BlobStore& blobs, ViewNode& node, const std::string& address,
+             int port, const std::string& three_dir);
   // Closes the streams and stops serving.
   ~PageServer();
   int port() const { return port_; }
@@ -46,8 +53,9 @@ class PageServer {
 
   Process& process_;
   EventHub& hub_;
+  const BlobStore& blobs_;
   ViewNode& node_;
-  std::string three_js_, orbit_controls_js_;
+  std::vector<std::pair<std::string, StaticAsset>> assets_;  // path, file
   std::unique_ptr<httplib::Server> server_;
   int port_ = 0;
   std::atomic<int> streams_{0};

@@ -152,7 +152,7 @@ void ExpectCamerasMatchTruth(const SyntheticRigOptions& truth, const SyntheticRi
         "%s %s: rms %.4f px (truth %.4f), projection error in the observed field %.4f px "
         "(%.4f px without the best rotation of %.1e rad), %d of %zu views, largest observed "
         "radius %.3f\n",
-        result.model.c_str(), camera.name.c_str(), camera.rms_px, floor, error.turned_px,
+        ModelName(result.model).c_str(), camera.name.c_str(), camera.rms_px, floor, error.turned_px,
         error.direct_px, error.rotation_rad, camera.views, data[c]->views.size(),
         camera.max_observed_radius);
     EXPECT_NEAR(camera.rms_px, floor, 0.1 * floor) << camera.name;

@@ -25,7 +25,7 @@ Solved Calibrate(const std::array<double, 2>& bow, bool estimate) {
   truth.board_warp = bow;
   const SyntheticRig rig = MakeSyntheticRig(truth);
   CalibrationOptions options;
-  options.model = "poly6";
+  options.model = ws::ModelKind::kPoly6;
   options.board_warp = estimate ? WarpRule::kEstimated : WarpRule::kFlat;
   return {CalibrateStereo(rig.data, options), truth.noise_px * std::sqrt(2.0)};
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 #include <cmath>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
@@ -23,18 +24,30 @@ using namespace ws::calib;
 // A kb4 fisheye: cv::fisheye's model, no tangential terms.
 CameraModel Kb4TestCamera(int variant) {
   CameraModel camera = FisheyeTestCamera(variant);
-  camera.distortion = Distortion{"kb4", 0, {}, {-0.021 - 0.001 * variant, 0.0043, -0.0029, 4.2e-4}};
+  camera.distortion = Distortion{ModelKind::kKb4, 0, {}, {-0.021 - 0.001 * variant, 0.0043, -0.0029, 4.2e-4}};
   return camera;
 }
 
-CameraModel SampleCamera(const std::string& model, int variant) {
-  if (model == "bspline") return MustacheTestCamera(variant);
-  if (model == "bspline_theta") return FisheyeTestCamera(variant);
-  if (model == "kb4") return Kb4TestCamera(variant);
+// The barrel lens's poly6 curve as poly12 (k4 = k5 = k6 = 0).
+CameraModel Poly12TestCamera(int variant) {
+  CameraModel camera = BarrelTestCamera(variant);
+  camera.distortion.kind = ModelKind::kPoly12;
+  camera.distortion.coeffs.resize(6, 0.0);
+  return camera;
+}
+
+CameraModel SampleCamera(ModelKind model, int variant) {
+  switch (model) {
+    case ModelKind::kBspline: return MustacheTestCamera(variant);
+    case ModelKind::kBsplineTheta: return FisheyeTestCamera(variant);
+    case ModelKind::kKb4: return Kb4TestCamera(variant);
+    case ModelKind::kPoly12: return Poly12TestCamera(variant);
+    case ModelKind::kPoly6: break;
+  }
   return BarrelTestCamera(variant);
 }
 
-CalibrationFile SampleFile(const std::string& model) {
+CalibrationFile SampleFile(ModelKind model) {
   CalibrationFile f;
   f.model = model;
   f.left = SampleCamera(model, 0);
@@ -64,13 +77,14 @@ void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.nonradial.rows, b.nonradial.rows);
   EXPECT_EQ(a.nonradial.domain, b.nonradial.domain);
   EXPECT_EQ(a.nonradial.coeffs, b.nonradial.coeffs);
+  EXPECT_EQ(a.nonradial.tilt, b.nonradial.tilt);
 }
 
 TEST(CalibFile, EveryModelReadsBackBitForBit) {
   const std::string dir = test::TempDir("calib-file-roundtrip");
-  for (const std::string model : {"bspline", "poly6", "kb4", "bspline_theta"}) {
+  for (const ModelKind model : ModelKinds()) {
     const CalibrationFile written = SampleFile(model);
-    const std::string path = dir + "/" + model + ".yaml";
+    const std::string path = dir + "/" + ModelName(model) + ".yaml";
     WriteCalibrationFile(path, written);
     const CalibrationFile read = ReadCalibrationFile(path);
     EXPECT_EQ(read.model, model);
@@ -88,7 +102,7 @@ TEST(CalibFile, EveryModelReadsBackBitForBit) {
 // A camera with a non-radial field (models/nonradial_field.h) keeps it.
 TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
   const std::string path = test::TempDir("calib-file-field") + "/field.yaml";
-  CalibrationFile written = SampleFile("bspline_theta");
+  CalibrationFile written = SampleFile(ModelKind::kBsplineTheta);
   written.left.nonradial = {5, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(40)};
   for (size_t k = 0; k < 40; ++k) written.left.nonradial.coeffs[k] = 1e-3 * std::sin(0.3 * k);
   WriteCalibrationFile(path, written);
@@ -101,27 +115,49 @@ TEST(CalibFile, ANonRadialFieldReadsBackBitForBit) {
   EXPECT_EQ(*a.Project(ray), *b.Project(ray));
 }
 
+// A sensor tilt (models/sensor_tilt.h) alone, and with a field, reads back.
+TEST(CalibFile, ASensorTiltReadsBackBitForBit) {
+  const std::string path = test::TempDir("calib-file-tilt") + "/tilt.yaml";
+  CalibrationFile written = SampleFile(ModelKind::kKb4);
+  written.left.nonradial.tilt = {0.0123, -0.00456};
+  written.right.nonradial = {4, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(32, 1e-3), {-0.002, 0.003}};
+  WriteCalibrationFile(path, written);
+  const CalibrationFile read = ReadCalibrationFile(path);
+  ExpectSameCamera(read.left, written.left);
+  ExpectSameCamera(read.right, written.right);
+  EXPECT_EQ(read.left.nonradial.cols, 0);
+}
+
 // The report calls a model's coefficients what the calibration file does
-// (models/model_registry.h, CoefficientKey).
+// (models/model_kind.h, coeff_key), and holds the same numbers under it.
 TEST(CalibFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
   const std::string dir = test::TempDir("calib-file-keys");
-  for (const std::string& model : ModelKinds()) {
+  std::set<std::string> keys;
+  for (const ModelKind model : ModelKinds()) keys.insert(Traits(model).coeff_key);
+  for (const ModelKind model : ModelKinds()) {
     const CalibrationFile written = SampleFile(model);
-    WriteCalibrationFile(dir + "/" + model + ".yaml", written);
-    cv::FileStorage fs(dir + "/" + model + ".yaml", cv::FileStorage::READ);
+    const std::string path = dir + "/" + ModelName(model) + ".yaml";
+    WriteCalibrationFile(path, written);
+    cv::FileStorage fs(path, cv::FileStorage::READ);
     CameraCalibration camera;
     camera.name = "left";
     camera.model = written.left;
     const Json report = CameraReport(camera);
-    for (const std::string key : {"alpha", "k"})
+    EXPECT_EQ(report["model"], static_cast<std::string>(fs["left"]["model"])) << model;
+    for (const std::string& key : keys)
       EXPECT_EQ(!fs["left"][key].empty(), report.contains(key)) << model << ": " << key;
-    EXPECT_TRUE(report.contains(CoefficientKey(model))) << model;
+    const std::string key = Traits(model).coeff_key;
+    ASSERT_TRUE(report.contains(key)) << model;
+    std::vector<double> in_file;
+    fs["left"][key] >> in_file;
+    EXPECT_EQ(report[key].get<std::vector<double>>(), in_file) << model;
+    EXPECT_EQ(in_file, written.left.distortion.coeffs) << model;
   }
 }
 
 TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
   const std::string path = test::TempDir("calib-file-opencv") + "/calib.yaml";
-  const CalibrationFile f = SampleFile("bspline");
+  const CalibrationFile f = SampleFile(ModelKind::kBspline);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -145,7 +181,7 @@ TEST(CalibFile, OpenCvReadsTheMatricesDirectly) {
 // the file's model does, rays beyond OpenCV's 90 degrees aside.
 TEST(CalibFile, Kb4LoadsIntoOpenCvFisheye) {
   const std::string path = test::TempDir("calib-file-kb4") + "/kb4.yaml";
-  const CalibrationFile f = SampleFile("kb4");
+  const CalibrationFile f = SampleFile(ModelKind::kKb4);
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
@@ -171,7 +207,7 @@ struct Damage {
 TEST(CalibFile, EachDamagedFieldIsNamed) {
   const std::string dir = test::TempDir("calib-file-damage");
   const std::string good = dir + "/good.yaml";
-  WriteCalibrationFile(good, SampleFile("bspline"));
+  WriteCalibrationFile(good, SampleFile(ModelKind::kBspline));
   const std::string text = test::ReadFileText(good);
   ASSERT_NO_THROW(ReadCalibrationFile(good));
   std::vector<Damage> damages = {
@@ -219,7 +255,7 @@ TEST(CalibFile, EachDamagedFieldIsNamed) {
 
 TEST(CalibFile, RejectsARotationThatIsNot) {
   const std::string path = test::TempDir("calib-file-rotation") + "/calib.yaml";
-  CalibrationFile f = SampleFile("poly6");
+  CalibrationFile f = SampleFile(ModelKind::kPoly6);
   f.R(0, 0) *= 1.01;
   WriteCalibrationFile(path, f);
   try {

@@ -14,7 +14,7 @@ using namespace ws;
 using namespace ws::calib;
 using namespace ws::calib::test;
 
-CalibrationOptions WithModel(const std::string& model) {
+CalibrationOptions WithModel(ws::ModelKind model) {
   CalibrationOptions options;
   options.model = model;
   // The knee (4.6 degrees wide) needs finer knots than the default 13 over
@@ -29,7 +29,7 @@ CalibrationOptions WithModel(const std::string& model) {
 TEST(CalibFisheye, BsplineThetaMatchesTheTruthBeyond90Degrees) {
   const SyntheticRigOptions truth = FisheyeRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
-  const StereoCalibration result = CalibrateStereo(rig.data, WithModel("bspline_theta"));
+  const StereoCalibration result = CalibrateStereo(rig.data, WithModel(ws::ModelKind::kBsplineTheta));
   ExpectCamerasMatchTruth(truth, rig, result);  // the radius is theta, in radians
   for (const CameraCalibration* camera : {&result.left, &result.right}) {
     EXPECT_GT(camera->max_observed_radius, M_PI / 2) << "corners beyond 90 degrees were used";
@@ -44,7 +44,7 @@ TEST(CalibFisheye, BsplineThetaMatchesTheTruthBeyond90Degrees) {
 TEST(CalibFisheye, Kb4StartsOnTheSameViewsButCannotFollowTheKnee) {
   const SyntheticRigOptions truth = FisheyeRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
-  const StereoCalibration kb4 = CalibrateStereo(rig.data, WithModel("kb4"));
+  const StereoCalibration kb4 = CalibrateStereo(rig.data, WithModel(ws::ModelKind::kKb4));
   const double floor = TruthRms(truth, rig, 0);
   const ProjectionError error = MaxProjectionError(truth.left, kb4.left.model, rig.data.left);
   std::printf("kb4 left: rms %.4f px (truth %.4f), projection error %.4f px, %d views\n",

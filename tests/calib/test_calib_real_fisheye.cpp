@@ -110,7 +110,7 @@ TEST_F(RealFisheyeStereo, AngleModelsUseEveryViewAndBsplineThetaFitsNoWorseThanC
 // rejection and a flat board, so that every corner counts as it is.
 CameraCalibration FitKb4(const CameraData& data) {
   CalibrationOptions options;
-  options.model = "kb4";
+  options.model = ModelKind::kKb4;
   options.outliers = ws::calib::OutlierRule::kOff;
   options.board_warp = ws::calib::WarpRule::kFlat;
   options.nonradial = ws::calib::FieldRule::kNone;
@@ -194,7 +194,7 @@ TEST(RealBabelCalib, TrainTestProtocolWithTheDefaultsNoWorseThanMrcal) {
   const HeldOutFit held_out = FitHeldOutViews(chosen.model, test, 6, chosen.board_warp);
   std::printf("babelcalib ov_plane (BabelCalib's protocol), defaults: %s, field %d x %d, train %.4f px "
               "(%d views, %d outliers), test %.4f px (%d views)\n",
-              Chosen(all).model.c_str(), chosen.model.nonradial.cols, chosen.model.nonradial.rows,
+              ModelName(Chosen(all).model).c_str(), chosen.model.nonradial.cols, chosen.model.nonradial.rows,
               chosen.rms_px, chosen.views, chosen.outliers, held_out.rms_px, held_out.views);
   EXPECT_EQ(chosen.views, 18);
   EXPECT_EQ(held_out.views, 7);
@@ -226,7 +226,7 @@ TEST(RealBabelCalib, ImportedCornersCalibrateAsAOneCameraRig) {
   EXPECT_FALSE(report.contains("stereo"));
   const CalibrationFile file = ReadCalibrationFile(dir + "/mono.yaml");
   EXPECT_TRUE(file.mono);
-  EXPECT_EQ(file.left.distortion.kind, "bspline_theta");
+  EXPECT_EQ(file.left.distortion.kind, ModelKind::kBsplineTheta);
   EXPECT_EQ(file.left.image_width, 1280);
 }
 

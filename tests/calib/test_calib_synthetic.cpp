@@ -49,7 +49,7 @@ TEST(CalibSynthetic, MustacheTableIIPolynomialsCannotFollow) {
   const SyntheticRigOptions truth = MustacheRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
   const auto results =
-      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6", "poly12"}).solved;
+      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {ModelKind::kBspline, ModelKind::kPoly6, ModelKind::kPoly12}).solved;
   std::vector<TableRow> rows = TableRows(results);
   TableRow truth_row;
   truth_row.model = "truth (true model, poses)";
@@ -67,7 +67,7 @@ TEST(CalibSynthetic, BarrelLensBothModelsReachTheNoiseFloor) {
   const SyntheticRigOptions truth = BarrelRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
   const auto results =
-      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {"bspline", "poly6"}).solved;
+      CalibrateStereoAllModels(rig.data, CalibrationOptions(), {ModelKind::kBspline, ModelKind::kPoly6}).solved;
   std::vector<TableRow> rows = TableRows(results);
   TableRow truth_row;
   truth_row.model = "truth (true model, poses)";
@@ -83,7 +83,7 @@ TEST(CalibSynthetic, BarrelLensBothModelsReachTheNoiseFloor) {
       const ProjectionError error = MaxProjectionError(
           c == 0 ? truth.left : truth.right, camera.model, c == 0 ? rig.data.left : rig.data.right);
       std::printf("%s %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
-                  result.model.c_str(), camera.name.c_str(), error.turned_px, error.direct_px);
+                  ModelName(result.model).c_str(), camera.name.c_str(), error.turned_px, error.direct_px);
     }
     EXPECT_LE(std::abs(result.T.norm() / truth.T.norm() - 1), 0.001) << result.model;
     ExpectExtrinsicWithin(truth, result, 3.0);
@@ -97,7 +97,7 @@ TEST(CalibSynthetic, PaperFlowKeepsEachCamerasOwnSolution) {
   const SyntheticRigOptions truth = BarrelRig();
   const SyntheticRig rig = MakeSyntheticRig(truth);
   CalibrationOptions options;
-  options.model = "poly6";
+  options.model = ModelKind::kPoly6;
   options.flow = StereoFlow::kPaper;
   const StereoCalibration paper = CalibrateStereo(rig.data, options);
   const CameraCalibration left_alone = CalibrateCamera(rig.data.left, options);

@@ -196,7 +196,7 @@ TEST_F(FirstMistakes, AnImageWithoutItsPairIsNamedAndLeftOut) {
   const std::string images = TempDir("images-unpaired");
   for (const auto& entry : fs::directory_iterator(images_))
     if (entry.path().filename() != "right14.jpg") fs::copy_symlink(entry.path(), images + "/" + entry.path().filename().string());
-  const CommandResult r = CalibrateImages(images, images + "/c.yaml", {"--model", "poly6"});
+  const CommandResult r = CalibrateImages(images, images + "/c.yaml", {"--model", "poly6", "--nonradial", "none"});
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("left14.jpg has no partner image: left out"), std::string::npos) << r.output;
 }
@@ -216,9 +216,11 @@ TEST_F(FirstMistakes, OptionValuesThatDoNotParseSayWhatTheyTake) {
 }
 
 TEST_F(FirstMistakes, ACalibrationFileCutShortSaysSo) {
-  ASSERT_EQ(CalibrateImages(images_, dir_ + "/whole.yaml", {"--model", "poly6"}).exit_code, 0);
+  // Any calibration file will do: the quickest solve.
+  ASSERT_EQ(CalibrateImages(images_, dir_ + "/whole.yaml", {"--model", "poly6", "--nonradial", "none"}).exit_code, 0);
   const std::string text = ReadFileText(dir_ + "/whole.yaml");
   for (size_t length : {text.size() / 3, text.size() * 2 / 3, text.size() - 10}) {
+    while (text[length - 1] == '\n') --length;  // cut mid-line, as a write stopped part-way leaves it
     std::ofstream(dir_ + "/cut.yaml", std::ios::trunc) << text.substr(0, length);
     ExpectRefused(RunCommand({"stereo-compare", dir_ + "/cut.yaml", dir_ + "/whole.yaml"}),
                   {dir_ + "/cut.yaml", "the file ends mid-line: it was cut short"});

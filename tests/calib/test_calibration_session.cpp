@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -20,7 +21,7 @@ using namespace ws::calib;
 using namespace ws::calib::test;
 
 widestereo::stereo_corners_t Message(const SyntheticRig& rig, int v, const std::string& board) {
-  widestereo::stereo_corners_t msg;
+  widestereo::stereo_corners_t msg{};
   msg.utime = 1000 * v;
   msg.frame_id = v;
   msg.left = ToCornersMessage(rig.data.left.views[v], board, 1280, 960);
@@ -108,17 +109,52 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
     std::ofstream(state, std::ios::app | std::ios::binary)
         << std::string("\xED\xA1\xDA\x01partial", 11);
   }
+  const std::string damaged = ws::test::ReadFileText(state);
   {
     CalibrationSession session(options);
     EXPECT_EQ(session.Restore(), 5);
+    // Kept, never truncated: the damaged file is archived with its bytes.
+    const std::string damage = session.StateDamage();
+    const size_t quote = damage.find("kept as '") + 9;
+    const std::string archive = damage.substr(quote, damage.find('\'', quote) - quote);
+    EXPECT_NE(archive.find("/views-damaged-"), std::string::npos) << damage;
+    EXPECT_EQ(ws::test::ReadFileText(archive), damaged);
+    EXPECT_NE(damage.find("intact events recovered: 5 (5 views restored); events lost: 1 (11 of " +
+                          std::to_string(damaged.size()) + " bytes)"),
+              std::string::npos)
+        << damage;
     EXPECT_EQ(session.Add(Message(rig, 2, board)), CalibrationSession::Outcome::kDuplicate);
     EXPECT_EQ(session.Add(Message(rig, 5, board)), CalibrationSession::Outcome::kAccepted);
   }
   CalibrationSession session(options);
   EXPECT_EQ(session.Restore(), 6);
+  EXPECT_EQ(session.StateDamage(), "");  // the new state file is intact
   const StereoData data = session.Data();
   ASSERT_EQ(data.size(), 6);
   EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
+}
+
+// A state file with nothing recoverable is archived all the same, never
+// deleted, and the session starts with an empty one.
+TEST_F(CalibSession, AStateFileWithNothingRecoverableIsArchivedNotDeleted) {
+  const std::string dir = ws::test::TempDir("calib-session-garbage");
+  SessionOptions options;
+  options.state_path = dir + "/views.lcmlog";
+  const std::string garbage = "not an LCM log at all";
+  std::ofstream(options.state_path, std::ios::binary) << garbage;
+  CalibrationSession session(options);
+  EXPECT_EQ(session.Restore(), 0);
+  EXPECT_NE(session.StateDamage().find("intact events recovered: 0 (0 views restored); events lost: 1 (21 of 21 bytes)"),
+            std::string::npos)
+      << session.StateDamage();
+  std::vector<std::string> archives;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().rfind("views-damaged-", 0) == 0) archives.push_back(entry.path());
+  ASSERT_EQ(archives.size(), 1u);
+  EXPECT_EQ(ws::test::ReadFileText(archives[0]), garbage);
+  EXPECT_EQ(ws::test::ReadFileText(options.state_path), "");
+  EXPECT_EQ(session.Add(Message(rig, 0, board)), CalibrationSession::Outcome::kAccepted);
+  EXPECT_EQ(CalibrationSession(options).Restore(), 1);
 }
 
 // reset archives the state file under a timestamp (never truncates it) and

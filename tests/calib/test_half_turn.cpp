@@ -34,7 +34,7 @@ TEST(HalfTurn, RenumberedPairsGiveTheSameRig) {
   for (int k = 0; k < 3; ++k) HalfTurn(truth, &turned.data.right.views[half_turned[k]]);
   HalfTurn(truth, &turned.data.left.views[half_turned[3]]);  // the other image of a pair
   CalibrationOptions options;
-  options.model = "poly6";
+  options.model = ws::ModelKind::kPoly6;
   const StereoCalibration expected = CalibrateStereo(rig.data, options);
   const StereoCalibration result = CalibrateStereo(turned.data, options);
   std::printf("half-turned views renumbered: %zu, stereo views %d (as detected: %d), baseline "

@@ -1,18 +1,21 @@
 // stereo-calibrate live over udpm: CALIBRATION_STATUS at least once a second
 // with coverage and a hint, near-duplicate views skipped, the accepted views
 // kept in the state file so that a SIGKILLed process resumes with them, and
-// a 'solve' command answered with STEREO_CALIBRATION.
+// a 'solve' command answered with STEREO_CALIBRATION; a damaged state file
+// kept as an archive and every intact view after the damage recovered.
 #include <gtest/gtest.h>
 #include <signal.h>
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <lcm/lcm-cpp.hpp>
 #include <thread>
 
 #include "calib_test_rigs.h"
 #include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -46,7 +49,9 @@ struct Bus {
     lcm.subscribeFunction(
         ws::channel::kProcessStatus,
         +[](const lcm::ReceiveBuffer*, const std::string&, const widestereo::process_status_t* s, Bus* bus) {
-          if (s->name == "stereo-calibrate") bus->pid = s->pid;
+          if (s->name != "stereo-calibrate") return;
+          bus->pid = s->pid;
+          bus->last_error = s->last_error;
         },
         this);
   }
@@ -57,6 +62,7 @@ struct Bus {
   std::vector<Clock::time_point> status_times;
   std::vector<widestereo::stereo_calibration_t> calibrations;
   int pid = 0;
+  std::string last_error;  // stereo-calibrate's PROCESS_STATUS
 };
 
 // stereo-calibrate on its own thread; a test that fails half way still
@@ -76,6 +82,15 @@ struct Running {
   ws::test::CommandResult result;
 };
 
+widestereo::stereo_corners_t CornersMessage(const SyntheticRig& rig, int v) {
+  widestereo::stereo_corners_t msg{};
+  msg.utime = 1000 * v;
+  msg.frame_id = v;
+  msg.left = ToCornersMessage(rig.data.left.views[v], "chessboard:12x9:0.04", 1280, 960);
+  msg.right = ToCornersMessage(rig.data.right.views[v], "chessboard:12x9:0.04", 1280, 960);
+  return msg;
+}
+
 TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   const std::string dir = ws::test::TempDir("calibrate-live");
   const std::string url = ws::test::UniqueUdpmUrl(5);
@@ -92,11 +107,7 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   ASSERT_TRUE(bus.Until(10, [&] { return bus.pid != 0 && !bus.statuses.empty(); }))
       << "no status from stereo-calibrate";
   for (int v = 0; v < rig.data.size(); ++v) {
-    widestereo::stereo_corners_t msg;
-    msg.utime = 1000 * v;
-    msg.frame_id = v;
-    msg.left = ToCornersMessage(rig.data.left.views[v], "chessboard:12x9:0.04", 1280, 960);
-    msg.right = ToCornersMessage(rig.data.right.views[v], "chessboard:12x9:0.04", 1280, 960);
+    const widestereo::stereo_corners_t msg = CornersMessage(rig, v);
     for (int copy = 0; copy < (v < 3 ? 2 : 1); ++copy) {  // views 0-2 twice: the copies are skipped
       bus.lcm.publish(ws::channel::kStereoCorners, &msg);
       bus.Until(0.02, [] { return false; });
@@ -145,6 +156,76 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/calib.yaml"));
   second.Stop(SIGINT);
   EXPECT_EQ(second.result.exit_code, 0) << "Ctrl-C is a clean stop: " << second.result.output;
+}
+
+// A views file of 30 views with one byte of the 6th event's sync word
+// flipped: stereo-calibrate keeps the file as it was under a name that says
+// it is damaged, restores the 29 intact views (the 25 after the damage too),
+// says so in its log and status, and appends to the recovered file.
+TEST(StereoCalibrateLive, ADamagedViewsFileIsKeptAndEveryIntactViewRecovered) {
+  const std::string dir = ws::test::TempDir("calibrate-damaged-views");
+  const std::string url = ws::test::UniqueUdpmUrl(6);
+  const std::string state = dir + "/views.lcmlog";
+  SyntheticRigOptions options = BarrelRig();
+  options.views = 31;
+  const SyntheticRig rig = MakeSyntheticRig(options);
+  std::vector<ws::test::LogEvent> events;
+  int64_t sixth = 0;
+  for (int v = 0; v < 30; ++v) {
+    events.push_back(ws::test::Event(ws::channel::kStereoCorners, CornersMessage(rig, v)));
+    if (v < 5) sixth += 4 + 8 + 8 + 4 + 4 + int64_t(events.back().channel.size() + events.back().data.size());
+  }
+  ws::test::WriteLog(state, events);
+  {
+    std::fstream file(state, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(sixth);
+    file.put('\x6D');  // 0xED, the sync word's first byte, with its top bit flipped
+  }
+  const std::string damaged = ws::test::ReadFileText(state);
+  const int64_t sixth_bytes = 4 + 8 + 8 + 4 + 4 + int64_t(events[5].channel.size() + events[5].data.size());
+
+  Bus bus(url);
+  ASSERT_TRUE(bus.lcm.good());
+  Running calibrate({"stereo-calibrate", "--in-url", url, "--out-url", url, "--log-dir", dir, "--state", state,
+                     "--model", "poly6"},
+                    &bus);
+  ASSERT_TRUE(bus.Until(10, [&] { return bus.pid != 0 && !bus.statuses.empty(); }))
+      << "no status from stereo-calibrate";
+  EXPECT_EQ(bus.statuses.front().views_left, 29);
+  const std::string said = "was damaged (bad sync word at byte " + std::to_string(sixth) +
+                           ") and is kept as '" + dir + "/views-damaged-";
+  const std::string counted = "intact events recovered: 29 (29 views restored); events lost: 1 (" +
+                              std::to_string(sixth_bytes) + " of " + std::to_string(damaged.size()) + " bytes)";
+  ASSERT_TRUE(bus.Until(5, [&] { return bus.last_error.find(counted) != std::string::npos; }))
+      << "PROCESS_STATUS last_error: " << bus.last_error;
+  EXPECT_NE(bus.last_error.find(said), std::string::npos) << bus.last_error;
+
+  // The archive: the damaged file's bytes, unchanged.
+  std::vector<std::string> archives;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().rfind("views-damaged-", 0) == 0) archives.push_back(entry.path());
+  ASSERT_EQ(archives.size(), 1u);
+  EXPECT_EQ(ws::test::ReadFileText(archives[0]), damaged);
+  EXPECT_NE(bus.last_error.find(archives[0]), std::string::npos) << bus.last_error;
+  const std::string log = ws::test::ReadFileText(dir + "/stereo-calibrate.log");
+  EXPECT_NE(log.find(counted), std::string::npos) << log;
+  EXPECT_NE(log.find(archives[0]), std::string::npos) << log;
+
+  // The session goes on in the recovered file: a new view is appended to it.
+  const widestereo::stereo_corners_t new_view = CornersMessage(rig, 30);
+  bus.lcm.publish(ws::channel::kStereoCorners, &new_view);
+  ASSERT_TRUE(bus.Until(5, [&] { return bus.statuses.back().views_left == 30; }))
+      << "views_left " << bus.statuses.back().views_left;
+  calibrate.Stop(SIGINT);
+  EXPECT_EQ(calibrate.result.exit_code, 0) << calibrate.result.output;
+  const ws::LcmLogScan scan = ws::ScanLcmLog(state);
+  EXPECT_TRUE(scan.complete()) << scan.problem;
+  const auto views = ws::test::Messages<widestereo::stereo_corners_t>(ws::test::ReadLog(state),
+                                                                      ws::channel::kStereoCorners);
+  ASSERT_EQ(views.size(), 30u);
+  EXPECT_EQ(views[4].frame_id, 4);
+  EXPECT_EQ(views[5].frame_id, 6);  // the damaged 6th event is the one lost
+  EXPECT_EQ(views[29].frame_id, 30);
 }
 
 }  // namespace

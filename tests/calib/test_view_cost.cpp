@@ -6,6 +6,7 @@
 // non-radial field.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -97,26 +98,34 @@ INSTANTIATE_TEST_SUITE_P(Models, ViewCostJacobians, ::testing::ValuesIn(TestCame
 
 // Many knots: a corner reads 4 of 31 coefficients, every span is used.
 TEST(ViewCostJacobians, ThirtyOneCoefficientSplineMatchesCentralDifferences) {
-  for (const std::string kind : {"bspline", "bspline_theta"}) {
+  for (const ModelKind kind : {ModelKind::kBspline, ModelKind::kBsplineTheta}) {
     const AnyDistortionModel model = MakeCalibrationModel(kind, CalibrationSetup{1.6, 30, 3});
     std::vector<double> coeffs(31);
     for (size_t i = 0; i < coeffs.size(); ++i) coeffs[i] = 0.02 * std::sin(0.7 * i) - 0.003 * i;
-    CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, kind + " 31");
+    CheckBothWays(model, {350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4}, coeffs, ModelName(kind) + " 31");
   }
 }
 
-// A 7 x 5 field over the board's part of the image on every model: each
-// corner reads 16 of its 70 coefficients, and (x_d, y_d) moves the field.
-TEST_P(ViewCostJacobians, WithANonRadialFieldMatchCentralDifferences) {
+// A 7 x 5 field over the board's part of the image on every model (each
+// corner reads 16 of its 70 coefficients, and (x_d, y_d) moves the field),
+// a sensor tilt (models/sensor_tilt.h: its two angles ride in the Jet) and
+// both (the field reads the tilted point).
+TEST_P(ViewCostJacobians, WithANonRadialPartMatchCentralDifferences) {
   const TestCamera& test = GetParam();
   const auto intrinsics = test.model.Intrinsics();
   const AnyDistortionModel model = MakeModel(test.model.distortion, test.which);
-  std::vector<double> coeffs = std::visit(
+  const std::vector<double> radial = std::visit(
       [&](const auto& m) { return m.EstimatedCoeffs(test.model.distortion.coeffs); }, model);
-  const NonRadialField field(7, 5, {-1.2, 1.2, -0.9, 0.9});
-  for (int k = 0; k < field.NumCoeffs(); ++k) coeffs.push_back(2e-3 * std::sin(1.3 * k));
-  CheckBothWays(model, {intrinsics.begin(), intrinsics.end()}, coeffs, test.name + " with a field",
-                field);
+  const std::array<double, 4> domain = {-1.2, 1.2, -0.9, 0.9};
+  for (const NonRadialField& field : {NonRadialField(7, 5, domain), NonRadialField(0, 0, {}, true),
+                                      NonRadialField(7, 5, domain, true)}) {
+    std::vector<double> coeffs = radial;
+    for (int k = 0; k < field.GridCoeffs(); ++k) coeffs.push_back(2e-3 * std::sin(1.3 * k));
+    if (field.tilt()) coeffs.insert(coeffs.end(), {0.012, -0.007});
+    CheckBothWays(model, {intrinsics.begin(), intrinsics.end()}, coeffs,
+                  test.name + (field.grid() ? " with a field" : "") + (field.tilt() ? " with a tilt" : ""),
+                  field);
+  }
 }
 
 }  // namespace

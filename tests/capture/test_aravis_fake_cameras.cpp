@@ -16,8 +16,8 @@
 #include "capture/aravis_camera.h"
 #include "capture/aravis_stereo_pair.h"
 #include "capture/camera_error.h"
-#include "capture/fake_gige_camera.h"
-#include "capture/fake_stereo_cameras.h"
+#include "fake_cameras/fake_gige_camera.h"
+#include "fake_cameras/fake_stereo_cameras.h"
 #include "capture/gige_address.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
@@ -340,22 +340,27 @@ TEST_F(FakeCameras, StereoCapturePublishesTheCamerasPairsInStep) {
 
 TEST_F(FakeCameras, StereoCaptureRecoversWhenACameraRestartsAndCountsTheGap) {
   auto rig = ServeRig();
+  ws::FakeGigeCamera& left = rig->camera(ws::Side::left);
   ws::FakeGigeCamera& right = rig->camera(ws::Side::right);
+  // The right camera is off while the left one serves 15 frames (1.5 s at 10 Hz).
+  constexpr uint64_t kOutageFrames = 15;
   const std::string log = ws::test::TempDir("aravis_capture_restart") + "/out.lcmlog";
   const ws::test::CommandResult result = CaptureFromRig(*rig, log, 25, [&] {
     const auto start = Clock::now();
     while (right.frames_served() < 5 && SecondsSince(start) < 30) std::this_thread::sleep_for(20ms);
     right.Stop();
-    std::this_thread::sleep_for(1500ms);
+    const uint64_t stopped_at = left.frames_served();
+    while (left.frames_served() < stopped_at + kOutageFrames && SecondsSince(start) < 30)
+      std::this_thread::sleep_for(20ms);
     right.Start();
   });
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto frames = ExpectPairsInStep(log, 25);
   ASSERT_EQ(frames.size(), 25u);
-  EXPECT_GT(frames.back().utime - frames.front().utime, int64_t(1.5e6 + 23 * 1e5 * 0.9))
+  EXPECT_GT(frames.back().utime - frames.front().utime, int64_t((kOutageFrames - 1) * 1e5 + 23 * 1e5 * 0.9))
       << "the outage must lie between the first and the last pair";
-  const auto left = ws::test::LastCounters(log, "stereo-capture", "aravis:" + rig->camera(ws::Side::left).device_id());
-  EXPECT_GT(left.dropped, 0) << "left frames of the outage had no partner and must be counted";
+  const auto counters = ws::test::LastCounters(log, "stereo-capture", "aravis:" + left.device_id());
+  EXPECT_GT(counters.dropped, 0) << "left frames of the outage had no partner and must be counted";
 }
 
 TEST(StereoFakeCamerasProcess, AnswersHelp) {

@@ -170,7 +170,9 @@ TEST(DirSource, LoopServesLaterLapsFromTheFirstLapsImagesAndCountsThemAlike) {
     const ws::StereoPair& first = lap[size_t(i % 2)];
     EXPECT_EQ(pair.label, first.label);
     ASSERT_EQ(pair.left.empty(), first.left.empty()) << pair.label;
-    if (!pair.left.empty()) EXPECT_EQ(cv::norm(pair.left, first.left, cv::NORM_INF), 0);
+    if (!pair.left.empty()) {
+      EXPECT_EQ(cv::norm(pair.left, first.left, cv::NORM_INF), 0);
+    }
   }
   const auto counts = source.Counters().at("dir:" + dir);
   EXPECT_EQ(counts.received, 3);  // pair 1 in each of the 3 laps

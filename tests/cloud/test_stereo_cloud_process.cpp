@@ -4,7 +4,6 @@
 // settings refused with their reason.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -100,12 +99,12 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
 
 // Empty, all-NaN and one-point clouds come out as empty clouds (with their
 // stats) and are counted as dropped; a message that does not decode is
-// rejected; the wall after them is filtered as usual, all within seconds.
+// rejected; the wall after them is filtered as usual (a stall would end in
+// RunStereoCloud's time limit; the speed is bench/'s to measure).
 TEST(StereoCloudProcess, BadCloudsGiveEmptyResultsCountedWithoutStalling) {
   const std::string dir = TempDir("cloud-bad");
   const float nan = std::numeric_limits<float>::quiet_NaN();
   LogEvent garbage{ws::channel::kStereoCloud, {1, 2, 3, 4, 5, 6, 7}, 0};
-  const auto start = std::chrono::steady_clock::now();
   const auto r = RunStereoCloud(
       dir, {Event(ws::channel::kStereoCloud, Framed(MakeCloud({}), 1)),
             Event(ws::channel::kStereoCloud,
@@ -114,10 +113,7 @@ TEST(StereoCloudProcess, BadCloudsGiveEmptyResultsCountedWithoutStalling) {
                   Framed(MakeCloud(std::vector<Point>(200000, Point{0.5f, -0.25f, 2})), 3)),
             garbage,
             Event(ws::channel::kStereoCloud, Framed(ws::testing::NoisyWallScene(), 4))});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_LT(seconds, 20);
 
   const auto events = ReadLog(dir + "/out.lcmlog");
   const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloudFiltered);

@@ -152,7 +152,7 @@ TEST_F(StereoDetectReplay, ReplayWaitsInsteadOfDroppingWithOneFrameInFlight) {
 }
 
 stereo_frame_t Frame(int64_t frame_id, const widestereo::image_t& left, const widestereo::image_t& right) {
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.utime = (frame_id + 1) * 100000;
   frame.frame_id = frame_id;
   frame.left = left;
@@ -245,7 +245,7 @@ TEST(StereoDetectLive, DropsAndCountsFramesItCannotKeepUpWith) {
   lcm.subscribeFunction(
       ws::channel::kStereoCorners,
       +[](const lcm::ReceiveBuffer* rbuf, const std::string&, std::vector<int64_t>* out) {
-        stereo_corners_t c;
+        stereo_corners_t c{};
         if (c.decode(rbuf->data, 0, int(rbuf->data_size)) > 0) out->push_back(c.frame_id);
       },
       &published_ids);

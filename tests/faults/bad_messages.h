@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "lcm_io/decode.h"
+
 namespace ws::test {
 
 class BadMessages {
@@ -34,9 +36,7 @@ class BadMessages {
 
 template <class Msg>
 std::vector<uint8_t> Encoded(const Msg& msg) {
-  std::vector<uint8_t> bytes(size_t(msg.getEncodedSize()));
-  msg.encode(bytes.data(), 0, int(bytes.size()));
-  return bytes;
+  return ws::EncodeMessage(msg);
 }
 
 }  // namespace ws::test

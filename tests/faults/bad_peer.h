@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "auth/message_auth.h"
+#include "lcm_io/decode.h"
 #include "runtime/wall_clock.h"
 
 #include "bad_messages.h"
@@ -32,11 +33,22 @@ struct BadChannel {
   int sent = 0;
 };
 
+// Each payload of a Msg with its auth_t cleared, as a process without a key
+// sends it: what a keyed run is compared with a clean run on.
+template <class Msg>
+std::vector<std::vector<uint8_t>> WithoutAuth(const std::vector<std::vector<uint8_t>>& payloads) {
+  std::vector<std::vector<uint8_t>> out;
+  for (const auto& p : payloads)
+    out.push_back(ws::auth::EncodeWithAuth(ws::DecodeMessage<Msg>(p.data(), int(p.size())), widestereo::auth_t{}));
+  return out;
+}
+
 // Sends kBadPerGoodFrame bad messages on each channel, interleaved and paced.
 void Flood(BusWatch& bus, const std::vector<BadChannel*>& channels);
 
 // The bad-peer tests run without a rig key and with one: then the process
-// gets --key-file and the test signs the good commands and calibrations.
+// gets --key-file and the test signs the good messages (commands,
+// calibrations, corners, images).
 class BadPeer : public ::testing::TestWithParam<bool> {
  protected:
   bool keyed() const { return GetParam(); }

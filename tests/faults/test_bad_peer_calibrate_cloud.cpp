@@ -53,7 +53,9 @@ TEST_P(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
   const std::vector<BadChannel*> both = {&bad_corners, &bad_commands};
   for (size_t i = 0; i < corners.size(); ++i) {
     if (i % 6 == 0) Flood(bus, both);
-    bus.Publish(ch::kStereoCorners, corners[i].data);
+    bus.Publish(ch::kStereoCorners,
+                AsSent(ch::kStereoCorners, ws::DecodeMessage<widestereo::stereo_corners_t>(corners[i].data.data(),
+                                                                                           int(corners[i].data.size()))));
     bus.Listen(0.02);
   }
   bus.Publish(ch::kStereoCommand, Encoded(bad_argument));

@@ -7,9 +7,13 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
+
+#include <Eigen/Geometry>
 
 #include "auth/message_auth.h"
 #include "bad_messages.h"
@@ -18,10 +22,12 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/decode.h"
 #include "match_fixtures.h"
+#include "rectify/stereo_rig.h"
 #include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/stereo_calibration_t.hpp"
+#include "widestereo/stereo_corners_t.hpp"
 
 namespace {
 
@@ -74,17 +80,28 @@ widestereo::calibration_status_t LastCalibrationStatus(BusWatch& bus) {
   return ws::DecodeMessage<widestereo::calibration_status_t>(statuses.back().data(), int(statuses.back().size()));
 }
 
-// Sends the 30 views of logs/sim-corners.lcmlog; returns how many views
-// stereo-calibrate kept (0, and a failure, if it never counted them all).
-int SendViews(BusWatch& bus) {
+// The 30 views of logs/sim-corners.lcmlog.
+std::vector<widestereo::stereo_corners_t> RealViews() {
+  std::vector<widestereo::stereo_corners_t> views;
+  for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog"))
+    if (e.channel == ch::kStereoCorners)
+      views.push_back(ws::DecodeMessage<widestereo::stereo_corners_t>(e.data.data(), int(e.data.size())));
+  return views;
+}
+
+// Sends the 30 views of logs/sim-corners.lcmlog, signed as stereo-detect
+// signs them where a key is given; returns how many views stereo-calibrate
+// kept (0, and a failure, if it never counted them all).
+int SendViews(BusWatch& bus, const ws::auth::RigKey* key = nullptr) {
+  const int64_t received = bus.Counters(ch::kStereoCorners).received;
   int sent = 0;
-  for (const LogEvent& e : ReadLog(SourceDir() + "/logs/sim-corners.lcmlog")) {
-    if (e.channel != ch::kStereoCorners) continue;
-    bus.Publish(ch::kStereoCorners, e.data);
+  for (widestereo::stereo_corners_t view : RealViews()) {
+    if (key) ws::auth::Sign(*key, ch::kStereoCorners, "stereo-detect test", ws::WallMicros(), view);
+    bus.Publish(ch::kStereoCorners, Encoded(view));
     bus.Listen(0.02);
     ++sent;
   }
-  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).received == sent; }));
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).received == received + sent; }));
   bus.Listen(1.5);  // a CALIBRATION_STATUS after the last view
   return LastCalibrationStatus(bus).views_stereo;
 }
@@ -164,9 +181,21 @@ TEST(HostilePeer, StereoCalibrateSavesOnlyIntoTheFoldersOfOutAndReport) {
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 8);
   SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=again.yaml", "report=again.json"})));
   SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=calib.yaml", "overwrite=1"})));
+  // Symlinks planted in the folder, to a file outside it: at the temporary
+  // name a save once used, and at the final name.
+  std::ofstream(dir + "/victim.yaml") << "victim\n";
+  fs::create_symlink(dir + "/victim.yaml", out + "/planted.yaml.tmp");
+  fs::create_symlink(dir + "/victim.yaml", out + "/linked.yaml");
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=planted.yaml"})));
+  SendAndCount(bus, ch::kStereoCommand, Encoded(CommandMessage("save", "", {"path=linked.yaml", "overwrite=1"})));
   process.Signal(SIGINT);
   EXPECT_EQ(process.Wait(30).exit_code, 0);
   EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 8);
+  EXPECT_EQ(ReadFileText(dir + "/victim.yaml"), "victim\n") << "a save wrote through a planted symlink";
+  EXPECT_FALSE(fs::is_symlink(out + "/planted.yaml"));
+  EXPECT_FALSE(fs::is_symlink(out + "/linked.yaml"));
+  EXPECT_EQ(ReadFileText(out + "/planted.yaml"), ReadFileText(out + "/calib.yaml"));
+  EXPECT_EQ(ReadFileText(out + "/linked.yaml"), ReadFileText(out + "/calib.yaml"));
   EXPECT_EQ(ReadFileText(state), views);
   EXPECT_FALSE(fs::exists(out + "/calibration.yaml"));
   EXPECT_EQ(ReadFileText(out + "/calib.yaml.1.bak"), calib) << "the overwritten calibration kept";
@@ -241,6 +270,14 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
   EXPECT_TRUE(fs::exists(dir + "/pcd/signed.pcd"));
   fs::remove(dir + "/pcd/signed.pcd");
 
+  // Signed by a sender whose clock runs 20 s fast: refused, so that its
+  // bytes cannot be replayed to a process started after it was sent.
+  widestereo::command_t ahead = CommandMessage("save", "stereo-cloud", {"path=ahead.pcd"});
+  ws::auth::Sign(ws::auth::RigKey::FromFile(key), ch::kStereoCommand, "fast clock", ws::WallMicros() + 20'000'000,
+                 ahead);
+  error = SendAndCount(bus, ch::kStereoCommand, Encoded(ahead));
+  EXPECT_NE(error.find("refused: dated 20"), std::string::npos) << error;
+
   const std::vector<uint8_t> signed_save = CollectedCommand(bus, {"path=signed.pcd"});
   error = SendAndCount(bus, ch::kStereoCommand, signed_save);  // byte for byte
   EXPECT_NE(error.find("refused: replayed"), std::string::npos) << error;
@@ -252,8 +289,8 @@ TEST(HostilePeer, WithTheRigKeyOnlyACommandSignedWithItIsObeyedOnce) {
 
   process->Signal(SIGINT);
   EXPECT_EQ(process->Wait(30).exit_code, 0);
-  EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 5);
-  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 4);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).received, 6);
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 5);
 
   // Restarted, it knows none of the nonces it accepted: what was signed before its start is refused.
   process = std::make_unique<Command>(argv);
@@ -290,7 +327,8 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   BusWatch calibrate_bus(url, "stereo-calibrate");
   calibrate_bus.Collect(ch::kCalibrationStatus);
   ASSERT_TRUE(calibrate_bus.ListenUntil(20, [&] { return calibrate_bus.status().has_value(); })) << calibrate.Output();
-  ASSERT_GT(SendViews(calibrate_bus), 10);
+  const ws::auth::RigKey rig_key = ws::auth::RigKey::FromFile(key);
+  ASSERT_GT(SendViews(calibrate_bus, &rig_key), 10);
   RunStereoCommand(dir, url, {"solve", "--key-file", key});
   ASSERT_TRUE(bus.ListenUntil(180, [&] { return bus.status()->state == "matching"; })) << calibrate.Output();
   EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 2);
@@ -306,6 +344,108 @@ TEST(HostilePeer, WithTheRigKeyStereoMatchAdoptsOnlyTheCalibrationSignedWithIt) 
   EXPECT_EQ(bus.Counters(ch::kStereoCalibration).rejected, 3);
   const std::string log = ReadFileText(dir + "/stereo-match.log");
   EXPECT_EQ(log.find("rectification maps for"), log.rfind("rectification maps for")) << "maps built once";
+}
+
+// Corner floods: boards of 10^5 points are refused as they arrive (a board
+// has its own corners at most), and the session keeps at most --max-views
+// views; each refusal is counted with its reason, and the views file holds
+// only the views kept.
+TEST(HostilePeer, CornerFloodsAreRefusedAndTheSessionCapped) {
+  const std::string dir = TempDir("hostile-corner-flood");
+  const std::string url = UniqueUdpmUrl(23) + "&recv_buf_size=8388608";
+  const std::string state = dir + "/views.lcmlog";
+  Command calibrate(CalibrateArgv(dir, url, {"--state", state, "--max-views", "5"}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << calibrate.Output();
+
+  const std::vector<widestereo::stereo_corners_t> real = RealViews();
+  for (int i = 0; i < 8; ++i) {
+    widestereo::stereo_corners_t flood = real[size_t(i)];
+    flood.left.n = 100000;
+    flood.left.ids.resize(100000, 0);
+    flood.left.image_points.resize(100000, flood.left.image_points[0]);
+    flood.left.object_points.resize(100000, flood.left.object_points[0]);
+    bus.Publish(ch::kStereoCorners, Encoded(flood));
+    ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == i + 1; }))
+        << bus.Counters(ch::kStereoCorners).rejected;
+  }
+  EXPECT_NE(bus.status()->last_error.find("100000 corners on a board of 54"), std::string::npos)
+      << bus.status()->last_error;
+
+  SendViews(bus);
+  const int64_t beyond = int64_t(real.size()) - 5;
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == 8 + beyond; }))
+      << bus.Counters(ch::kStereoCorners).rejected;
+  EXPECT_NE(bus.status()->last_error.find("maximum of 5 views (--max-views)"), std::string::npos)
+      << bus.status()->last_error;
+  calibrate.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
+  int kept = 0;
+  for (const LogEvent& e : ReadLog(state)) kept += e.channel == ch::kStereoCorners;
+  EXPECT_EQ(kept, 5);
+  EXPECT_LT(fs::file_size(state), 100000u) << "a flooded view (4.4 MB) was kept";
+}
+
+// The views of a peer without the key, sent before the real ones: every
+// view with its right image turned 1 degree about the image centre (a
+// calibration of R off by 1 degree, at a low RMS), and one of another board
+// (whose id would make the session refuse the real board). With the key
+// neither enters the session: the real, signed views that follow are all
+// kept, and the solve's R is the real rig's.
+TEST(HostilePeer, WithTheRigKeyUnsignedCornersNeverEnterTheSession) {
+  const std::string dir = TempDir("hostile-keyed-corners");
+  const std::string key = WriteKeyFile(dir, "rig.key");
+  const std::string url = UniqueUdpmUrl(22);
+  Command calibrate(CalibrateArgv(dir, url, {"--key-file", key, "--state", dir + "/views.lcmlog"}));
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  bus.Collect(ch::kStereoCalibration);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << calibrate.Output();
+
+  const double turn = M_PI / 180;
+  std::vector<widestereo::stereo_corners_t> attack = RealViews();
+  for (auto& view : attack) {
+    const double cx = view.right.image_width / 2.0, cy = view.right.image_height / 2.0;
+    for (auto& p : view.right.image_points) {
+      const double x = p[0] - cx, y = p[1] - cy;
+      p[0] = cx + std::cos(turn) * x - std::sin(turn) * y;
+      p[1] = cy + std::sin(turn) * x + std::cos(turn) * y;
+    }
+  }
+  attack.push_back(attack.front());
+  attack.back().left.board_id = attack.back().right.board_id = "chessboard:9x6:0.1";
+  for (const auto& view : attack) {
+    bus.Publish(ch::kStereoCorners, Encoded(view));
+    bus.Listen(0.02);
+  }
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCorners).rejected == int64_t(attack.size()); }))
+      << bus.Counters(ch::kStereoCorners).rejected;
+  EXPECT_NE(bus.status()->last_error.find("STEREO_CORNERS: refused: unsigned"), std::string::npos)
+      << bus.status()->last_error;
+
+  const ws::auth::RigKey rig_key = ws::auth::RigKey::FromFile(key);
+  int left = 0, right = 0, stereo = 0;
+  for (const auto& view : RealViews()) {
+    left += view.left.n > 0;
+    right += view.right.n > 0;
+    stereo += view.left.n > 0 && view.right.n > 0;
+  }
+  EXPECT_EQ(SendViews(bus, &rig_key), stereo) << "a real view refused as a near duplicate or another board";
+  EXPECT_EQ(LastCalibrationStatus(bus).views_left, left);
+  EXPECT_EQ(LastCalibrationStatus(bus).views_right, right);
+  EXPECT_EQ(bus.Counters(ch::kStereoCorners).rejected, int64_t(attack.size()));
+  RunStereoCommand(dir, url, {"solve", "--key-file", key});
+  ASSERT_TRUE(bus.ListenUntil(180, [&] { return Solved(LastCalibrationStatus(bus)); })) << calibrate.Output();
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return !bus.Payloads(ch::kStereoCalibration).empty(); }));
+  const auto& published = bus.Payloads(ch::kStereoCalibration).back();
+  const ws::StereoRig solved = ws::StereoRigFromMessage(
+      ws::DecodeMessage<widestereo::stereo_calibration_t>(published.data(), int(published.size())));
+  // The simulated rig's R is the identity (logs/sim-images.truth.yaml).
+  const double off_deg = Eigen::AngleAxisd(solved.R).angle() * 180 / M_PI;
+  EXPECT_LT(off_deg, 0.25) << "R is off by the attack's turn";
+  calibrate.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
 
   cv::Mat texture(960, 1280, CV_8UC1);
   cv::randu(texture, 0, 256);
-  widestereo::stereo_frame_t frame;
+  widestereo::stereo_frame_t frame{};
   frame.left = frame.right = ws::MatToImage(texture, 0);
   int next_id = 0;
   bool in_burst = false;

@@ -37,7 +37,7 @@ TEST(SlowSubscriber, StereoMatchDropsAndCountsWhatItCannotKeepUpWith) {
 
   cv::Mat texture(960, 1280, CV_8UC1);
   cv::randu(texture, 0, 256);
-  widestereo::stereo_frame_t frame;
+  widestereo::stereo_frame_t frame{};
   frame.left = frame.right = ws::MatToImage(texture, 0);  // 2.4 MB a pair
   int next_id = 0;
   auto send = [&] {

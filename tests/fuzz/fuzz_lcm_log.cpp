@@ -6,6 +6,10 @@
 // deliver every one on a channel a process reads. (Events on channels that
 // are not ASCII are never delivered: glibc's regex '.' does not match those
 // bytes in the C locale; no process reads such a channel.)
+// Then the recovery of every intact event (RecoverLcmLog, what stereo-calibrate
+// does with a damaged views file): every byte is in an event or counted
+// lost, and what it recovers is an intact log of the same events.
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -17,13 +21,15 @@
 
 namespace {
 
-using Decoder = void (*)(const void* data, int size);
+using Decoder = bool (*)(const void* data, int size);
 
 template <class Msg>
-void DecodeAs(const void* data, int size) {
+bool DecodeAs(const void* data, int size) {
   try {
     ws::DecodeMessage<Msg>(data, size);
+    return true;
   } catch (const ws::DecodeError&) {
+    return false;
   }
 }
 
@@ -47,6 +53,27 @@ const std::map<std::string, Decoder>& Decoders() {
   return decoders;
 }
 
+bool DecodesAsItsChannel(const std::string& channel, const uint8_t* data, size_t size) {
+  const auto decoder = Decoders().find(channel);
+  return decoder != Decoders().end() && decoder->second(data, int(size));
+}
+
+void CheckRecovery(const std::string& path, int64_t size) {
+  const ws::LcmLogRecovery recovery = ws::RecoverLcmLog(path, DecodesAsItsChannel);
+  const std::string recovered = ws::EncodeLcmLog(recovery.events);
+  if (recovery.file_bytes != size || int64_t(recovered.size()) + recovery.lost_bytes != size ||
+      recovery.intact() != recovery.first_damage.empty() || recovery.lost_events < 0)
+    ws::fuzz::Violated("inconsistent recovery: " + std::to_string(recovery.events.size()) + " events in " +
+                       std::to_string(recovered.size()) + " bytes, " + std::to_string(recovery.lost_bytes) +
+                       " lost of " + std::to_string(size) + ", damage '" + recovery.first_damage + "'");
+  const std::string copy = path + ".recovered";
+  if (!(std::ofstream(copy, std::ios::binary) << recovered)) ws::fuzz::Violated("cannot write " + copy);
+  const ws::LcmLogRecovery again = ws::RecoverLcmLog(copy, DecodesAsItsChannel);
+  if (!again.intact() || again.events.size() != recovery.events.size() ||
+      ws::EncodeLcmLog(again.events) != recovered)
+    ws::fuzz::Violated("the recovered events are not an intact log: " + again.first_damage);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -56,6 +83,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       scan.complete() != (scan.valid_bytes == scan.file_bytes))
     ws::fuzz::Violated("inconsistent scan: " + std::to_string(scan.valid_bytes) + " valid of " +
                        std::to_string(scan.file_bytes) + " bytes, problem '" + scan.problem + "'");
+  CheckRecovery(path, int64_t(size));
   if (scan.events == 0) return 0;  // a process does not open an empty log
 
   std::string replayed = path;

@@ -15,6 +15,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
 #include "monitor/status_board.h"
+#include "rectify/calibration_size.h"
 #include "rectify/stereo_rig.h"
 #include "view/page_events.h"
 
@@ -32,7 +33,28 @@ void Use(const image_t& image) {
              " image");
 }
 
+// A receiver with a rig key checks every command, calibration, corners
+// message and image pair (the MAC over the message re-encoded, the key, the
+// time, the nonce); the same message signed anew with the key passes that
+// check.
+template <class Msg>
+void Authenticate(const Msg& msg, const char* channel) {
+  ws::auth::AuthCheck check(FuzzKey());
+  try {
+    check.Check(channel, msg, msg.auth.utime);
+  } catch (const ws::auth::AuthError&) {
+  }
+  Msg resigned = msg;
+  ws::auth::Sign(FuzzKey(), channel, msg.auth.sender, msg.auth.utime, resigned);
+  try {
+    check.Check(channel, resigned, msg.auth.utime);
+  } catch (const ws::auth::AuthError& e) {
+    Violated(std::string("a message signed with the key is refused: ") + e.what());
+  }
+}
+
 void Use(const stereo_frame_t& frame) {
+  Authenticate(frame, ws::channel::kStereoImages);
   Use(frame.left);
   if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
 }
@@ -40,7 +62,8 @@ void Use(const stereo_frame_t& frame) {
 // stereo-view colours every disparity it shows (stereo-match --save-disparity likewise).
 void Use(const disparity_t& disparity) {
   Use(disparity.disparity);
-  ws::view::DisparityEvent(disparity, 64);
+  ws::view::BlobStore blobs;
+  ws::view::DisparityEvent(disparity, 64, blobs);
 }
 
 // stereo-match turns a calibration into camera models and unprojects every
@@ -62,32 +85,16 @@ void Use(const camera_calibration_t& calibration) {
   }
 }
 
-// A receiver with a rig key checks every command and calibration (the MAC
-// over the message re-encoded, the key, the time, the nonce); the same
-// message signed anew with the key passes that check.
-template <class Msg>
-void Authenticate(const Msg& msg, const char* channel) {
-  ws::auth::AuthCheck check(FuzzKey());
-  try {
-    check.Check(channel, msg, msg.auth.utime);
-  } catch (const ws::auth::AuthError&) {
-  }
-  Msg resigned = msg;
-  ws::auth::Sign(FuzzKey(), channel, msg.auth.sender, msg.auth.utime, resigned);
-  try {
-    check.Check(channel, resigned, msg.auth.utime);
-  } catch (const ws::auth::AuthError& e) {
-    Violated(std::string("a message signed with the key is refused: ") + e.what());
-  }
-}
-
 void Use(const command_t& command) { Authenticate(command, ws::channel::kStereoCommand); }
 
 void Use(const stereo_calibration_t& calibration) {
   Authenticate(calibration, ws::channel::kStereoCalibration);
   Use(calibration.left);
   Use(calibration.right);
-  ws::StereoRigFromMessage(calibration);
+  // stereo-match and stereo-health check its sizes and geometry before any map.
+  ws::RectifyOptions options;
+  options.mode = ws::RectificationMode::kAuto;
+  ws::CalibrationGeometry(ws::StereoRigFromMessage(calibration), options, ws::kDefaultMaxImagePixels, "it");
 }
 
 // stereo-status shows every status it hears.
@@ -113,7 +120,8 @@ void Use(const calibration_health_t& health) { Show(health); }
 // stereo-cloud runs its filter chain on every cloud; stereo-view shows it.
 void Use(const point_cloud_t& cloud) {
   static const ws::CloudFilter filter{ws::CloudFilterConfig{}};
-  ws::view::CloudEvent(cloud, 100);
+  ws::view::BlobStore blobs;
+  ws::view::CloudEvent(cloud, 100, blobs);
   filter.Run(cloud);
 }
 
@@ -123,6 +131,7 @@ void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
 // stereo-calibrate adds every corners message to its session (the view, the
 // coverage grids, the near-duplicate check) and publishes the status.
 void Use(const stereo_corners_t& corners) {
+  Authenticate(corners, ws::channel::kStereoCorners);
   ws::calib::CalibrationSession session{ws::calib::SessionOptions{}};
   for (int i = 0; i < 2; ++i) session.Add(corners);  // the second one is a near duplicate
   session.Status(0, "collecting", -1);

@@ -129,7 +129,7 @@ void ImageSeeds(Seeds& seeds) {
 }
 
 stereo_frame_t Frame(const std::string& pair, ws::Compression compression, cv::Size size) {
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.utime = frame.frame_id = 1;
   for (auto [side, image] : {std::pair{"left", &frame.left}, std::pair{"right", &frame.right}}) {
     cv::Mat gray = cv::imread(kOpenCvData + side + pair + ".jpg", cv::IMREAD_GRAYSCALE);
@@ -148,6 +148,9 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
   stereo_frame_t mono = Frame("01", ws::Compression::none, small);  // stereo-capture --mono's
   mono.right = ws::NoImage(mono.utime);
   seeds.Message("mono", mono);
+  stereo_frame_t signed_frame = Frame("01", ws::Compression::jpeg, small);
+  ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoImages, "stereo-capture@robot pid 42", 1000000, signed_frame);
+  seeds.Message("signed-jpeg", signed_frame);
   log_frames->push_back(Frame("01", ws::Compression::none, {16, 12}));
 
   const ws::StereoCornerFinder finder(ws::ParseBoardSpec("chessboard:9x6:0.025"),
@@ -157,6 +160,10 @@ void FrameAndCornerSeeds(Seeds& seeds, std::vector<stereo_frame_t>* log_frames,
     if (corners.left.n == 0 || corners.right.n == 0)
       throw std::runtime_error(std::string("no corners found in pair ") + pair);
     seeds.Message(std::string("pair") + pair, corners);
+    stereo_corners_t signed_corners = corners;
+    ws::auth::Sign(ws::fuzz::FuzzKey(), ws::channel::kStereoCorners, "stereo-detect@robot pid 42", 1000000,
+                   signed_corners);
+    seeds.Message(std::string("signed-pair") + pair, signed_corners);
     seeds.Message(std::string("left") + pair, corners.left);
     log_corners->push_back(corners);
   }
@@ -171,7 +178,7 @@ void CalibrationSeeds(Seeds& seeds) {
   rig.left = rig.right = sim.left;
   rig.T = Eigen::Vector3d(-0.3, 0, 0);
   seeds.Message("bspline", ws::MessageFromStereoRig(rig, 1));
-  rig.left.distortion = rig.right.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
+  rig.left.distortion = rig.right.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.004}};
   stereo_calibration_t poly6 = ws::MessageFromStereoRig(rig, 1);
   // With the quality figures a solver fills in.
   poly6.rms = 0.06;
@@ -185,9 +192,9 @@ void CalibrationSeeds(Seeds& seeds) {
   seeds.Message("signed-poly6", poly6);
   seeds.Message("bspline", ws::MessageFromCameraModel(sim.left, "left"));
   seeds.Message("poly6", poly6.left);
-  // A fisheye model with a non-radial field.
+  // A fisheye model with a non-radial field and a sensor tilt.
   ws::CameraModel field = ws::DefaultSimConfig(0.1).left;
-  field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0)};
+  field.nonradial = {4, 4, {-1.5, 1.5, -1.2, 1.2}, std::vector<double>(32, 0.0), {0.004, -0.003}};
   for (size_t k = 0; k < field.nonradial.coeffs.size(); ++k) field.nonradial.coeffs[k] = 1e-3 * (k % 5);
   rig.left = rig.right = field;
   seeds.Message("bspline-field", ws::MessageFromStereoRig(rig, 1));
@@ -326,6 +333,14 @@ void LogSeeds(Seeds& seeds, const std::vector<stereo_frame_t>& frames,
   const fs::path cut = seeds.Path("fuzz_lcm_log", "cut.lcmlog");
   fs::copy_file(path, cut, fs::copy_options::overwrite_existing);
   fs::resize_file(cut, fs::file_size(cut) - 100);
+  // One byte flipped in the second event's sync word: the recovery's path.
+  const fs::path flipped = seeds.Path("fuzz_lcm_log", "flipped.lcmlog");
+  fs::copy_file(path, flipped, fs::copy_options::overwrite_existing);
+  const int64_t second = 4 + 8 + 8 + 4 + 4 + int64_t(std::string(ws::channel::kProcessStatus).size()) +
+                         int64_t(Seeds::Encode(StatusMessage()).size());
+  std::fstream file(flipped, std::ios::in | std::ios::out | std::ios::binary);
+  file.seekp(second);
+  file.put('\x00');
 }
 
 void ConfigSeeds(Seeds& seeds, const fs::path& source) {

@@ -97,7 +97,7 @@ TEST(KalibrCamchain, RefusesModelsItDoesNotReadNamingTheField) {
   EXPECT_EQ(rig.format, "kalibr");
   EXPECT_TRUE(rig.mono);
   const CameraModel& m = rig.left->AsCamera()->model();
-  EXPECT_EQ(m.distortion.kind, "poly6");
+  EXPECT_EQ(m.distortion.kind, ModelKind::kPoly6);
   EXPECT_EQ(m.p2, 0.002);
   const std::pair<std::string, std::string> cases[] = {
       {"cam0:\n  camera_model: omni\n", "cam0.camera_model: 'omni'"},
@@ -141,24 +141,24 @@ TEST(OpenCvCalibration, ReadsOneCameraAndRefusesWhatItCannotHold) {
 
 TEST(ExactTargetModel, OnlyModelsTheFormatHas) {
   CameraModel poly6;
-  poly6.distortion = Distortion{"poly6", 0, {}, {0.1, 0.01, 0.001}};
+  poly6.distortion = Distortion{ModelKind::kPoly6, 0, {}, {0.1, 0.01, 0.001}};
   poly6.p1 = 0.002, poly6.p2 = 0.003;
   EXPECT_EQ(ExactTargetModel(poly6, ExportFormat::kRos)->name, "plumb_bob");
   EXPECT_EQ(ExactTargetModel(poly6, ExportFormat::kRos)->coeffs, (std::vector<double>{0.1, 0.01, 0.002, 0.003, 0.001}));
   EXPECT_EQ(ExactTargetModel(poly6, ExportFormat::kMrcal)->name, "LENSMODEL_OPENCV5");
   EXPECT_FALSE(ExactTargetModel(poly6, ExportFormat::kKalibr));  // radtan has no k3
   CameraModel poly12 = poly6;
-  poly12.distortion = Distortion{"poly12", 0, {}, {0.1, 0.01, 0.001, 0, 0, 0}};
+  poly12.distortion = Distortion{ModelKind::kPoly12, 0, {}, {0.1, 0.01, 0.001, 0, 0, 0}};
   EXPECT_EQ(ExactTargetModel(poly12, ExportFormat::kOpenCv)->coeffs.size(), 5u);
   poly12.distortion.coeffs[5] = 1e-6;
   EXPECT_FALSE(ExactTargetModel(poly12, ExportFormat::kOpenCv));
   CameraModel kb4;
-  kb4.distortion = Distortion{"kb4", 0, {}, {0.1, 0.01, 0.001, 0.0001}};
+  kb4.distortion = Distortion{ModelKind::kKb4, 0, {}, {0.1, 0.01, 0.001, 0.0001}};
   EXPECT_EQ(ExactTargetModel(kb4, ExportFormat::kOpenCv)->name, "fisheye");
   EXPECT_EQ(ExactTargetModel(kb4, ExportFormat::kKalibr)->name, "equidistant");
   EXPECT_FALSE(ExactTargetModel(kb4, ExportFormat::kMrcal));
   CameraModel spline;
-  spline.distortion.kind = "bspline_theta";
+  spline.distortion.kind = ModelKind::kBsplineTheta;
   for (ExportFormat f : {ExportFormat::kOpenCv, ExportFormat::kRos, ExportFormat::kKalibr, ExportFormat::kMrcal})
     EXPECT_FALSE(ExactTargetModel(spline, f)) << ExportFormatName(f);
   EXPECT_THROW(ParseExportFormat("colmap"), std::invalid_argument);

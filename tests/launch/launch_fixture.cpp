@@ -19,6 +19,18 @@ std::vector<std::string> LaunchCommand(const std::string& launch_file, const std
   return argv;
 }
 
+ChannelListener::ChannelListener(const std::string& lcm_url, const std::string& channel) : bus_(lcm_url) {
+  EXPECT_TRUE(bus_.good()) << lcm_url;
+  bus_.subscribeFunction(
+      channel, +[](const lcm::ReceiveBuffer*, const std::string&, int* heard) { ++*heard; }, &heard_);
+}
+
+bool ChannelListener::Hear(int count, std::chrono::steady_clock::time_point not_before) {
+  const bool heard = HandleUntil(bus_, 60, [&] { return heard_ >= count && std::chrono::steady_clock::now() >= not_before; });
+  heard_ = 0;
+  return heard;
+}
+
 std::string LaunchLog(const std::string& run_dir) {
   std::ifstream in(run_dir + "/launch.log");
   std::stringstream text;

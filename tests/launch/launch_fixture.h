@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <lcm/lcm-cpp.hpp>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,20 @@ std::vector<std::string> LaunchCommand(const std::string& launch_file, const std
 // The pid of the `nth` start (1: first) of `process` that launch.log in
 // `run_dir` records, waiting up to `timeout` for it; -1 (and a test failure) if none.
 int WaitForStart(const std::string& run_dir, const std::string& process, int nth, std::chrono::seconds timeout);
+
+// Messages on one channel of a launch's bus, heard by the test: it acts
+// once a process has published, not after a guessed time.
+class ChannelListener {
+ public:
+  ChannelListener(const std::string& lcm_url, const std::string& channel);
+  // Waits up to 60 s until `count` messages have arrived since the last
+  // call (or the listener's start) and `not_before` has passed.
+  bool Hear(int count, std::chrono::steady_clock::time_point not_before = {});
+
+ private:
+  lcm::LCM bus_;
+  int heard_ = 0;
+};
 
 // launch.log's text.
 std::string LaunchLog(const std::string& run_dir);

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -33,14 +32,17 @@ std::vector<int64_t> FrameIds(const std::vector<LogEvent>& events, const std::st
 
 TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
   const std::string run_dir = TempDir("launch_calibrate");
-  Command launch(LaunchCommand("config/launch/calibrate.yaml", UniqueUdpmUrl() + "&recv_buf_size=16777216", run_dir,
-                               {"--append", "stereo-capture=--rate=2"}));
+  const std::string url = UniqueUdpmUrl() + "&recv_buf_size=16777216";
+  ChannelListener detector(url, ws::channel::kStereoCorners);
+  Command launch(LaunchCommand("config/launch/calibrate.yaml", url, run_dir, {"--append", "stereo-capture=--rate=2"}));
   const int detect = WaitForStart(run_dir, "stereo-detect", 1, 60s);
   ASSERT_GT(detect, 0);
-  std::this_thread::sleep_for(6s);
+  // Past the launcher's startup window (scripts/launch STARTUP_S, 5 s): a
+  // process that dies sooner fails the launch instead of being restarted.
+  ASSERT_TRUE(detector.Hear(3, std::chrono::steady_clock::now() + 6s)) << "the detector published no corners";
   kill(detect, SIGKILL);
   ASSERT_GT(WaitForStart(run_dir, "stereo-detect", 2, 30s), 0);
-  std::this_thread::sleep_for(6s);
+  ASSERT_TRUE(detector.Hear(4)) << "the restarted detector published no corners";
   launch.Signal(SIGINT);
   const CommandResult result = launch.Wait(60);
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -55,7 +57,7 @@ TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
   EXPECT_TRUE(scan.complete()) << scan.problem;
   const std::vector<LogEvent> events = ReadLog(log);
   const auto images = FrameIds<widestereo::stereo_frame_t>(events, ws::channel::kStereoImages);
-  ASSERT_GE(images.size(), 15u) << "2 Hz for about 12 s";
+  ASSERT_GE(images.size(), 7u) << "the images of both detectors' corners";
   for (size_t i = 1; i < images.size(); ++i)
     EXPECT_EQ(images[i], images[i - 1] + 1) << "STEREO_IMAGES lost frames while stereo-detect restarted";
 
@@ -67,7 +69,7 @@ TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
     if (corners[i] != corners[i - 1] + 1) restart = i;
   ASSERT_GT(restart, 0u) << "the killed detector's frames are missing";
   EXPECT_GE(corners.size() - restart, 3u) << "the restarted detector published corners";
-  EXPECT_GE(Messages<widestereo::calibration_status_t>(events, ws::channel::kCalibrationStatus).size(), 10u);
+  EXPECT_GE(Messages<widestereo::calibration_status_t>(events, ws::channel::kCalibrationStatus).size(), 3u);
 
   // It replays: stereo-detect over the recorded images gives corners for all of them.
   const std::string replay = TempDir("launch_replay") + "/corners.lcmlog";

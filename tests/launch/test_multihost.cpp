@@ -4,12 +4,17 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <thread>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
 #include "launch_fixture.h"
+#include "lcm_io/channels.h"
+#include "runtime/wall_clock.h"
+#include "widestereo/process_status_t.hpp"
 
 namespace {
 
@@ -61,24 +66,67 @@ class TwoHosts {
   std::string error_;
 };
 
+// The newest counters of `channel` that `process` reported (PROCESS_STATUS)
+// in the recording of the launch in `run_dir` in a status stamped after
+// `after` (wall-clock microseconds); nullopt before there is one.
+std::optional<widestereo::channel_counters_t> Reported(const std::string& run_dir, const std::string& process,
+                                                       const std::string& channel, int64_t after = 0) {
+  for (const auto& entry : std::filesystem::directory_iterator(run_dir)) {
+    if (entry.path().extension() != ".lcmlog") continue;
+    const auto statuses =
+        Messages<widestereo::process_status_t>(ReadLog(entry.path().string()), ws::channel::kProcessStatus);
+    for (auto s = statuses.rbegin(); s != statuses.rend(); ++s)
+      if (s->name == process && s->utime > after)
+        for (const auto& c : s->channels)
+          if (c.channel == channel) return c;
+  }
+  return std::nullopt;
+}
+
+// Checks `done` every 200 ms for up to `timeout`; returns whether it held.
+bool PollUntil(std::chrono::seconds timeout, const std::function<bool()>& done) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(200ms);
+  }
+  return true;
+}
+
 TEST(MultiHost, CaptureOnOneHostCalibrationOnTheOther) {
   TwoHosts hosts;
   if (!hosts.error().empty()) GTEST_SKIP() << "network namespaces unavailable here: " << hosts.error();
   const std::string url = "udpm://239.255.76.67:7667?ttl=1&recv_buf_size=16777216";
   const std::string robot_dir = TempDir("multihost_robot"), compute_dir = TempDir("multihost_compute");
+  constexpr int kFrames = 35;  // captured on the robot
 
+  // The compute host records its bus: the processes' own counters say when
+  // they listen and when the last frame has gone through.
   Command compute(hosts.In("compute", LaunchCommand("config/launch/robot-network.yaml", url, compute_dir,
-                                                    {"--host", "compute", "--no-record"})));
+                                                    {"--host", "compute"})));
   ASSERT_GT(WaitForStart(compute_dir, "stereo-calibrate", 1, 60s), 0);
-  std::this_thread::sleep_for(2s);  // subscribed before the first frame
+  ASSERT_TRUE(PollUntil(60s, [&] {
+    return Reported(compute_dir, "stereo-detect", ws::channel::kStereoImages) &&
+           Reported(compute_dir, "stereo-calibrate", ws::channel::kStereoCorners);
+  })) << "stereo-detect and stereo-calibrate reported no subscription\n" << LaunchLog(compute_dir);
   const CommandResult robot = RunCommand(
       hosts.In("robot", LaunchCommand("config/launch/robot-network.yaml", url, robot_dir,
-                                      {"--host", "robot", "--no-record", "--append", "stereo-capture=--count=35",
+                                      {"--host", "robot", "--no-record", "--append", "stereo-capture=--count=" + std::to_string(kFrames),
                                        "--append", "stereo-capture=--rate=3"})),
       300);
   ASSERT_EQ(robot.exit_code, 0) << robot.output;
   EXPECT_NE(LaunchLog(robot_dir).find("stereo-capture finished (code 0)"), std::string::npos) << LaunchLog(robot_dir);
-  std::this_thread::sleep_for(3s);  // the last frames through detection
+  // Counted after the robot's last frame: every frame stereo-detect received
+  // handled, and its corners with the calibrator.
+  const int64_t sent = ws::WallMicros();
+  EXPECT_TRUE(PollUntil(60s, [&] {
+    const auto images = Reported(compute_dir, "stereo-detect", ws::channel::kStereoImages, sent);
+    const auto corners = Reported(compute_dir, "stereo-detect", ws::channel::kStereoCorners, sent);
+    const auto taken = Reported(compute_dir, "stereo-calibrate", ws::channel::kStereoCorners, sent);
+    return images && corners && taken && images->received > 0 &&
+           corners->published + images->dropped + images->skipped + images->rejected >= images->received &&
+           taken->received >= corners->published;
+  })) << "the frames did not all reach the calibrator\n" << LaunchLog(compute_dir);
 
   const CommandResult solve = RunCommand(hosts.In("compute", {BinDir() + "/stereo-command", "solve", "--out-url", url,
                                                               "--log-dir", compute_dir, "--quiet"}),

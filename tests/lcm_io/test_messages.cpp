@@ -66,7 +66,7 @@ camera_calibration_t Calibration(const std::string& name) {
 }
 
 TEST(Messages, EveryTypeRoundTrips) {
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.utime = 1;
   frame.frame_id = 7;
   frame.left = Gray(4, 3, 1);
@@ -79,7 +79,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   ExpectRoundTrip(frame);
   ExpectRoundTrip(frame.left);
 
-  stereo_corners_t corners;
+  stereo_corners_t corners{};
   corners.utime = 2;
   corners.frame_id = 7;
   corners.left = Corners();
@@ -202,7 +202,7 @@ TEST(Messages, ImageWhoseSizesDisagreeIsRejected) {
   msg.pixelformat = 12345;
   EXPECT_THROW(ws::ImageToMat(msg), ws::DecodeError);
   // Through the wire: a stereo frame carrying such an image.
-  stereo_frame_t frame;
+  stereo_frame_t frame{};
   frame.left = Gray(4, 3, 0);
   frame.right = Gray(4, 3, 0);
   frame.right.height = 30;
@@ -349,8 +349,12 @@ TEST(Messages, CornersAndCalibrationsAreChecked) {
   calib.field_domain[1] = calib.field_domain[3] = 2;
   calib.field_coeffs.assign(32, 1e-3);
   calib.nfield = 32;
+  calib.sensor_tilt[0] = 0.01;  // a sensor tilt: finite and below kMaxSensorTilt
+  calib.sensor_tilt[1] = -0.02;
   EXPECT_NO_THROW(ws::Validate(calib));
   for (auto bad : {+[](camera_calibration_t& c) { c.field_rows = 3; },
+                   +[](camera_calibration_t& c) { c.sensor_tilt[0] = 0.5; },
+                   +[](camera_calibration_t& c) { c.sensor_tilt[1] = std::nan(""); },
                    +[](camera_calibration_t& c) { c.field_coeffs.pop_back(), --c.nfield; },
                    +[](camera_calibration_t& c) { c.field_coeffs[5] = 2; },
                    +[](camera_calibration_t& c) { c.field_domain[1] = -2; },

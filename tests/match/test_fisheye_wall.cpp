@@ -28,7 +28,7 @@ TEST(FisheyeWall, BsplineThetaCalibrationGivesTheWallAtTwoMetres) {
   const std::string dir = TempDir("fisheye-wall");
   const ws::SimTruth truth = CaptureWall(dir, FisheyeSceneConfig(dir, "wall"), 1);
   const ws::StereoRig rig = TrueStereoRig(truth);
-  ASSERT_EQ(rig.left.distortion.kind, "bspline_theta");
+  ASSERT_EQ(rig.left.distortion.kind, ws::ModelKind::kBsplineTheta);
   const double z = truth.frames.front().wall_distance;
   struct Mode {
     const char* name;

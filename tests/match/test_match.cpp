@@ -252,7 +252,7 @@ TEST(MatchPipeline, EveryModelKindIsAdoptedLive) {
   frame.right = ws::MatToImage(shifted, 0);
   std::vector<LogEvent> events;
   int64_t utime = 1000000;
-  for (const std::string& kind : ws::ModelKinds()) {
+  for (const ws::ModelKind kind : ws::ModelKinds()) {
     const ws::Distortion d = std::visit(
         [](const auto& model) {
           const std::vector<double> zeros(size_t(model.NumCoeffs()), 0.0);
@@ -261,7 +261,7 @@ TEST(MatchPipeline, EveryModelKindIsAdoptedLive) {
         ws::MakeCalibrationModel(kind, {1.2, 6, 3}));
     auto calib = IdentityCalibration(320, 240, 200, 0.1);
     for (auto* camera : {&calib.left, &calib.right}) {
-      camera->model = d.kind;
+      camera->model = ws::ModelName(d.kind);
       camera->degree = d.degree;
       camera->knots = d.knots;
       camera->nknots = int(d.knots.size());
@@ -279,7 +279,7 @@ TEST(MatchPipeline, EveryModelKindIsAdoptedLive) {
                              "--out-url", "file://" + dir + "/out.lcmlog?mode=w"},
                             120);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const std::string& kind : ws::ModelKinds())
+  for (const std::string& kind : ws::ModelNames())
     EXPECT_NE(r.output.find(", " + kind + " model"), std::string::npos) << kind << "\n" << r.output;
   const auto out = ReadLog(dir + "/out.lcmlog");
   EXPECT_EQ(Messages<widestereo::disparity_t>(out, ws::channel::kStereoDisparity).size(), ws::ModelKinds().size());

@@ -15,8 +15,8 @@
 
 #include "lcm_io/image_codec.h"
 #include "match/match_node.h"
-#include "sim/sim_source.h"
 #include "sim/truth_calibration.h"
+#include "source/sim_source.h"
 
 namespace {
 

@@ -13,7 +13,7 @@ TEST(StereoRig, MessageOfARigGivesTheRigBack) {
   ws::StereoRig rig;
   rig.left = rig.right = ws::SimDefaultCamera(0.5);
   rig.right.fx *= 1.01;
-  rig.right.distortion = ws::Distortion{"poly6", 0, {}, {-0.2, 0.05, -0.004}};
+  rig.right.distortion = ws::Distortion{ws::ModelKind::kPoly6, 0, {}, {-0.2, 0.05, -0.004}};
   rig.R = Eigen::AngleAxisd(0.02, Eigen::Vector3d(0, 1, 0)).toRotationMatrix();
   rig.T = Eigen::Vector3d(-0.3, 0.01, 0);
   const widestereo::stereo_calibration_t msg = ws::MessageFromStereoRig(rig, 42);

@@ -92,7 +92,7 @@ TEST_P(AngleModelRoundTrip, ProjectOfUnprojectReturnsEveryPixelOfTheImageCircle)
 
 INSTANTIATE_TEST_SUITE_P(Models, AngleModelRoundTrip,
                          ::testing::Values(Kb4Camera(), FisheyeKneeCamera()),
-                         [](const auto& info) { return info.param.distortion.kind; });
+                         [](const auto& info) { return ModelName(info.param.distortion.kind); });
 
 TEST(FisheyeKneeLens, TheCameraFollowsItsCurve) {
   const CameraModel model = FisheyeKneeCamera();

@@ -66,8 +66,9 @@ void CheckJacobians(const Model& model, const NonRadialField& field,
 
 class Autodiff : public ::testing::TestWithParam<TestCamera> {};
 
-// Without a non-radial field, and with a 6 x 5 one (nonradial_field.h) over
-// the image of a camera of about 300 px focal length.
+// Without a non-radial part, with a 6 x 5 field (nonradial_field.h) over
+// the image of a camera of about 300 px focal length, and with the field and
+// a sensor tilt (sensor_tilt.h).
 void CheckPoints(const TestCamera& test, const NonRadialField& field) {
   const auto intrinsics = test.model.Intrinsics();
   std::visit(
@@ -79,11 +80,12 @@ void CheckPoints(const TestCamera& test, const NonRadialField& field) {
         for (const std::vector<double>& point :
              {std::vector<double>{0.0, 0.0, 2.0}, {1e-3, -2e-3, 1.0}, {0.3, 0.2, 1.5},
               {-1.1, 0.7, 0.9}, {1.4, -1.0, 1.0}, {2.3, 1.6, 1.0}}) {
-          if (!field.empty() && point[0] > 2) continue;
+          if (field.grid() && point[0] > 2) continue;
           std::ostringstream where;
           where << test.name << " at (" << point[0] << ", " << point[1] << ", " << point[2] << ")";
           CheckJacobians(model, field, {{intrinsics.begin(), intrinsics.end()}, coeffs, point},
-                         where.str() + (field.empty() ? "" : " with a field"));
+                         where.str() + (field.grid() ? " with a field" : "") +
+                             (field.tilt() ? " and a tilt" : ""));
         }
       },
       MakeModel(test.model.distortion, test.which));
@@ -92,6 +94,7 @@ void CheckPoints(const TestCamera& test, const NonRadialField& field) {
 TEST_P(Autodiff, JacobiansMatchCentralDifferences) {
   CheckPoints(GetParam(), NonRadialField());
   CheckPoints(GetParam(), NonRadialField(6, 5, {-2.1, 2.1, -1.6, 1.6}));
+  CheckPoints(GetParam(), NonRadialField(6, 5, {-2.1, 2.1, -1.6, 1.6}, true));
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, Autodiff, ::testing::ValuesIn(TestCameras()),

@@ -192,7 +192,7 @@ TEST(BsplineDistortion, StoresAllAlphasAndRestoresTheEstimatedOnes) {
   const BsplineDistortion spline = BsplineDistortion::ForCalibration({2.0, 4, 3});
   const std::vector<double> estimated{0.01, 0.02, -0.01, 0.03, 0.0};
   const Distortion stored = spline.ToData(estimated.data());
-  EXPECT_EQ(stored.kind, "bspline");
+  EXPECT_EQ(stored.kind, ModelKind::kBspline);
   EXPECT_EQ(stored.degree, 3);
   EXPECT_EQ(stored.knots, spline.knots());
   EXPECT_EQ(stored.coeffs, (std::vector<double>{0, 0, 0.01, 0.02, -0.01, 0.03, 0.0}));

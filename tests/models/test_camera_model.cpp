@@ -99,16 +99,14 @@ TEST(TheiaLikeCamera, HasAbout125DegreesHorizontalField) {
     EXPECT_NEAR(camera.DistortionCurve(table.ideal[i] / 1.3), d[i], 1e-9);
 }
 
-// poly6 is OpenCV's 5-coefficient model (k1, k2, p1, p2, k3): the same pixels.
-TEST(Poly6Camera, ProjectsAsOpenCvDoes) {
-  CameraModel model = testing::WithTangential(TheiaLikeCamera());
-  model.distortion = {"poly6", 0, {}, {0.021, -0.0043, 0.00021}};
+// The camera projects a grid of points as cv::projectPoints does with the
+// distortion vector `dist` and the camera's K.
+void ExpectProjectsAsOpenCv(const CameraModel& model, const std::vector<double>& dist) {
   const Camera camera(model);
   std::vector<cv::Point3d> points;
   for (double y = -1.5; y <= 1.5; y += 0.25)
     for (double x = -2.0; x <= 2.0; x += 0.25) points.emplace_back(2 * x, 2 * y, 2.0);
   const cv::Matx33d K(model.fx, 0, model.cx, 0, model.fy, model.cy, 0, 0, 1);
-  const std::vector<double> dist{0.021, -0.0043, model.p1, model.p2, 0.00021};
   std::vector<cv::Point2d> expected;
   cv::projectPoints(points, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, dist, expected);
   for (size_t i = 0; i < points.size(); ++i) {
@@ -118,9 +116,44 @@ TEST(Poly6Camera, ProjectsAsOpenCvDoes) {
   }
 }
 
+// poly6 is OpenCV's 5-coefficient model (k1, k2, p1, p2, k3): the same pixels.
+TEST(Poly6Camera, ProjectsAsOpenCvDoes) {
+  CameraModel model = testing::WithTangential(TheiaLikeCamera());
+  model.distortion = {ModelKind::kPoly6, 0, {}, {0.021, -0.0043, 0.00021}};
+  ExpectProjectsAsOpenCv(model, {0.021, -0.0043, model.p1, model.p2, 0.00021});
+}
+
+// A sensor tilt (models/sensor_tilt.h) is OpenCV's tilted model
+// (CALIB_TILTED_MODEL's tauX, tauY): the same pixels; and unprojection
+// inverts it, with a field on top, over the whole image.
+TEST(TiltedCamera, ProjectsAsOpenCvDoesAndUnprojectsEveryPixel) {
+  CameraModel model = testing::WithTangential(TheiaLikeCamera());
+  model.distortion = {ModelKind::kPoly6, 0, {}, {0.021, -0.0043, 0.00021}};
+  model.nonradial.tilt = {0.02, -0.015};
+  std::vector<double> dist(14, 0.0);
+  dist[0] = 0.021, dist[1] = -0.0043, dist[2] = model.p1, dist[3] = model.p2, dist[4] = 0.00021;
+  dist[12] = model.nonradial.tilt[0], dist[13] = model.nonradial.tilt[1];
+  ExpectProjectsAsOpenCv(model, dist);
+  model.distortion = TheiaLikeCamera().distortion;
+  model.nonradial.cols = model.nonradial.rows = 4;
+  model.nonradial.domain = {-2, 2, -1.5, 1.5};
+  for (int k = 0; k < 32; ++k) model.nonradial.coeffs.push_back(1e-3 * std::cos(0.7 * k));
+  for (const CameraModel& m : {CameraModel(TheiaLikeCamera()), model}) {
+    CameraModel tilted = m;
+    tilted.nonradial.tilt = {0.02, -0.015};
+    const Camera c(tilted);
+    for (int v = 0; v <= 960; v += 40)
+      for (int u = 0; u <= 1280; u += 40) {
+        const std::optional<Eigen::Vector3d> ray = c.Unproject({u, v});
+        ASSERT_TRUE(ray) << u << ", " << v;
+        EXPECT_LT((*c.Project(*ray) - Eigen::Vector2d(u, v)).norm(), 1e-6) << u << ", " << v;
+      }
+  }
+}
+
 TEST(Unproject, ReportsFailureWhereTheDistortionFolds) {
   CameraModel model = TheiaLikeCamera();
-  model.distortion = {"poly6", 0, {}, {-0.3, 0, 0}};  // r' = r - 0.3 r^3 peaks at r' = 0.70
+  model.distortion = {ModelKind::kPoly6, 0, {}, {-0.3, 0, 0}};  // r' = r - 0.3 r^3 peaks at r' = 0.70
   const Camera camera(model);
   const std::optional<Eigen::Vector3d> inside = camera.Unproject({640 + 0.5 * model.fx, 480});
   ASSERT_TRUE(inside);
@@ -148,27 +181,33 @@ TEST(Camera, RejectsInconsistentModels) {
   bad.distortion.coeffs[3] = INFINITY;
   EXPECT_THROW(Camera{bad}, std::invalid_argument);
   bad = model;
-  bad.distortion.kind = "fisheye";
+  bad.distortion.kind = static_cast<ModelKind>(kNumModelKinds);  // outside the table
   EXPECT_THROW(Camera{bad}, std::invalid_argument);
-  bad.distortion = {"poly6", 3, {}, {0, 0, 0}};
+  bad.distortion = {ModelKind::kPoly6, 3, {}, {0, 0, 0}};
   EXPECT_THROW(Camera{bad}, std::invalid_argument);
 }
 
 TEST(ModelRegistry, KnowsEveryModelByKind) {
-  EXPECT_EQ(ModelKinds(),
-            (std::vector<std::string>{"bspline", "poly6", "poly12", "kb4", "bspline_theta"}));
+  EXPECT_EQ(ModelNames(), (std::vector<std::string>{"bspline", "poly6", "poly12", "kb4", "bspline_theta"}));
   const CalibrationSetup setup{2.5, 8, 3};
-  for (const auto& [kind, num_coeffs] :
+  for (const auto& [name, num_coeffs] :
        std::vector<std::pair<std::string, int>>{
            {"bspline", 9}, {"poly6", 3}, {"poly12", 6}, {"kb4", 4}, {"bspline_theta", 9}}) {
+    const ModelKind kind = ParseModelKind(name);
+    EXPECT_EQ(ModelName(kind), name);
     const AnyDistortionModel model = MakeCalibrationModel(kind, setup);
+    EXPECT_EQ(KindOf(model), kind);
     std::visit(
-        [&](const auto& m) {
-          EXPECT_EQ(m.Kind(), kind);
+        [&, kind = kind, num_coeffs = num_coeffs](const auto& m) {
+          EXPECT_EQ(m.kKind, kind);
           EXPECT_EQ(m.NumCoeffs(), num_coeffs) << kind;
           const std::vector<double> coeffs(m.NumCoeffs(), 0.01);
           const Distortion stored = m.ToData(coeffs.data());
           EXPECT_EQ(stored.kind, kind);
+          // The table's identifiable coefficients: those stored but the gauge's.
+          EXPECT_EQ(stored.coeffs.size(), coeffs.size() + Traits(kind).gauge_fixed) << kind;
+          if (!Traits(kind).spline) EXPECT_EQ(Traits(kind).terms, num_coeffs) << kind;
+          EXPECT_EQ(m.CoeffName(0).rfind(Traits(kind).coeff_key, 0), 0u) << kind;
           EXPECT_EQ(m.EstimatedCoeffs(stored.coeffs), coeffs);
           // Built back from what was stored, it is the same function.
           const DistortionFunction curve(stored);
@@ -177,7 +216,7 @@ TEST(ModelRegistry, KnowsEveryModelByKind) {
         model);
   }
   try {
-    MakeCalibrationModel("fisheye", setup);
+    ParseModelKind("fisheye");
     FAIL() << "no error";
   } catch (const std::invalid_argument& error) {
     EXPECT_EQ(std::string(error.what()),

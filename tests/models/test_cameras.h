@@ -52,11 +52,11 @@ inline std::vector<TestCamera> TestCameras() {
       {"theia_quintic_bspline", CameraFromLensTable(TheiaLikeLensTable(), LensSensor{}, 5),
        Coefficients::kAll},
       {"identifiable_bspline",
-       WithTangential(TheiaFittedBy(MakeCalibrationModel("bspline", setup))),
+       WithTangential(TheiaFittedBy(MakeCalibrationModel(ModelKind::kBspline, setup))),
        Coefficients::kIdentifiable},
-      {"poly6", WithTangential(TheiaFittedBy(MakeCalibrationModel("poly6", setup))),
+      {"poly6", WithTangential(TheiaFittedBy(MakeCalibrationModel(ModelKind::kPoly6, setup))),
        Coefficients::kAll},
-      {"poly12", WithTangential(TheiaFittedBy(MakeCalibrationModel("poly12", setup))),
+      {"poly12", WithTangential(TheiaFittedBy(MakeCalibrationModel(ModelKind::kPoly12, setup))),
        Coefficients::kAll},
   };
 }
@@ -66,7 +66,7 @@ inline CameraModel Kb4Camera() {
   CameraModel camera;
   camera.image_width = 1280, camera.image_height = 960;
   camera.fx = 301.3, camera.fy = 299.2, camera.cx = 641.7, camera.cy = 477.4;
-  camera.distortion = Distortion{"kb4", 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}};
+  camera.distortion = Distortion{ModelKind::kKb4, 0, {}, {-0.021, 0.0043, -0.0029, 0.00042}};
   return camera;
 }
 
@@ -74,8 +74,8 @@ inline CameraModel Kb4Camera() {
 inline std::vector<CameraModel> KindCameras() {
   const CalibrationSetup setup{2.7, 8, 3};
   return {WithTangential(TheiaLikeCamera()),
-          WithTangential(TheiaFittedBy(MakeCalibrationModel("poly6", setup))),
-          WithTangential(TheiaFittedBy(MakeCalibrationModel("poly12", setup))), Kb4Camera(),
+          WithTangential(TheiaFittedBy(MakeCalibrationModel(ModelKind::kPoly6, setup))),
+          WithTangential(TheiaFittedBy(MakeCalibrationModel(ModelKind::kPoly12, setup))), Kb4Camera(),
           FisheyeKneeCamera()};
 }
 

@@ -24,7 +24,7 @@ TEST(Collocation, InterpolatesEveryRowOfTheShippedTable) {
   const LensTable table = TheiaLikeLensTable();
   ASSERT_EQ(table.ideal.size(), 35u);
   const Distortion fit = FitBsplineByCollocation(table, 3);
-  EXPECT_EQ(fit.kind, "bspline");
+  EXPECT_EQ(fit.kind, ModelKind::kBspline);
   EXPECT_EQ(fit.coeffs.size(), 35u);                   // square system (Eq. 9)
   EXPECT_EQ(fit.knots, SchoenbergWhitneyKnots(table.ideal, 3));  // knots of Eq. 8
   ExpectInterpolates(fit, table);
@@ -60,7 +60,7 @@ LensTable TableOf(const std::vector<double>& k) {
   return table;
 }
 
-void ExpectRecovers(const std::string& kind, const std::vector<double>& k) {
+void ExpectRecovers(ModelKind kind, const std::vector<double>& k) {
   const LensTable table = TableOf(k);
   const Distortion fit =
       FitByLeastSquares(MakeModel(Distortion{kind, 0, {}, {}}, Coefficients::kAll), table);
@@ -71,15 +71,15 @@ void ExpectRecovers(const std::string& kind, const std::vector<double>& k) {
   EXPECT_LT(errors.max_abs, 1e-12) << kind;
 }
 
-TEST(PolynomialFit, RecoversPoly6FromItsOwnTable) { ExpectRecovers("poly6", {0.021, -0.0043, 0.00021}); }
+TEST(PolynomialFit, RecoversPoly6FromItsOwnTable) { ExpectRecovers(ModelKind::kPoly6, {0.021, -0.0043, 0.00021}); }
 
 TEST(PolynomialFit, RecoversPoly12FromItsOwnTable) {
-  ExpectRecovers("poly12", {0.02, 0.013, -0.011, 0.0031, -4.2e-4, 2.1e-5});
+  ExpectRecovers(ModelKind::kPoly12, {0.02, 0.013, -0.011, 0.0031, -4.2e-4, 2.1e-5});
 }
 
 TEST(PolynomialFit, FitsAnIdentifiableSplineToo) {
   const LensTable table = ScaleLensTable(TheiaLikeLensTable(), 1 / 1.3);
-  const Distortion fit = FitByLeastSquares(MakeCalibrationModel("bspline", {2.7, 8, 3}), table);
+  const Distortion fit = FitByLeastSquares(MakeCalibrationModel(ModelKind::kBspline, {2.7, 8, 3}), table);
   EXPECT_EQ(fit.coeffs[0], 0.0);
   EXPECT_EQ(fit.coeffs[1], 0.0);
   EXPECT_LT(MeasureFitErrors(fit, table).max_abs, 2e-4);  // normalized radius: 0.26 um
@@ -87,7 +87,7 @@ TEST(PolynomialFit, FitsAnIdentifiableSplineToo) {
 
 TEST(FitErrors, MeasuresAtTheRowsAndBetweenThem) {
   const LensTable table{{0, 1, 2, 3}, {0, 1, 2, 3}};
-  const Distortion constant{"poly6", 0, {}, {0.01, 0, 0}};  // r' = r + 0.01 r^3
+  const Distortion constant{ModelKind::kPoly6, 0, {}, {0.01, 0, 0}};  // r' = r + 0.01 r^3
   const FitErrors errors = MeasureFitErrors(constant, table, 10);
   EXPECT_NEAR(errors.max_abs, 0.27, 1e-12);
   EXPECT_NEAR(errors.rms, std::sqrt((0.01 * 0.01 + 0.08 * 0.08 + 0.27 * 0.27) / 4), 1e-12);

@@ -23,9 +23,9 @@ int main(int argc, char** argv) {
   const std::string dir = argv[1];
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.08, Eigen::Vector3d(1, 2, 0.5).normalized()).toRotationMatrix();
   for (const ws::CameraModel& model : ws::testing::KindCameras()) {
-    const std::string kind = model.distortion.kind;
+    const std::string kind = ws::ModelName(model.distortion.kind);
     ws::calib::CalibrationFile file;
-    file.model = kind;
+    file.model = model.distortion.kind;
     file.mono = true;
     file.left = model;
     ws::calib::WriteCalibrationFile(dir + "/" + kind + ".yaml", file);

@@ -8,9 +8,11 @@
 #include <thread>
 
 #include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
 
 #include "lcm_io/channels.h"
 #include "test_support.h"
+#include "widestereo/calibration_status_t.hpp"
 
 namespace {
 
@@ -27,6 +29,32 @@ std::vector<std::vector<uint8_t>> Payloads(const std::string& log, const std::st
 }
 
 std::string FileUrl(const std::string& path, const std::string& query) { return "file://" + path + "?" + query; }
+
+// The views a stereo-calibrate status counts.
+struct ViewCounts {
+  int left = -1, right = -1, stereo = -1;
+  bool operator==(const ViewCounts& o) const { return left == o.left && right == o.right && stereo == o.stereo; }
+};
+
+ViewCounts CountsOf(const widestereo::calibration_status_t& s) { return {s.views_left, s.views_right, s.views_stereo}; }
+
+// The last CALIBRATION_STATUS heard on a bus.
+struct StatusListener {
+  explicit StatusListener(const std::string& url) : lcm(url) {
+    lcm.subscribeFunction(
+        ws::channel::kCalibrationStatus,
+        +[](const lcm::ReceiveBuffer*, const std::string&, const widestereo::calibration_status_t* s,
+            StatusListener* self) {
+          self->last = CountsOf(*s);
+          ++self->heard;
+        },
+        this);
+  }
+  bool Until(double seconds, const std::function<bool()>& done) { return HandleUntil(lcm, seconds, done); }
+  lcm::LCM lcm;
+  ViewCounts last;
+  int heard = 0;
+};
 
 struct Outputs {
   std::string corners_log, calibration_log, calibration_file;
@@ -69,25 +97,34 @@ TEST(Replay, LiveReplayOfTheCornersGivesTheBatchCalibration) {
   const std::string dir = TempDir("replay_live");
   const std::string url = UniqueUdpmUrl();
   const std::string live_file = dir + "/live.yaml";
-  Command calibrate({"stereo-calibrate", "--in-url", url, "--out-url", url, "--out", live_file, "--state",
-                     dir + "/state.yaml", "--log-dir", dir, "--quiet"});
-  std::this_thread::sleep_for(1s);  // subscribed before the first message
-  const CommandResult player = RunCommand({"lcm-logplayer", "--speed=4", "--lcm-url=" + url, corners}, 120);
-  ASSERT_EQ(player.exit_code, 0) << player.output;
-  std::this_thread::sleep_for(500ms);
-  const CommandResult solve = RunCommand({"stereo-command", "solve", "--out-url", url, "--log-dir", dir, "--quiet"});
-  ASSERT_EQ(solve.exit_code, 0) << solve.output;
-  for (int i = 0; i < 1200 && !std::filesystem::exists(live_file); ++i) std::this_thread::sleep_for(100ms);
-  calibrate.Signal(SIGINT);
-  EXPECT_EQ(calibrate.Wait(60).exit_code, 0);
-  ASSERT_TRUE(std::filesystem::exists(live_file)) << calibrate.Output();
-
   const std::string batch_file = dir + "/batch.yaml";
   const CommandResult batch =
       RunCommand({"stereo-calibrate", "--once", "--in-url", FileUrl(corners, "speed=0"), "--out-url",
                   FileUrl(dir + "/batch.lcmlog", "mode=w"), "--out", batch_file, "--log-dir", dir, "--quiet"},
                  180);
   ASSERT_EQ(batch.exit_code, 0) << batch.output;
+  const auto batch_statuses =
+      Messages<widestereo::calibration_status_t>(ReadLog(dir + "/batch.lcmlog"), ws::channel::kCalibrationStatus);
+  ASSERT_FALSE(batch_statuses.empty());
+  const ViewCounts every_view = CountsOf(batch_statuses.back());
+
+  StatusListener bus(url);
+  Command calibrate({"stereo-calibrate", "--in-url", url, "--out-url", url, "--out", live_file, "--state",
+                     dir + "/state.yaml", "--log-dir", dir, "--quiet"});
+  // Its first status: it is subscribed before the first corners are played.
+  ASSERT_TRUE(bus.Until(30, [&] { return bus.heard > 0; })) << calibrate.Output();
+  const CommandResult player = RunCommand({"lcm-logplayer", "--speed=4", "--lcm-url=" + url, corners}, 120);
+  ASSERT_EQ(player.exit_code, 0) << player.output;
+  // Solved once it holds every view the batch run took.
+  ASSERT_TRUE(bus.Until(60, [&] { return bus.last == every_view; }))
+      << "views " << bus.last.left << "/" << bus.last.right << "/" << bus.last.stereo << ", the batch run's "
+      << every_view.left << "/" << every_view.right << "/" << every_view.stereo;
+  const CommandResult solve = RunCommand({"stereo-command", "solve", "--out-url", url, "--log-dir", dir, "--quiet"});
+  ASSERT_EQ(solve.exit_code, 0) << solve.output;
+  for (int i = 0; i < 1200 && !std::filesystem::exists(live_file); ++i) std::this_thread::sleep_for(100ms);
+  calibrate.Signal(SIGINT);
+  EXPECT_EQ(calibrate.Wait(60).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(live_file)) << calibrate.Output();
   EXPECT_EQ(ReadFileText(live_file), ReadFileText(batch_file));
 }
 

@@ -1,6 +1,7 @@
 // Real processes over real LCM: replay of a file:// log to its end with bad
-// messages rejected and counted, an empty and a damaged input log, and two
-// processes talking over udpm on this host.
+// messages rejected and counted, an empty and a damaged input log, two
+// processes talking over udpm on this host, and a sampling subscriber's
+// counts over udpm.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include <thread>
 
 #include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "runtime/process.h"
 #include "test_support.h"
 #include "widestereo/process_status_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -124,6 +127,46 @@ TEST(ProcessLcm, TwoProcessesTalkOverUdpm) {
   const auto c = LastCounters(dir + "/listener.lcmlog", "stereo-status", "PROCESS_STATUS");
   EXPECT_GE(c.received, 2);
   EXPECT_EQ(c.rejected, 0);
+}
+
+// A subscriber that samples (stereo-view): the frames it skips undecoded are
+// counted as skipped, never as lost; a frame that really went missing is.
+TEST(ProcessLcm, ASampledSubscriptionCountsSkipsApartFromLosses) {
+  const std::string dir = TempDir("sampled");
+  ws::ProcessOptions options;
+  options.name = "sampler";
+  options.in_url = UniqueUdpmUrl();
+  options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
+  options.log_dir = dir;
+  options.quiet = true;
+  ws::Process process(options);
+  int calls = 0;
+  std::vector<int64_t> handled;
+  process.SubscribeSampled<widestereo::stereo_frame_t>(
+      ws::channel::kStereoImages, [&] { return calls++ % 3 == 0; },
+      [&](const widestereo::stereo_frame_t& frame) { handled.push_back(frame.frame_id); });
+  std::thread run([&] { process.Run(); });
+
+  lcm::LCM bus(options.in_url);
+  widestereo::stereo_frame_t frame{};
+  frame.left = ws::MatToImage(cv::Mat(4, 4, CV_8U, cv::Scalar(7)), 1);
+  frame.right = frame.left;
+  const ws::ChannelCounters& counters = process.Counters(ws::channel::kStereoImages);
+  for (int64_t id : {1, 2, 3, 4, 5, 7, 8, 9}) {  // 6 lost on the way
+    frame.frame_id = id;
+    frame.utime = id;
+    bus.publish(ws::channel::kStereoImages, &frame);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (counters.received.load() < (id < 6 ? id : id - 1) && std::chrono::steady_clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  process.Stop();
+  run.join();
+  EXPECT_EQ(counters.received.load(), 8);
+  EXPECT_EQ(handled, (std::vector<int64_t>{1, 4, 8}));
+  EXPECT_EQ(counters.skipped.load(), 5);
+  EXPECT_EQ(counters.dropped.load(), 1) << "frame 6, and only it";
+  EXPECT_EQ(counters.rejected.load(), 0);
 }
 
 }  // namespace

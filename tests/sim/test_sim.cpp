@@ -15,7 +15,7 @@
 #include "detect/corner_detector.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
-#include "sim/sim_source.h"
+#include "source/sim_source.h"
 #include "sim/simulator.h"
 #include "source/make_source.h"
 #include "test_support.h"
@@ -54,7 +54,7 @@ TEST(SimConfig, DefaultFileDescribesTheRigAndScene) {
   EXPECT_EQ(config.left.image_height, 960);
   EXPECT_NEAR(config.left.fx, 1.3 / 0.00375, 1e-9);
   EXPECT_EQ(config.left.cx, 640);
-  EXPECT_EQ(config.left.distortion.kind, "bspline");
+  EXPECT_EQ(config.left.distortion.kind, ModelKind::kBspline);
   EXPECT_EQ(config.right.distortion.coeffs, config.left.distortion.coeffs);
   // The table in the file and the one compiled into the library give one lens.
   EXPECT_EQ(config.left.distortion.coeffs, SimDefaultCamera().distortion.coeffs);
@@ -75,7 +75,7 @@ TEST(SimConfig, EveryShippedConfigLoads) {
     EXPECT_NO_THROW(Simulator{config});
   }
   const SimConfig poly6 = LoadSimConfig(ConfigPath("poly6.yaml"));
-  EXPECT_EQ(poly6.left.distortion.kind, "poly6");
+  EXPECT_EQ(poly6.left.distortion.kind, ModelKind::kPoly6);
   EXPECT_EQ(poly6.left.distortion.coeffs, (std::vector<double>{-0.06, 0.004, -0.0001}));
   EXPECT_EQ(poly6.left.fx, 450);
 }
@@ -88,7 +88,7 @@ TEST(SimConfig, TableLensesCanBeFittedWithEveryModel) {
         << "rig: {baseline: 0.3, left: {lens: 'table:" << SourceDir() << "/config/lenses/theia-my125m-like.csv', fit: "
         << fit << "}}\nscene: {wall: {frames: 1}}\n";
     const SimConfig config = LoadSimConfig(dir + "/" + fit + ".yaml");
-    EXPECT_EQ(config.left.distortion.kind, fit);
+    EXPECT_EQ(config.left.distortion.kind, ParseModelKind(fit));
     // Each fit follows the table closely: the image corner's ray agrees with the spline's within a few pixels.
     const Camera fitted(config.left), spline(SimDefaultCamera());
     const auto ray = spline.Unproject(Eigen::Vector2d(0, 0));

@@ -29,7 +29,7 @@ double OffAxisDeg(const cv::Vec3d& X) { return std::atan2(std::hypot(X[0], X[1])
 
 TEST(SimFisheye, ConfigDescribesTheKneeLensRig) {
   const SimConfig& config = FisheyeSimulator().config();
-  EXPECT_EQ(config.left.distortion.kind, "bspline_theta");
+  EXPECT_EQ(config.left.distortion.kind, ModelKind::kBsplineTheta);
   EXPECT_EQ(config.left.distortion.coeffs, FisheyeKneeCamera().distortion.coeffs);
   EXPECT_EQ(config.right.fx, 297.5);
   EXPECT_NEAR(config.max_theta[0], 100 * M_PI / 180, 1e-12);

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "lcm_io/image_codec.h"
-#include "view/base64.h"
 #include "view/disparity_colour.h"
 
 namespace {
@@ -55,15 +54,6 @@ TEST(DisparityColour, LatLonMetresAreTheRangeStraightAhead) {
   // psi_l = 0, psi_r = -d / f: range = baseline cos(psi_r) / sin(psi_l - psi_r).
   EXPECT_NEAR(DisparityMetres(msg, 10), 0.12 * std::cos(10.0 / 500) / std::sin(10.0 / 500), 1e-12);
   EXPECT_TRUE(std::isinf(DisparityMetres(msg, 0)));
-}
-
-TEST(Base64, Rfc4648Vectors) {
-  auto b64 = [](const std::string& s) { return Base64(reinterpret_cast<const uint8_t*>(s.data()), s.size()); };
-  EXPECT_EQ(b64(""), "");
-  EXPECT_EQ(b64("f"), "Zg==");
-  EXPECT_EQ(b64("fo"), "Zm8=");
-  EXPECT_EQ(b64("foo"), "Zm9v");
-  EXPECT_EQ(b64("foobar"), "Zm9vYmFy");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ import signal
 import socket
 import subprocess
 import time
+import urllib.error
 import urllib.request
 
 import cv2
@@ -108,7 +109,10 @@ def bus(tmp_path, request):
 def browser():
     options = webdriver.ChromeOptions()
     for flag in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1400,1200",
-                 "--enable-unsafe-swiftshader", "--use-angle=swiftshader"):
+                 "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
+                 # WebGL in SwiftShader, the page composited in software: SwiftShader's
+                 # compositing alone took two thirds of a core here.
+                 "--disable-gpu-compositing"):
         options.add_argument(flag)
     driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
     driver.set_script_timeout(120)  # a loaded machine's renderer may lag behind
@@ -143,8 +147,9 @@ def key_file(folder):
 def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, browser, tmp_path):
     key = key_file(tmp_path)
     report = os.path.join(bus.folder, "report.json")
-    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop"])
-    bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05"])
+    # A keyed rig: every process has the key (images and corners are signed).
+    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key])
+    bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
                                    "--report", report, "--key-file", key])
@@ -226,6 +231,15 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
                 baseline: l.dataset.baseline,
                 ticks: [...l.querySelectorAll('span')].map(s => [s.dataset.disparity, s.dataset.metres])};""")
     screenshot(browser, bus, "depth.png")
+    src = browser.execute_script("return document.querySelector('#disparity').src")
+    assert "/blob/" in src and urllib.request.urlopen(src, timeout=5).headers["Content-Type"] == "image/jpeg"
+    with pytest.raises(urllib.error.HTTPError, match="404"):
+        urllib.request.urlopen("http://127.0.0.1:%d/blob/999999999" % port, timeout=5)
+
+    # A second stereo-view on the same port is refused, not handed half the browsers.
+    second = bus.start("stereo-view", ["--port", str(port)])
+    assert second.wait(timeout=30) == 1
+    assert "cannot listen on 127.0.0.1:%d" % port in bus.output("stereo-view")
 
     # A browser that stops reading: its events are skipped, the input goes on.
     stalled = socket.socket()
@@ -233,10 +247,21 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     stalled.connect(("127.0.0.1", port))
     stalled.sendall(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
     stalled_at = time.time()
-    until(lambda: int(browser.find_element(By.TAG_NAME, "body").get_attribute("data-browser-skipped") or 0) > 0, 60,
-          "stereo-view counts the stalled browser's skipped events")
+
+    def skipped_on_page():  # a reading browser skips too: newest-only events coalesce between its reads
+        return int(browser.find_element(By.TAG_NAME, "body").get_attribute("data-browser-skipped") or 0)
+    skipped_at_stall = skipped_on_page()
+    until(lambda: skipped_on_page() > skipped_at_stall, 60, "stereo-view counts the stalled browser's skipped events")
     until(lambda: "frame" in browser.find_element(By.CSS_SELECTOR, "#disparity-figure .info").text, 5,
           "the reading page still updated")
+
+    def heartbeat_after_stall():
+        try:
+            return any(t > stalled_at * 1e6 and c["browsers"].skipped > skipped_at_stall
+                       for t, c in view_counters(bus, view.pid))
+        except ValueError:  # the recording's last event half-written
+            return False
+    until(heartbeat_after_stall, 30, "a stereo-view heartbeat after the stall")
     stalled.close()
     bus.stop()
 

@@ -15,11 +15,14 @@ for (const tab of document.querySelectorAll(".tab")) {
 }
 
 // ---- drawing helpers --------------------------------------------------------
-function loadImage(jpeg) {
+// An image an event names (blob/ID), or null when stereo-view no longer
+// keeps it (a newer event follows).
+function loadImage(src) {
   return new Promise((resolve) => {
     const img = new Image();
     img.onload = () => resolve(img);
-    img.src = "data:image/jpeg;base64," + jpeg;
+    img.onerror = () => resolve(null);
+    img.src = src;
   });
 }
 
@@ -90,7 +93,11 @@ function drawPair() {
 async function showFrame(frame, corners) {
   if (!corners && Date.now() - state.detectedAt < 30000) return;
   const images = {};
-  for (const side of ["left", "right"]) if (frame[side]) images[side] = await loadImage(frame[side].jpeg);
+  for (const side of ["left", "right"]) {
+    if (!frame[side]) continue;
+    images[side] = await loadImage(frame[side].src);
+    if (!images[side]) return;
+  }
   state.frame = frame;
   state.images = images;
   state.corners = corners;
@@ -189,6 +196,7 @@ for (const button of document.querySelectorAll("button.command")) {
 async function showRectified(event) {
   for (const side of ["left", "right"]) {
     const canvas = $("#rect-" + side + " canvas"), img = await loadImage(event[side]);
+    if (!img) return;
     canvas.width = img.width; canvas.height = img.height;
     const ctx = canvas.getContext("2d");
     ctx.drawImage(img, 0, 0);
@@ -203,7 +211,7 @@ async function showRectified(event) {
 }
 
 function showDisparity(event) {
-  $("#disparity").src = "data:image/jpeg;base64," + event.jpeg;
+  $("#disparity").src = event.src;
   $("#disparity-figure").dataset.frameId = event.frame_id;
   const legend = $("#legend");
   legend.replaceChildren();
@@ -246,7 +254,7 @@ function showHealth(health) {
 // y down, z ahead; seen from behind the cameras.
 const cloudView = (() => {
   const container = $("#cloud");
-  let renderer = null, camera, controls, scene, points = null, last = null, framed = false, pointSize = 0.01;
+  let renderer = null, camera, controls, scene, points = null, last = null, xyz = null, framed = false, pointSize = 0.01;
   try {
     renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
     scene = new THREE.Scene();
@@ -271,11 +279,16 @@ const cloudView = (() => {
     camera.updateProjectionMatrix();
     renderer.render(scene, camera);
   }
-  function show(event) {
-    last = event || last;
+  // A cloud event: its points fetched (float32 x y z, little-endian), then drawn.
+  async function show(event) {
+    const reply = await fetch(event.src);
+    if (!reply.ok) return;  // no longer kept: a newer cloud follows
+    last = event;
+    xyz = new Float32Array(await reply.arrayBuffer());
+    draw();
+  }
+  function draw() {
     if (!last) return;
-    const bytes = Uint8Array.from(atob(last.xyz), (c) => c.charCodeAt(0));
-    const xyz = new Float32Array(bytes.buffer);
     container.dataset.frameId = last.frame_id;
     container.dataset.shown = xyz.length / 3;
     $("#cloud-figure .info").textContent = `frame ${last.frame_id}: ${last.npoints} points, ${xyz.length / 3} shown`;
@@ -313,7 +326,7 @@ const cloudView = (() => {
     scene.add(points);
     renderer.render(scene, camera);
   }
-  $("#colour-by").addEventListener("change", () => show(null));
+  $("#colour-by").addEventListener("change", draw);
   return { show, resize };
 })();
 

@@ -1,4 +1,4 @@
-#include "capture/frame_providers.h"
+#include "fake_cameras/frame_providers.h"
 
 #include <cctype>
 #include <filesystem>
@@ -11,7 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/camera_error.h"
-#include "capture/sim_frames.h"
+#include "fake_cameras/sim_frames.h"
 
 namespace ws {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "capture/frame_providers.h"
+#include "fake_cameras/frame_providers.h"
 
 namespace ws {
 

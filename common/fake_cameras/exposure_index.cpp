@@ -1,4 +1,4 @@
-#include "capture/exposure_index.h"
+#include "fake_cameras/exposure_index.h"
 
 #include <cstdlib>
 

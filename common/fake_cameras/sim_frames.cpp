@@ -1,10 +1,10 @@
-#include "capture/sim_frames.h"
+#include "fake_cameras/sim_frames.h"
 
 #include <memory>
 #include <utility>
 #include <vector>
 
-#include "sim/sim_source.h"
+#include "source/sim_source.h"
 
 namespace ws {
 

@@ -14,9 +14,9 @@
 #include <opencv2/core.hpp>
 
 #include "capture/camera_frame.h"
-#include "capture/exposure_index.h"
-#include "capture/fake_gige_camera.h"
-#include "capture/frame_providers.h"
+#include "fake_cameras/exposure_index.h"
+#include "fake_cameras/fake_gige_camera.h"
+#include "fake_cameras/frame_providers.h"
 
 namespace ws {
 

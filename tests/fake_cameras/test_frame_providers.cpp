@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/camera_error.h"
-#include "capture/frame_providers.h"
+#include "fake_cameras/frame_providers.h"
 #include "test_support.h"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "capture/aravis_source.h"
+#include "source/aravis_source.h"
 
 #include <chrono>
 

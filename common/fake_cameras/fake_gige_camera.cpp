@@ -1,4 +1,4 @@
-#include "capture/fake_gige_camera.h"
+#include "fake_cameras/fake_gige_camera.h"
 
 #include <arv.h>
 

@@ -1,4 +1,4 @@
-#include "sim/sim_source.h"
+#include "source/sim_source.h"
 
 #include <filesystem>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "capture/exposure_index.h"
+#include "fake_cameras/exposure_index.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "capture/fake_stereo_cameras.h"
+#include "fake_cameras/fake_stereo_cameras.h"
 
 #include <cmath>
 #include <utility>
