@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
     const Eigen::Vector3d back =
         ws::TriangulatePixels(left, right, rig.R, rig.T, in_left, in_right).value();
     const ws::Rectification rect = ws::BuildRectification(rig);
-    std::printf("%s: %s, baseline %.4f m\n", argv[1], rig.left.distortion.kind.c_str(), rig.T.norm());
+    std::printf("%s: %s, baseline %.4f m\n", argv[1], ws::ModelName(rig.left.distortion.kind).c_str(), rig.T.norm());
     std::printf("point (%.4f, %.4f, %.4f) m: left pixel (%.3f, %.3f), right pixel (%.3f, %.3f)\n",
                 point.x(), point.y(), point.z(), in_left.x(), in_left.y(), in_right.x(), in_right.y());
     std::printf("triangulated back (%.4f, %.4f, %.4f) m, off by %.3g m\n", back.x(), back.y(), back.z(),
