@@ -24,6 +24,14 @@ void WriteImage(const std::string& path, int value, int width = 32, int height =
   cv::imwrite(path, cv::Mat(height, width, CV_8UC1, cv::Scalar(value)));
 }
 
+// Pair 1 readable, pair 2 with a left image that is no PNG.
+void WriteReadableThenUnreadablePair(const std::string& dir) {
+  WriteImage(dir + "/left1.png", 1);
+  WriteImage(dir + "/right1.png", 1);
+  std::ofstream(dir + "/left2.png") << "not a png";
+  WriteImage(dir + "/right2.png", 2);
+}
+
 std::string Name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 TEST(ImageFolder, PairsNamesThatDifferOnlyInLeftAndRightAndNamesTheImagesAlone) {
@@ -131,10 +139,7 @@ TEST(CaptureDir, CountAndCompressionAreApplied) {
 
 TEST(CaptureDir, UnreadablePairLeavesAFrameIdGapAndIsCounted) {
   const std::string dir = TempDir("unreadable");
-  WriteImage(dir + "/left1.png", 1);
-  WriteImage(dir + "/right1.png", 1);
-  std::ofstream(dir + "/left2.png") << "not a png";
-  WriteImage(dir + "/right2.png", 2);
+  WriteReadableThenUnreadablePair(dir);
   WriteImage(dir + "/left3.png", 3);
   WriteImage(dir + "/right3.png", 3, 16, 24);  // size differs from left3
   WriteImage(dir + "/left4.png", 4);
@@ -155,10 +160,7 @@ TEST(CaptureDir, UnreadablePairLeavesAFrameIdGapAndIsCounted) {
 
 TEST(DirSource, LoopServesLaterLapsFromTheFirstLapsImagesAndCountsThemAlike) {
   const std::string dir = TempDir("loop");
-  WriteImage(dir + "/left1.png", 1);
-  WriteImage(dir + "/right1.png", 1);
-  std::ofstream(dir + "/left2.png") << "not a png";
-  WriteImage(dir + "/right2.png", 2);
+  WriteReadableThenUnreadablePair(dir);
   ws::DirSource source(dir, true);
   std::vector<ws::StereoPair> lap;
   for (int i = 0; i < 2; ++i) lap.push_back(*source.Next());
