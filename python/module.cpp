@@ -147,7 +147,7 @@ struct PyRig {
   }
 };
 
-py::tuple Maps(const cv::Mat maps[2]) { return py::make_tuple(MatToArray(maps[0]), MatToArray(maps[1])); }
+py::tuple Maps(const std::array<cv::Mat, 2>& maps) { return py::make_tuple(MatToArray(maps[0]), MatToArray(maps[1])); }
 
 py::array_t<double> Matrix(const double* values, int rows, int cols) {
   py::array_t<double> out({rows, cols});
@@ -201,9 +201,9 @@ PYBIND11_MODULE(_widestereo, m) {
       .def_property_readonly("Q", [](const Rectification& r) { return Matrix(r.Q.val, 4, 4); })
       .def_property_readonly("R_left", [](const Rectification& r) { return Matrix(r.R_left.val, 3, 3); })
       .def_property_readonly("R_right", [](const Rectification& r) { return Matrix(r.R_right.val, 3, 3); })
-      .def_property_readonly("maps_left", [](const Rectification& r) { return Maps(r.map_left); },
+      .def_property_readonly("maps_left", [](const Rectification& r) { return Maps(r.maps_left.front()); },
                              "(map1, map2): OpenCV's fixed-point tables for cv2.remap(image, map1, map2, cv2.INTER_LINEAR)")
-      .def_property_readonly("maps_right", [](const Rectification& r) { return Maps(r.map_right); })
+      .def_property_readonly("maps_right", [](const Rectification& r) { return Maps(r.maps_right.front()); })
       .def_property_readonly("valid_left", [](const Rectification& r) { return MatToArray(r.valid_left); })
       .def_property_readonly("valid_right", [](const Rectification& r) { return MatToArray(r.valid_right); })
       .def(

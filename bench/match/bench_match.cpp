@@ -5,7 +5,10 @@
 // the medians are compared; for SGBM (stereo-match's default settings) and
 // for BM with the paper's 33 x 33 window. Then stereo-match's rectify and
 // match with the live settings (config/stereo-match-live.yaml) on the common
-// field's region (match/match_region.h) against the whole image, alternating.
+// field's region (match/match_region.h) against the whole image, alternating;
+// and rectifying straight to the matcher's grid (RectifyOptions::downscale,
+// what stereo-match does) against the full-size remap and the matcher's own
+// downscale, alternating.
 //
 //   bench_match [RUNS]    (default 5)
 #include <algorithm>
@@ -46,8 +49,8 @@ void Compare(const char* name, const ws::MatchConfig& config, const ws::Rectific
     }));
     bare.push_back(Milliseconds([&] {
       cv::Mat lr, rr, disparity;
-      cv::remap(left, lr, rect.map_left[0], rect.map_left[1], cv::INTER_LINEAR);
-      cv::remap(right, rr, rect.map_right[0], rect.map_right[1], cv::INTER_LINEAR);
+      cv::remap(left, lr, rect.maps_left[0][0], rect.maps_left[0][1], cv::INTER_LINEAR);
+      cv::remap(right, rr, rect.maps_right[0][0], rect.maps_right[0][1], cv::INTER_LINEAR);
       matcher->compute(lr, rr, disparity);
     }));
   }
@@ -75,6 +78,29 @@ void CompareRegion(const char* name, ws::MatcherConfig config, const ws::Rectifi
               name, rect.common.width, rect.common.height, rect.common.x, rect.common.y, region.width,
               region.height, Median(common_ms), rect.size.width, rect.size.height, Median(whole_ms),
               Median(common_ms) / Median(whole_ms));
+}
+
+void CompareGrid(const char* name, const ws::MatcherConfig& config, const ws::StereoRig& rig,
+                 const widestereo::stereo_frame_t& frame, int runs) {
+  ws::RectifyOptions options;
+  const auto full = std::make_shared<const ws::Rectification>(ws::BuildRectification(rig, options));
+  options.downscale = config.downscale;
+  const auto grid = std::make_shared<const ws::Rectification>(ws::BuildRectification(rig, options));
+  ws::DisparityMatcher full_matcher(config), grid_matcher(ws::AtMatchScale(config));
+  const cv::Mat left = ws::ImageToMat(frame.left), right = ws::ImageToMat(frame.right);
+  std::vector<double> full_ms, grid_ms, full_rectify_ms, grid_rectify_ms;
+  for (int run = 0; run < runs; ++run) {
+    cv::Mat lr, rr;
+    full_rectify_ms.push_back(Milliseconds([&] { ws::RectifyPair(*full, left, right, &lr, &rr); }));
+    grid_rectify_ms.push_back(Milliseconds([&] { ws::RectifyPair(*grid, left, right, &lr, &rr); }));
+    full_ms.push_back(Milliseconds([&] { ws::RectifyAndMatch(full, full_matcher, frame); }));
+    grid_ms.push_back(Milliseconds([&] { ws::RectifyAndMatch(grid, grid_matcher, frame); }));
+  }
+  std::printf("%-34s rectify: at the matcher's %dx%d grid %6.1f ms, full size %6.1f ms (%.3f); rectify + match: "
+              "%6.1f ms, full size + downscale %6.1f ms (%.3f)\n",
+              name, grid->size.width, grid->size.height, Median(grid_rectify_ms), Median(full_rectify_ms),
+              Median(grid_rectify_ms) / Median(full_rectify_ms), Median(grid_ms), Median(full_ms),
+              Median(grid_ms) / Median(full_ms));
 }
 
 }  // namespace
@@ -110,5 +136,6 @@ int main(int argc, char** argv) {
   CompareRegion("live settings, focal scale 1", live, rect, frame, runs);
   CompareRegion("live settings, focal scale 0.7", live,
                 ws::BuildRectification(rig, {0.7, {}, ws::RectificationMode::kPinhole}), frame, runs);
+  CompareGrid("live settings, matcher's grid", live, rig, frame, runs);
   return 0;
 }

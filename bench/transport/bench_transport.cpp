@@ -8,7 +8,11 @@
 //    start-up: maps built, a browser loading the page),
 //  - every process's drop counters from PROCESS_STATUS,
 //  - every process's CPU share between its first and last heartbeat of the
-//    run (from /proc/PID/stat: the processes run on this host).
+//    run (from /proc/PID/stat: the processes run on this host),
+//  - the latency budget: each process's time per frame for each stage of
+//    its work (PROCESS_STATUS), and the end-to-end median over the sum of
+//    the stage medians on the chain from the capture's stamp on (the closer
+//    to 1, the less a frame waits).
 // With --prepare DIR it instead writes the simulator's frames as left*/right*
 // PNG pairs for stereo-capture --source dir:DIR, and the rig's true
 // calibration.yaml for stereo-match.
@@ -47,6 +51,14 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
   ws::WriteCalibrationFile(dir + "/calibration.yaml", ws::TrueStereoRig(source->simulator().Truth()));
   std::printf("wrote %d pairs and the true calibration.yaml to %s\n", n, dir.c_str());
   return 0;
+}
+
+// The stages on the way from a pair's capture stamp to its filtered cloud:
+// not the capture's reading of the next pair (the stamp is taken after it),
+// nor those of processes beside the chain (stereo-view, this listener).
+bool OnTheChain(const std::string& process, const std::string& stage) {
+  if (process == "stereo-capture") return stage != "read";
+  return process == "stereo-match" || process == "stereo-cloud";
 }
 
 // User plus system CPU time of a process of this host, seconds; negative when gone.
@@ -144,9 +156,22 @@ int main(int argc, char** argv) {
     if (seconds > 0 && first_cpu[name] >= 0 && last_cpu[name] >= 0)
       std::printf("  %-16s %5.1f %%\n", name.c_str(), 100 * (last_cpu[name] - first_cpu[name]) / seconds);
   }
+  const double median_ms = Percentile(latency_ms, 0.5);
+  std::printf("latency budget (time per frame over each process's last frames, at most %d):\n",
+              ws::StageTimes::kWindow);
+  std::printf("  %-16s %-30s %9s %9s %7s\n", "process", "stage", "median ms", "p99 ms", "frames");
+  double compute_ms = 0;
+  for (const auto& [name, last] : last_status)
+    for (const auto& t : last.first.stages) {
+      std::printf("  %-16s %-30s %9.1f %9.1f %7d\n", name.c_str(), t.stage.c_str(), t.median_ms, t.p99_ms, t.window);
+      if (OnTheChain(name, t.stage)) compute_ms += t.median_ms;
+    }
   std::printf("capture -> STEREO_CLOUD_FILTERED: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", latency_ms.size(),
-              Percentile(latency_ms, 0.5), Percentile(latency_ms, 0.99));
+              median_ms, Percentile(latency_ms, 0.99));
   std::printf("  after the first %.0f s: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", duration_s * 0.25,
               steady_ms.size(), Percentile(steady_ms, 0.5), Percentile(steady_ms, 0.99));
+  if (compute_ms > 0)
+    std::printf("latency median / sum of the stage medians after the capture's stamp (%.1f ms): %.2f\n", compute_ms,
+                median_ms / compute_ms);
   return rc;
 }

@@ -65,11 +65,12 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
 
 CloudNode::~CloudNode() { stage_.Drain(); }
 
-void CloudNode::OnCloud(const widestereo::point_cloud_t& msg) { stage_.Offer(msg); }
+void CloudNode::OnCloud(widestereo::point_cloud_t& msg) { stage_.Offer(std::move(msg)); }
 
 void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   CloudFilterResult result;
   try {
+    StageTimer timer(process_.stage_times(), "filter");
     result = filter_.Run(msg);
   } catch (const std::exception& e) {
     return process_.HandleRejected(channel::kStereoCloud, e.what());

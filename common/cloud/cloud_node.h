@@ -53,7 +53,8 @@ class CloudNode {
   CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save);
   ~CloudNode();
 
-  void OnCloud(const widestereo::point_cloud_t& msg);
+  // Takes the cloud (moves it to the filter's stage).
+  void OnCloud(widestereo::point_cloud_t& msg);
   // Throws (so Process counts the command as rejected) when a `save` fails.
   void OnCommand(const widestereo::command_t& command) { commands_.Dispatch(command); }
   // "clouds 12 | last 40211 pts, plane 2.003 m, rms 4.1 mm | saved 3"

@@ -171,7 +171,7 @@ std::vector<cv::Point2f> Corners(const cv::Mat& image, const cv::Mat& filled, co
 
 cv::Mat FilledRegion(const Rectification& rect, bool left, double border_px) {
   const cv::Mat ones(rect.input_size, CV_8UC1, cv::Scalar(255));
-  const cv::Mat* maps = left ? rect.map_left : rect.map_right;
+  const auto& maps = (left ? rect.maps_left : rect.maps_right).front();
   cv::Mat filled;
   cv::remap(ones, filled, maps[0], maps[1], cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar(0));
   const int r = int(std::ceil(border_px));

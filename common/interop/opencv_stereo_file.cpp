@@ -126,8 +126,8 @@ void WriteOpenCvStereoFile(const std::string& path, const Rig& rig, const Rectif
 void WriteRectificationMaps(const std::string& path, const Rectification& rect) {
   cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   fs.writeComment("cv::remap(image, rectified, map1, map2, cv::INTER_LINEAR, cv::BORDER_CONSTANT)");
-  fs << "map1_left" << rect.map_left[0] << "map2_left" << rect.map_left[1];
-  fs << "map1_right" << rect.map_right[0] << "map2_right" << rect.map_right[1];
+  fs << "map1_left" << rect.maps_left.front()[0] << "map2_left" << rect.maps_left.front()[1];
+  fs << "map1_right" << rect.maps_right.front()[0] << "map2_right" << rect.maps_right.front()[1];
   WriteFileAtomically(path, fs.releaseAndGetString());
 }
 

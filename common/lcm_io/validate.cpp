@@ -195,7 +195,13 @@ void Validate(const widestereo::point_cloud_t& msg) {
 }
 
 void Validate(const widestereo::cloud_stats_t&) {}
-void Validate(const widestereo::process_status_t&) {}
+void Validate(const widestereo::process_status_t& msg) {
+  for (const auto& s : msg.stages)
+    Require(s.count >= 0 && s.window >= 0 && s.window <= s.count && std::isfinite(s.median_ms) &&
+                std::isfinite(s.p99_ms) && s.median_ms >= 0 && s.p99_ms >= s.median_ms,
+            "process_status_t",
+            "stage '" + s.stage + "': needs 0 <= window <= count and 0 <= median <= p99, all finite");
+}
 void Validate(const widestereo::command_t&) {}
 
 }  // namespace ws

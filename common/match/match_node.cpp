@@ -16,12 +16,18 @@ namespace ws {
 
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
-                             const std::string& calibration_source) {
+                             const std::string& calibration_source, StageTimes* times) {
   RequireFrameSize(frame, rect->input_size, calibration_source);
+  std::optional<StageTimer> rectify;
+  if (times) rectify.emplace(*times, "rectify");
+  // Views of the frame's payloads (it outlives the remap): no copy.
   const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
+  rectify.reset();
+  std::optional<StageTimer> match;
+  if (times) match.emplace(*times, "match");
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
   matcher.Compute(matched.left_rect(region), matched.right_rect(region))
       .copyTo(matched.disparity(region));
@@ -79,7 +85,7 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
       config_(std::move(config)),
       rectified_writer_(config_.save_rectified, "--save-rectified"),
       disparity_writer_(config_.save_disparity, "--save-disparity"),
-      matcher_(config_.matcher),
+      matcher_(AtMatchScale(config_.matcher)),
       publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
@@ -92,8 +98,10 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
 MatchNode::~MatchNode() { Drain(); }
 
 void MatchNode::SetRig(const Rig& rig, const std::string& source) {
+  RectifyOptions options = config_.rectify;
+  options.downscale = config_.matcher.downscale;  // straight to the matcher's resolution
   auto geometry = std::make_shared<const Rectification>(
-      CalibrationGeometry(rig, config_.rectify, config_.max_image_pixels, source));
+      CalibrationGeometry(rig, options, config_.max_image_pixels, source));
   const cv::Size size = geometry->input_size;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -122,8 +130,8 @@ std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_fr
   BuildRectificationMaps(*rig, &rect);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   process_.log().Info("rectification maps for " + *source + " built in " + std::to_string(int(ms)) + " ms: f = " +
-                      std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) +
-                      " rectification, baseline = " + std::to_string(rect.baseline) + " m, " +
+                      std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
+                      std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " + std::to_string(rect.baseline) + " m, " +
                       ModelName(rig->left.distortion.kind) + " model");
   auto built = std::make_shared<const Rectification>(std::move(rect));
   std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -138,7 +146,7 @@ void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
   SetRig(RigFromMessage(msg), "the STEREO_CALIBRATION of utime " + std::to_string(msg.utime));
 }
 
-void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
+void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
   bool calibrated;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
@@ -150,7 +158,7 @@ void MatchNode::OnFrame(const widestereo::stereo_frame_t& frame) {
     process_.Counters(channel::kStereoImages).dropped++;
     return;
   }
-  match_.Offer(frame);
+  match_.Offer(std::move(frame));
 }
 
 void MatchNode::Drain() {
@@ -162,7 +170,7 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
-    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source));
+    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
@@ -171,7 +179,9 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
 void MatchNode::Publish(MatchedFrame& matched) {
   std::optional<widestereo::disparity_t> disparity;  // its range and geometry name the legend's metres
   try {
-    MatchResult result = ToMessages(matched, config_.matcher, config_.cloud);
+    StageTimer cloud(process_.stage_times(), "cloud");
+    MatchResult result = ToMessages(matched, matcher_.config(), config_.cloud);
+    cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);
     disparity = std::move(result.disparity);

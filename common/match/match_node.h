@@ -42,10 +42,12 @@ struct MatchedFrame {
 
 // Rectifies and matches one frame. Throws std::invalid_argument when the
 // frame's size is not the calibration's (before decoding it); the message
-// names the calibration by `calibration_source` (e.g. its file).
+// names the calibration by `calibration_source` (e.g. its file). With
+// `times`, the two stages are timed there as "rectify" and "match".
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
-                             const std::string& calibration_source = "the calibration");
+                             const std::string& calibration_source = "the calibration",
+                             StageTimes* times = nullptr);
 // The second stage: the disparity message and the cloud, sampled as
 // `sampling` says.
 MatchResult ToMessages(const MatchedFrame& matched, const MatcherConfig& matcher,
@@ -63,6 +65,10 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
 // files and the disparity as a colour PNG with its legend in metres when
 // config.save_rectified and save_disparity say so (frame_image_writer.h).
+// The maps rectify straight to the matcher's resolution
+// (RectifyOptions::downscale = MatcherConfig::downscale): the rectified
+// pairs, the disparity (with its f, cx, cy and Q) and the cloud are all on
+// that grid.
 //
 // Live, the two stages run as a small pipeline (runtime/newest_first.h) on
 // two threads of their own, so that the input thread only hands frames over:
@@ -82,7 +88,8 @@ class MatchNode {
   // for a rig larger than config.max_image_pixels, keeping the one before.
   void SetRig(const Rig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
-  void OnFrame(const widestereo::stereo_frame_t& frame);
+  // Takes the frame's payload (moves it into the pipeline).
+  void OnFrame(widestereo::stereo_frame_t& frame);
   // Returns when every frame handed over has been published or counted.
   void Drain();
 
@@ -98,8 +105,10 @@ class MatchNode {
   MatchConfig config_;
   FrameImageWriter rectified_writer_;  // used by the publishing stage only
   FrameImageWriter disparity_writer_;  // likewise
-  DisparityMatcher matcher_;  // used by the matching stage only
-  std::mutex rect_mutex_;     // guards rig_, rect_ and calibration_source_
+  // At the matcher's resolution (AtMatchScale), as the rectification:
+  // used by the matching stage only, but for its const config().
+  DisparityMatcher matcher_;
+  std::mutex rect_mutex_;  // guards rig_, rect_ and calibration_source_
   std::shared_ptr<const Rig> rig_;  // the calibration in use
   // Its rectification: without maps until a frame of its size comes.
   std::shared_ptr<const Rectification> rect_;

@@ -21,7 +21,13 @@ cv::Mat Gray8(const cv::Mat& image) {
   return gray;
 }
 
-// The settings of the match at 1/downscale resolution.
+// OpenCV's matchers give no disparity in the image's first columns, those
+// whose whole search range (and for BM, the window's half) would not fit
+// left of them: min_disparity + num_disparities (+ block_size / 2) columns.
+int LeftMargin(const MatcherConfig& c) { return std::max(0, c.min_disparity + c.num_disparities) + c.block_size / 2; }
+
+}  // namespace
+
 MatcherConfig AtMatchScale(const MatcherConfig& c) {
   MatcherConfig scaled = c;
   const int n = c.downscale;
@@ -30,13 +36,6 @@ MatcherConfig AtMatchScale(const MatcherConfig& c) {
   scaled.num_disparities = (c.num_disparities / n + 15) / 16 * 16;
   return scaled;
 }
-
-// OpenCV's matchers give no disparity in the image's first columns, those
-// whose whole search range (and for BM, the window's half) would not fit
-// left of them: min_disparity + num_disparities (+ block_size / 2) columns.
-int LeftMargin(const MatcherConfig& c) { return std::max(0, c.min_disparity + c.num_disparities) + c.block_size / 2; }
-
-}  // namespace
 
 void CheckMatcherConfig(const MatcherConfig& c) {
   Require(c.kind == "bm" || c.kind == "sgbm" || c.kind == "sgbm3way",

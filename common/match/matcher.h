@@ -31,6 +31,11 @@ struct MatcherConfig {
   bool common_field_only = true;
 };
 
+// The same settings for images already at 1/downscale resolution (a
+// rectification with RectifyOptions::downscale): downscale 1, the disparity
+// range in their pixels (num_disparities / N rounded up to a multiple of 16).
+MatcherConfig AtMatchScale(const MatcherConfig& config);
+
 // Throws std::invalid_argument naming the field when a value is out of range.
 void CheckMatcherConfig(const MatcherConfig& config);
 

@@ -48,23 +48,39 @@ int CoveragePercent(const std::vector<std::vector<int32_t>>& grid) {
 
 std::string Who(const widestereo::process_status_t& s) { return s.name + (s.host.empty() ? "" : "@" + s.host); }
 
-// `text` after `prefix`, broken between words into lines of at most `cols`.
-std::vector<std::string> Wrapped(const std::string& prefix, const std::string& text, int cols) {
+// `items` after `prefix`, each whole, a space between two, in lines of at
+// most `cols` (an item longer than that alone on its line).
+std::vector<std::string> Packed(const std::string& prefix, const std::vector<std::string>& items, int cols) {
   std::vector<std::string> lines;
   std::string line = prefix;
   bool empty = true;
-  std::istringstream words(text);
-  for (std::string word; words >> word;) {
-    if (!empty && cols > 0 && int(line.size() + 1 + word.size()) > cols) {
+  for (const std::string& item : items) {
+    if (!empty && cols > 0 && int(line.size() + 1 + item.size()) > cols) {
       lines.push_back(line);
       line = std::string(prefix.size(), ' ');
       empty = true;
     }
-    line += (empty ? "" : " ") + word;
+    line += (empty ? "" : " ") + item;
     empty = false;
   }
   lines.push_back(line);
   return lines;
+}
+
+// `text` after `prefix`, broken between words into lines of at most `cols`.
+std::vector<std::string> Wrapped(const std::string& prefix, const std::string& text, int cols) {
+  std::vector<std::string> words;
+  std::istringstream in(text);
+  for (std::string word; in >> word;) words.push_back(word);
+  return Packed(prefix, words, cols);
+}
+
+// A process's latency budget: each stage's time per frame, median / p99.
+std::vector<std::string> StageLines(const widestereo::process_status_t& s, int cols) {
+  std::vector<std::string> items;
+  for (const auto& t : s.stages)
+    items.push_back(t.stage + Format(" %.1f/%.1f", t.median_ms, t.p99_ms) + (&t == &s.stages.back() ? "" : ","));
+  return Packed("    ms median/p99: ", items, cols);
 }
 
 }  // namespace
@@ -91,7 +107,7 @@ void StatusBoard::Add(const widestereo::cloud_stats_t& stats, int64_t received_u
   ++depth_->clouds;
 }
 
-std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condensed) const {
+std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condensed, int cols) const {
   size_t width = 7;  // "PROCESS"
   for (const auto& [key, entry] : processes_) width = std::max(width, Who(entry.latest).size());
   const int w = int(width);
@@ -131,6 +147,8 @@ std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condense
                                rate < 0 ? "-" : Format("%.1f", rate).c_str(), (long long)c.dropped,
                                (long long)c.skipped, (long long)c.rejected));
       }
+    if (!condensed && !gone && !s.stages.empty())
+      for (const std::string& stage_line : StageLines(s, cols)) lines.push_back(stage_line);
     if (!s.last_error.empty()) lines.push_back("    last error: " + s.last_error);
   }
   if (lines.size() == 1) lines.push_back("(no PROCESS_STATUS heard yet)");
@@ -180,10 +198,10 @@ std::vector<std::string> StatusBoard::SummaryLines(int64_t now_us, int cols) con
 
 std::string StatusBoard::Render(int64_t now_us, Screen screen) const {
   const std::vector<std::string> summary = SummaryLines(now_us, screen.cols);
-  std::vector<std::string> table = ProcessLines(now_us, false);
+  std::vector<std::string> table = ProcessLines(now_us, false, screen.cols);
   const size_t room = screen.rows > 0 ? size_t(std::max(2, screen.rows - 1)) : SIZE_MAX;  // the cursor's line
   const size_t gap = summary.empty() ? 0 : 1;
-  if (table.size() + gap + summary.size() > room) table = ProcessLines(now_us, true);
+  if (table.size() + gap + summary.size() > room) table = ProcessLines(now_us, true, screen.cols);
   if (table.size() + gap + summary.size() > room) {
     const size_t keep = room > gap + summary.size() + 1 ? room - gap - summary.size() - 1 : 1;
     const size_t cut = table.size() - std::min(keep, table.size());

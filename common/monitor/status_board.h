@@ -38,7 +38,8 @@ class StatusBoard {
   void Add(const widestereo::cloud_stats_t& stats, int64_t received_us);
   // The table at `now_us`: one block per process (host, pid, state, uptime,
   // last error) with a row per channel (counts, message rate, losses, skips,
-  // rejections), then the depth, calibration and health lines, within `screen`.
+  // rejections) and its latency budget (each stage's time per frame, median
+  // and p99), then the depth, calibration and health lines, within `screen`.
   std::string Render(int64_t now_us, Screen screen = {}) const;
 
  private:
@@ -52,9 +53,9 @@ class StatusBoard {
     int64_t first_us = 0, heard_us = 0;
     int64_t clouds = 0;
   };
-  // The table's lines; `condensed`: no channel rows, only the processes'
-  // totals.
-  std::vector<std::string> ProcessLines(int64_t now_us, bool condensed) const;
+  // The table's lines; `condensed`: no channel rows or budgets, only the
+  // processes' totals; lines broken to `cols` where they can be (0: never).
+  std::vector<std::string> ProcessLines(int64_t now_us, bool condensed, int cols) const;
   std::vector<std::string> SummaryLines(int64_t now_us, int cols) const;
 
   std::map<std::string, Entry> processes_;  // by "name@host:pid"

@@ -28,7 +28,8 @@ Rectification CalibrationGeometry(const Rig& rig, const RectifyOptions& options,
   RequireAtMost(size, max_pixels, source + " refused: its image size");
   try {
     Rectification geometry = RectificationGeometry(rig, options);
-    RequireAtMost(geometry.size, max_pixels, "its rectified image size");
+    // The grid its maps sample: the rectified image at full resolution.
+    RequireAtMost(geometry.size * geometry.downscale, max_pixels, "its rectified image size");
     return geometry;
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(source + " refused: " + e.what());

@@ -14,12 +14,12 @@ namespace {
 // The points of rows [begin, end), appended to `cloud` (xyz and, when `gray`
 // is not empty, intensity).
 void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min_disparity,
-                  const cv::Mat& gray, const CloudSampling& sampling, int begin, int end,
+                  const cv::Mat& gray, const CloudSampling& sampling, int step, int begin, int end,
                   widestereo::point_cloud_t* cloud) {
   for (int v = begin; v < end; ++v) {
-    if (v % sampling.step != 0) continue;
+    if (v % step != 0) continue;
     const float* d = disparity.ptr<float>(v);
-    for (int u = 0; u < disparity.cols; u += sampling.step) {
+    for (int u = 0; u < disparity.cols; u += step) {
       if (!(d[u] >= min_disparity && d[u] > 0)) continue;
       const auto X = TriangulateDisparity(rect, u, v, d[u]);
       if (!X || cv::norm(*X) > sampling.max_depth) continue;
@@ -43,6 +43,7 @@ widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::
     else
       gray = intensity;
   }
+  const int step = std::max(1, sampling.step / rect.downscale);
   // A megapixel frame gives a million points, each its own small array in
   // point_cloud_t: bands of rows are converted on every core, then moved
   // into the message in row order.
@@ -51,7 +52,7 @@ widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::
   std::vector<widestereo::point_cloud_t> parts(static_cast<size_t>(bands));
   cv::parallel_for_(cv::Range(0, bands), [&](const cv::Range& range) {
     for (int band = range.start; band < range.end; ++band)
-      RowsToPoints(rect, disparity, min_disparity, gray, sampling, band * kBandRows,
+      RowsToPoints(rect, disparity, min_disparity, gray, sampling, step, band * kBandRows,
                    std::min(disparity.rows, (band + 1) * kBandRows), &parts[size_t(band)]);
   });
   widestereo::point_cloud_t cloud;

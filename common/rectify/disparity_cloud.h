@@ -5,7 +5,10 @@
 // most max_depth from the camera become points; OpenCV's "missing" marker
 // never does.
 // step > 1 keeps every step-th pixel of every step-th row: a megapixel
-// frame's full cloud is a 13 MB message, too much for a busy network.
+// frame's full cloud is a 13 MB message, too much for a busy network. The
+// step counts pixels of the full-resolution rectified image: on a grid n
+// times coarser (Rectification::downscale) it is step / n of its pixels (at
+// least 1), so the cloud is built at the resolution it is published at.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -17,7 +20,7 @@ namespace ws {
 
 struct CloudSampling {
   double max_depth = 20.0;  // metres from the left camera; farther points are left out
-  int step = 1;             // pixels between points, in u and in v
+  int step = 1;             // full-resolution pixels between points, in u and in v
 };
 
 inline constexpr const char* kLeftRectifiedFrame = "left_rectified";

@@ -31,30 +31,41 @@ cv::Vec2d LatLon(const cv::Vec3d& p) {
   return {std::asin(std::clamp(p[0] / cv::norm(p), -1.0, 1.0)), std::atan2(p[1], p[2])};
 }
 
+// The tables of one camera: one pair per sample (rectification.h), and the
+// pixels all of whose samples fall in the input image.
 void BuildMaps(const Camera& camera, const cv::Matx33d& R_rect, const Rectification& rect,
-               cv::Mat maps[2], cv::Mat* valid) {
-  cv::Mat map_x(rect.size, CV_32FC1), map_y(rect.size, CV_32FC1);
-  *valid = cv::Mat(rect.size, CV_8UC1);
+               std::vector<std::array<cv::Mat, 2>>* maps, cv::Mat* valid) {
+  const int n = rect.downscale;
+  *valid = cv::Mat(rect.size, CV_8UC1, cv::Scalar(255));
   const cv::Matx33d to_camera = R_rect.t();
   const cv::Size input(camera.model().image_width, camera.model().image_height);
-  cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
-    for (int v = rows.start; v < rows.end; ++v) {
-      float* mx = map_x.ptr<float>(v);
-      float* my = map_y.ptr<float>(v);
-      uint8_t* ok = valid->ptr<uint8_t>(v);
-      for (int u = 0; u < rect.size.width; ++u) {
-        const cv::Vec3d r = to_camera * RectifiedRay(rect, u, v);
-        const Eigen::Vector3d ray(r[0], r[1], r[2]);
-        const auto pixel = camera.Project(ray);
-        const bool inside = pixel && camera.InField(ray) && (*pixel)[0] >= -0.5 && (*pixel)[1] >= -0.5 &&
-                            (*pixel)[0] <= input.width - 0.5 && (*pixel)[1] <= input.height - 0.5;
-        mx[u] = inside ? float((*pixel)[0]) : -1.f;
-        my[u] = inside ? float((*pixel)[1]) : -1.f;
-        ok[u] = inside ? 255 : 0;
-      }
+  maps->clear();
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      // Sample (i, j) of grid pixel (u, v): full-resolution pixel (n u + i, n v + j).
+      const double du = (i + 0.5) / n - 0.5, dv = (j + 0.5) / n - 0.5;
+      cv::Mat map_x(rect.size, CV_32FC1), map_y(rect.size, CV_32FC1);
+      cv::parallel_for_(cv::Range(0, rect.size.height), [&](const cv::Range& rows) {
+        for (int v = rows.start; v < rows.end; ++v) {
+          float* mx = map_x.ptr<float>(v);
+          float* my = map_y.ptr<float>(v);
+          uint8_t* ok = valid->ptr<uint8_t>(v);
+          for (int u = 0; u < rect.size.width; ++u) {
+            const cv::Vec3d r = to_camera * RectifiedRay(rect, u + du, v + dv);
+            const Eigen::Vector3d ray(r[0], r[1], r[2]);
+            const auto pixel = camera.Project(ray);
+            const bool inside = pixel && camera.InField(ray) && (*pixel)[0] >= -0.5 && (*pixel)[1] >= -0.5 &&
+                                (*pixel)[0] <= input.width - 0.5 && (*pixel)[1] <= input.height - 0.5;
+            mx[u] = inside ? float((*pixel)[0]) : -1.f;
+            my[u] = inside ? float((*pixel)[1]) : -1.f;
+            if (!inside) ok[u] = 0;
+          }
+        }
+      });
+      std::array<cv::Mat, 2> fixed;
+      cv::convertMaps(map_x, map_y, fixed[0], fixed[1], CV_16SC2);
+      maps->push_back(std::move(fixed));
     }
-  });
-  cv::convertMaps(map_x, map_y, maps[0], maps[1], CV_16SC2);
 }
 
 // The (psi, phi) box of the rays of a camera's pixels (sampled about 200
@@ -86,15 +97,30 @@ cv::Vec4d CommonBox(const Rig& rig, const cv::Matx33d& R_left, const cv::Matx33d
   return {std::max(l[0], r[0]), std::min(l[1], r[1]), std::max(l[2], r[2]), std::min(l[3], r[3])};
 }
 
-// cv::remap of `region` (all of the maps when empty) into that part of *out.
-void Remap(const cv::Mat& in, const cv::Mat maps[2], const cv::Rect& region, cv::Mat* out) {
-  if (region.empty()) {
-    cv::remap(in, *out, maps[0], maps[1], cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+// cv::remap of `region` (all of the maps when empty) into that part of *out;
+// with several samples, their mean, rounded as cv::INTER_AREA rounds.
+void Remap(const cv::Mat& in, const std::vector<std::array<cv::Mat, 2>>& maps, const cv::Rect& region,
+           cv::Mat* out) {
+  const cv::Size size = maps.front()[0].size();
+  const cv::Rect r = region.empty() ? cv::Rect(cv::Point(), size) : region;
+  if (r.size() == size)
+    out->create(size, in.type());
+  else
+    *out = cv::Mat::zeros(size, in.type());
+  cv::Mat part = (*out)(r);  // remap writes into it: same size and type
+  if (maps.size() == 1) {
+    cv::remap(in, part, maps[0][0](r), maps[0][1](r), cv::INTER_LINEAR, cv::BORDER_CONSTANT);
     return;
   }
-  *out = cv::Mat::zeros(maps[0].size(), in.type());
-  cv::Mat part = (*out)(region);  // remap writes into it: same size and type
-  cv::remap(in, part, maps[0](region), maps[1](region), cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+  const bool integer = in.depth() <= CV_16S;
+  const int sum_depth = in.depth() == CV_8U && maps.size() <= 256 ? CV_16U : integer ? CV_32S : CV_64F;
+  cv::Mat sample, sum(r.size(), CV_MAKETYPE(sum_depth, in.channels()), cv::Scalar::all(0));
+  for (const auto& m : maps) {
+    cv::remap(in, sample, m[0](r), m[1](r), cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+    cv::add(sum, sample, sum, cv::noArray(), sum.type());
+  }
+  // The mean; an integer one with its halves rounded up, as the area downscale rounds.
+  sum.convertTo(part, in.depth(), 1.0 / double(maps.size()), integer ? 1e-3 : 0.0);
 }
 
 }  // namespace
@@ -128,6 +154,7 @@ Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& option
   if (rect.input_size != cv::Size(rig.right.image_width, rig.right.image_height))
     throw std::invalid_argument("the two cameras of the rig have different image sizes");
   if (!(options.focal_scale > 0)) throw std::invalid_argument("focal_scale must be positive");
+  if (options.downscale < 1 || options.downscale > 8) throw std::invalid_argument("downscale must be 1..8");
   BouguetRotations(rig, &rect.R_left, &rect.R_right);
   // The common field: auto's choice and lat-lon's image (a pinhole needs none).
   const cv::Vec4d box = options.mode == RectificationMode::kPinhole
@@ -157,6 +184,11 @@ Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& option
     rect.cx = (rect.size.width - 1) / 2.0 - rect.f * 0.5 * (box[0] + box[1]);
     rect.cy = (rect.size.height - 1) / 2.0 - rect.f * 0.5 * (box[2] + box[3]);
   }
+  const int n = rect.downscale = options.downscale;
+  rect.f /= n;
+  rect.cx = (rect.cx + 0.5) / n - 0.5;
+  rect.cy = (rect.cy + 0.5) / n - 0.5;
+  rect.size = cv::Size((rect.size.width + n - 1) / n, (rect.size.height + n - 1) / n);
   // t = R_right T puts the left camera's centre at (-baseline, 0, 0) of the
   // right rectified frame: the right camera is at (baseline, 0, 0) of the left's.
   const cv::Vec3d t = rect.R_right * cv::Vec3d(rig.T(0), rig.T(1), rig.T(2));
@@ -173,16 +205,16 @@ Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& option
 }
 
 void BuildRectificationMaps(const Rig& rig, Rectification* rect) {
-  BuildMaps(Camera(rig.left), rect->R_left, *rect, rect->map_left, &rect->valid_left);
-  BuildMaps(Camera(rig.right), rect->R_right, *rect, rect->map_right, &rect->valid_right);
+  BuildMaps(Camera(rig.left), rect->R_left, *rect, &rect->maps_left, &rect->valid_left);
+  BuildMaps(Camera(rig.right), rect->R_right, *rect, &rect->maps_right, &rect->valid_right);
   rect->no_image = (rect->valid_left == 0) | (rect->valid_right == 0);
   rect->common = cv::boundingRect(rect->no_image == 0);
 }
 
 void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& right,
                  cv::Mat* left_rect, cv::Mat* right_rect, const cv::Rect& region) {
-  Remap(left, rect.map_left, region, left_rect);
-  Remap(right, rect.map_right, region, right_rect);
+  Remap(left, rect.maps_left, region, left_rect);
+  Remap(right, rect.maps_right, region, right_rect);
 }
 
 bool RectifyPoint(const Rectification& rect, const Rig& rig, bool left,

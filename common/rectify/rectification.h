@@ -31,7 +31,9 @@
 // converted to OpenCV's fixed-point maps (CV_16SC2 + CV_16UC1) for cv::remap.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -49,21 +51,33 @@ enum class RectificationMode { kPinhole, kLatLon, kAuto };
 RectificationMode ParseRectificationMode(const std::string& name);
 const char* RectificationModeName(RectificationMode mode);
 
+// downscale n > 1: the same rectification on a grid n times coarser, pixel
+// (u', v') covering the n x n pixels of the full-resolution grid about
+// (n u' + (n - 1) / 2, n v' + (n - 1) / 2): f / n, (cx + 1/2) / n - 1/2 (cy
+// likewise), size / n rounded up. Its tables sample, for each grid pixel,
+// the n x n full-resolution pixels it covers, and RectifyPair averages them:
+// the image a full-size remap and an area downscale (cv::INTER_AREA) give,
+// without the full-size image. A pixel is valid where all its samples are.
 struct RectifyOptions {
   double focal_scale = 1.0;
   cv::Size size;  // empty: the input image size (pinhole), the common field (lat-lon)
   RectificationMode mode = RectificationMode::kPinhole;
+  int downscale = 1;
 };
 
 struct Rectification {
   RectificationMode mode = RectificationMode::kPinhole;
   cv::Size input_size;
   cv::Size size;
+  int downscale = 1;  // RectifyOptions::downscale
   cv::Matx33d R_left, R_right;  // camera frame -> rectified frame
   double f = 0, cx = 0, cy = 0;  // pinhole: K_rect; lat-lon: pixels per radian and (psi, phi) = 0
   double baseline = 0;          // metres, > 0
   cv::Matx44d Q;                // pinhole: (u, v, d, 1) -> homogeneous left-rectified point; lat-lon: 0
-  cv::Mat map_left[2], map_right[2];  // fixed-point remap tables
+  // Fixed-point remap tables (cv::remap's map1, map2), one pair per sample:
+  // downscale^2 of them, sample (i, j) the full-resolution pixel
+  // (n u + i, n v + j) of grid pixel (u, v), in the order j, then i.
+  std::vector<std::array<cv::Mat, 2>> maps_left, maps_right;
   // Per rectified pixel, 255 where it samples a pixel of the input image
   // (inside the lens's image), 0 where it does not: there the rectified
   // image holds no data (the remap's constant border), not a neighbour's.
@@ -72,16 +86,17 @@ struct Rectification {
   cv::Rect common;   // the bounding box of the pixels where both hold image (empty: none)
 };
 
-// Throws std::invalid_argument if the cameras' image sizes differ or the
-// baseline is zero.
+// Throws std::invalid_argument if the cameras' image sizes differ, the
+// baseline is zero or downscale is not 1..8.
 Rectification BuildRectification(const Rig& rig, const RectifyOptions& options = {});
 // BuildRectification in two steps: everything but the maps and the masks
 // (cheap: what the size and the checks need), then those.
 Rectification RectificationGeometry(const Rig& rig, const RectifyOptions& options = {});
 void BuildRectificationMaps(const Rig& rig, Rectification* rect);
 
-// Remaps both images (any type cv::remap takes) with bilinear interpolation;
-// with a region, only its pixels (the rest of both images is 0).
+// Remaps both images (any type cv::remap takes) with bilinear interpolation,
+// each pixel the mean of its samples; with a region, only its pixels (the
+// rest of both images is 0).
 void RectifyPair(const Rectification& rect, const cv::Mat& left, const cv::Mat& right,
                  cv::Mat* left_rect, cv::Mat* right_rect, const cv::Rect& region = {});
 

@@ -307,6 +307,8 @@ void Process::PublishStatus(const char* state) {
     }
   }
   status.nchannels = int32_t(status.channels.size());
+  status.stages = stage_times_.Summary();
+  status.nstages = int32_t(status.stages.size());
   Publish(channel::kProcessStatus, status);
 }
 

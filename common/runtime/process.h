@@ -36,6 +36,7 @@
 #include "auth/message_auth.h"
 #include "lcm_io/decode.h"
 #include "runtime/process_options.h"
+#include "runtime/stage_times.h"
 #include "runtime/text_log.h"
 #include "widestereo/process_status_t.hpp"
 
@@ -57,13 +58,14 @@ class Process {
   ~Process();
 
   // Decodes, validates and counts every message on `channel`, then calls
-  // `handler`. A message that fails to decode or validate, or whose handler
+  // `handler` with it (the handler may move what it keeps out of it: the
+  // message is the handler's). A message that fails to decode or validate, or whose handler
   // throws, is counted as rejected and logged; the process goes on. Gaps in
   // a message's frame_id are counted as dropped (lost upstream or in transit).
   // Live, at most `queue_capacity` messages wait for the handler (0: LCM's
   // default); LCM drops the oldest beyond that, which shows as a frame_id gap.
   template <class Msg>
-  void Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+  void Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                  int queue_capacity = 0);
   // As Subscribe, for a consumer that samples the stream (stereo-view shows a
   // few of the image pairs that arrive): a message that comes while `due()`
@@ -72,7 +74,7 @@ class Process {
   // (the log's clock). Frame-id gaps are counted net of those skips.
   template <class Msg>
   void SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                        std::function<void(const Msg&)> handler, int queue_capacity = 0);
+                        std::function<void(Msg&)> handler, int queue_capacity = 0);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
   // dropped. A message that carries an auth_t is signed (with a rig key).
@@ -118,6 +120,11 @@ class Process {
   // second a channel); for handlers that work on another thread.
   void HandleRejected(const std::string& channel, const std::string& why);
   TextLog& log() { return log_; }
+  // The per-frame time of each stage, reported in PROCESS_STATUS. Receiving
+  // and publishing messages that carry a frame_id are timed here ("receive
+  // CHANNEL": decode, validate and the handler; "publish CHANNEL": encode and
+  // send); a process times its own stages with StageTimer.
+  StageTimes& stage_times() { return stage_times_; }
   const ProcessOptions& options() const { return options_; }
 
  private:
@@ -169,6 +176,7 @@ class Process {
   std::vector<std::function<void()>> at_exit_;
   std::function<std::string()> progress_;
   std::vector<std::shared_ptr<void>> handler_contexts_;
+  StageTimes stage_times_;
 };
 
 namespace detail {
@@ -179,21 +187,21 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 }  // namespace detail
 
 template <class Msg>
-void Process::Subscribe(const std::string& channel, std::function<void(const Msg&)> handler,
+void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
                         int queue_capacity) {
   SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity);
 }
 
 template <class Msg>
 void Process::SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                               std::function<void(const Msg&)> handler, int queue_capacity) {
+                               std::function<void(Msg&)> handler, int queue_capacity) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
   struct Context {
     Process* self;
     std::function<bool()> due;  // null: every message is handled
-    std::function<void(const Msg&)> handler;
+    std::function<void(Msg&)> handler;
   };
   auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler)});
   handler_contexts_.push_back(context);
@@ -203,8 +211,10 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
         Process* self = ctx->self;
         self->Counters(ch).received++;
         if (ctx->due && !self->file_input_ && !ctx->due()) return self->SkipUndecoded(ch);
+        std::optional<StageTimer> timer;
+        if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(self->stage_times_, "receive " + ch);
         try {
-          const Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
+          Msg msg = DecodeMessage<Msg>(rbuf->data, int(rbuf->data_size));
           self->ObserveTime(msg.utime);
           if constexpr (auth::IsAuthenticated<Msg>::value)
             if (self->auth_)
@@ -225,6 +235,8 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
 
 template <class Msg>
 void Process::Publish(const std::string& channel, const Msg& msg) {
+  std::optional<StageTimer> timer;
+  if constexpr (detail::HasFrameId<Msg>::value) timer.emplace(stage_times_, "publish " + channel);
   std::vector<uint8_t> bytes;
   try {
     if constexpr (auth::IsAuthenticated<Msg>::value)

@@ -34,7 +34,9 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
   int64_t frame_id = 0;  // pairs due so far: published or lost
   while (!process.Stopping() && (options.count == 0 || frame_id < options.count)) {
     if (paced) std::this_thread::sleep_until(start + std::chrono::microseconds(frame_id * period_us));
+    StageTimer read(process.stage_times(), "read");
     std::optional<StereoPair> pair = source.Next();
+    read.Stop();
     MirrorSourceCounters(process, source);
     for (const std::string& event : source.TakeEvents()) process.log().Info(event);
     if (!pair) break;
@@ -56,10 +58,12 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
                   : options.frame_clock ? (id + 1) * period_us
                                         : WallMicros();
     process.ObserveTime(frame.utime);
+    StageTimer encode(process.stage_times(), "encode");
     frame.left = MatToImage(pair->left, frame.utime, options.compression, options.jpeg_quality);
     frame.right = source.Mono() ? NoImage(frame.utime)
                                 : MatToImage(pair->right, frame.utime, options.compression,
                                              options.jpeg_quality);
+    encode.Stop();
     process.Publish(channel::kStereoImages, frame);
     process.log().Detail("frame " + std::to_string(id) + ": " + pair->label);
     process.Tick();

@@ -48,6 +48,11 @@ std::optional<StereoPair> DirSource::Next() {
     if (!loop_) return std::nullopt;
     next_ = 0;
   }
+  if (next_ < lap_.size()) {
+    ++(lap_[next_].left.empty() ? unreadable_ : read_);
+    return lap_[next_++];  // shares the pixels: the caller only reads them
+  }
+  const bool cache = loop_ && lap_.size() == next_;
   const ImagePairPaths& paths = folder_.pairs[next_++];
   StereoPair pair;
   pair.left = ReadImage(paths.left);
@@ -66,6 +71,11 @@ std::optional<StereoPair> DirSource::Next() {
     ++unreadable_;
   } else {
     ++read_;
+  }
+  const size_t bytes = pair.left.total() * pair.left.elemSize() + pair.right.total() * pair.right.elemSize();
+  if (cache && lap_bytes_ + bytes <= kLoopCacheBytes) {
+    lap_.push_back(pair);
+    lap_bytes_ += bytes;
   }
   return pair;
 }

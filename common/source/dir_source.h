@@ -5,6 +5,11 @@
 // images (and is counted); when the folder ends without one readable pair,
 // Next() throws.
 //
+// With `loop`, the pairs read in the first lap are kept decoded while they
+// fit in kLoopCacheBytes, and later laps serve them from memory (a looped
+// folder stands in for cameras, which cost no image decoding; files changed
+// after the first lap are not read again).
+//
 // With `mono` (a one-camera rig), every image of the folder in name order is
 // the left image of a pair with no right image. Without it, a folder of
 // images with no stereo layout is an error that suggests --mono.
@@ -20,6 +25,8 @@ namespace ws {
 
 class DirSource : public StereoSource {
  public:
+  static constexpr size_t kLoopCacheBytes = size_t(256) << 20;
+
   DirSource(const std::string& dir, bool loop, bool mono = false);
   // The images of a folder already found (FindImageFolder); a one-camera
   // folder is a one-camera rig.
@@ -36,6 +43,8 @@ class DirSource : public StereoSource {
   std::vector<std::string> events_;
   bool loop_;
   size_t next_ = 0;
+  std::vector<StereoPair> lap_;  // with loop_: the first lap's pairs, while they fit
+  size_t lap_bytes_ = 0;
   int64_t read_ = 0;
   int64_t unreadable_ = 0;
 };

@@ -174,7 +174,7 @@ void ViewNode::SubscribeSampled(const char* channel, std::initializer_list<PageV
   };
   process_.SubscribeSampled<Msg>(
       channel, [this, watched, &last_us] { return watched() && Due(last_us); },
-      [&stage](const Msg& msg) { stage.Offer(msg); },
+      [&stage](Msg& msg) { stage.Offer(std::move(msg)); },
       2);  // LCM's queue holds two big messages at most: the stage takes the newest
 }
 

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     ws::CloudNode node(process, filter, save);
     process.SetProgress([&] { return node.Progress(); });
     process.Subscribe<widestereo::point_cloud_t>(
-        ws::channel::kStereoCloud, [&](const auto& msg) { node.OnCloud(msg); }, 2);
+        ws::channel::kStereoCloud, [&](auto& msg) { node.OnCloud(msg); }, 2);
     process.Subscribe<widestereo::command_t>(
         ws::channel::kStereoCommand, [&](const auto& msg) { node.OnCommand(msg); });
     return process.Run();

@@ -34,7 +34,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"sgbm3way", "bm", "sgbm"}))
       ->capture_default_str();
   app.add_option("--downscale", m.downscale,
-                 "Match at 1/N resolution (N^2 less work) and scale the disparities back")
+                 "Rectify and match at 1/N resolution (N^2 less work): STEREO_DISPARITY (its f, cx, cy "
+                 "and Q too), the cloud's pixels and --save-rectified are on that grid")
       ->check(CLI::Range(1, 8))
       ->capture_default_str();
   app.add_option("--num-disparities", m.num_disparities, "Disparity search range (multiple of 16)")->capture_default_str();
@@ -58,8 +59,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
   config.cloud.step = 2;  // a full 1280x960 cloud is 13 MB a frame: full only on request
   app.add_option("--cloud-step", config.cloud.step,
-                 "Every N-th pixel of every N-th row becomes a cloud point (1: all, the full cloud; "
-                 "2 makes the message 4x smaller)")
+                 "Every N-th pixel of every N-th row becomes a cloud point, N in full-resolution pixels "
+                 "(N / downscale of the matched grid, at least 1; 1: the full cloud; 2 makes the "
+                 "message 4x smaller)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   auto* save_dir = app.add_option("--save-rectified", config.save_rectified.dir,
@@ -90,7 +92,7 @@ int main(int argc, char** argv) {
     process.Subscribe<widestereo::stereo_calibration_t>(
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(
-        ws::channel::kStereoImages, [&](const auto& msg) { node.OnFrame(msg); }, 2);
+        ws::channel::kStereoImages, [&](auto& msg) { node.OnFrame(msg); }, 2);
     return process.Run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-match: %s\n", e.what());

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -21,6 +22,14 @@ using namespace ws::test;
 
 void WriteImage(const std::string& path, int value, int width = 32, int height = 24) {
   cv::imwrite(path, cv::Mat(height, width, CV_8UC1, cv::Scalar(value)));
+}
+
+// Pair 1 readable, pair 2 with a left image that is no PNG.
+void WriteReadableThenUnreadablePair(const std::string& dir) {
+  WriteImage(dir + "/left1.png", 1);
+  WriteImage(dir + "/right1.png", 1);
+  std::ofstream(dir + "/left2.png") << "not a png";
+  WriteImage(dir + "/right2.png", 2);
 }
 
 std::string Name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
@@ -130,10 +139,7 @@ TEST(CaptureDir, CountAndCompressionAreApplied) {
 
 TEST(CaptureDir, UnreadablePairLeavesAFrameIdGapAndIsCounted) {
   const std::string dir = TempDir("unreadable");
-  WriteImage(dir + "/left1.png", 1);
-  WriteImage(dir + "/right1.png", 1);
-  std::ofstream(dir + "/left2.png") << "not a png";
-  WriteImage(dir + "/right2.png", 2);
+  WriteReadableThenUnreadablePair(dir);
   WriteImage(dir + "/left3.png", 3);
   WriteImage(dir + "/right3.png", 3, 16, 24);  // size differs from left3
   WriteImage(dir + "/left4.png", 4);
@@ -150,6 +156,29 @@ TEST(CaptureDir, UnreadablePairLeavesAFrameIdGapAndIsCounted) {
   const auto c = LastCounters(dir + "/images.lcmlog", "stereo-capture", "dir:" + dir);
   EXPECT_EQ(c.received, 2);
   EXPECT_EQ(c.rejected, 2);
+}
+
+TEST(DirSource, LoopServesLaterLapsFromTheFirstLapsImagesAndCountsThemAlike) {
+  const std::string dir = TempDir("loop");
+  WriteReadableThenUnreadablePair(dir);
+  ws::DirSource source(dir, true);
+  std::vector<ws::StereoPair> lap;
+  for (int i = 0; i < 2; ++i) lap.push_back(*source.Next());
+  // Later laps: the same pixels without reading the files (now gone).
+  std::filesystem::remove(dir + "/left1.png");
+  std::filesystem::remove(dir + "/right1.png");
+  for (int i = 0; i < 4; ++i) {
+    const ws::StereoPair pair = *source.Next();
+    const ws::StereoPair& first = lap[size_t(i % 2)];
+    EXPECT_EQ(pair.label, first.label);
+    ASSERT_EQ(pair.left.empty(), first.left.empty()) << pair.label;
+    if (!pair.left.empty()) {
+      EXPECT_EQ(cv::norm(pair.left, first.left, cv::NORM_INF), 0);
+    }
+  }
+  const auto counts = source.Counters().at("dir:" + dir);
+  EXPECT_EQ(counts.received, 3);  // pair 1 in each of the 3 laps
+  EXPECT_EQ(counts.rejected, 3);  // pair 2 likewise
 }
 
 TEST(CaptureDir, BadSourceSpecIsAClearError) {

@@ -213,6 +213,8 @@ process_status_t StatusMessage() {
     status.channels.push_back({channel, 120, 118, 1, 2, 1});
   status.nchannels = 2;
   status.last_error = "STEREO_IMAGES: image_t: bad image size 0x0";
+  status.stages = {{"receive STEREO_IMAGES", 120, 120, 1.5f, 3.0f}, {"detect", 118, 118, 40.f, 75.f}};
+  status.nstages = 2;
   return status;
 }
 

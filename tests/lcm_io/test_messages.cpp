@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "lcm_io/decode.h"
 #include "test_support.h"
@@ -149,6 +150,8 @@ TEST(Messages, EveryTypeRoundTrips) {
   ps.channels[0].channel = "STEREO_IMAGES";
   ps.channels[0].received = 10;
   ps.channels[0].dropped = 1;
+  ps.nstages = 1;
+  ps.stages = {{"match", 10, 10, 30.5f, 41.f}};
   ExpectRoundTrip(ps);
 
   command_t command{};
@@ -276,6 +279,20 @@ TEST(Messages, StringsAreTheirBytesAndOneNul) {
   auto zero = bytes;
   zero[length_at + 3] = 0;
   EXPECT_FALSE(decodes(zero));
+}
+
+TEST(Messages, StageTimesAreChecked) {
+  process_status_t ps{};
+  ps.stages = {{"match", 10, 10, 30.5f, 41.f}};
+  ps.nstages = 1;
+  EXPECT_NO_THROW(ws::Validate(ps));
+  for (auto broken : {widestereo::stage_time_t{"match", 10, 11, 30.5f, 41.f},  // window beyond count
+                      widestereo::stage_time_t{"match", 10, 10, 50.f, 41.f},   // median above p99
+                      widestereo::stage_time_t{"match", 10, 10, -1.f, 41.f},
+                      widestereo::stage_time_t{"match", 10, 10, 30.5f, std::numeric_limits<float>::infinity()}}) {
+    ps.stages = {broken};
+    EXPECT_THROW(ws::Validate(ps), ws::DecodeError) << broken.median_ms << " " << broken.p99_ms;
+  }
 }
 
 TEST(Messages, CornersAndCalibrationsAreChecked) {

@@ -71,7 +71,7 @@ TEST(Rectification, RemapTablesAgreeWithTheModel) {
   const ws::Rig rig = WideRig();
   const ws::Rectification rect = ws::BuildRectification(rig);
   cv::Mat map_x, map_y;
-  cv::convertMaps(rect.map_right[0], rect.map_right[1], map_x, map_y, CV_32FC1);
+  cv::convertMaps(rect.maps_right[0][0], rect.maps_right[0][1], map_x, map_y, CV_32FC1);
   double worst = 0;
   for (int v = 40; v < 960; v += 97) {
     for (int u = 40; u < 1280; u += 101) {

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
 #include <cstdio>
 
 #include "lcm_io/channels.h"
@@ -47,6 +50,23 @@ ChainLogs RunMatchAndCloud(const std::string& dir, const Rig& rig, const std::st
   return logs;
 }
 
+namespace {
+
+// The disparity against the truth on the full-resolution grid: one n times
+// coarser (stereo-match --downscale n rectifies and matches there) scaled back
+// by nearest neighbour, each coarse pixel's disparity (times n) on its n x n
+// full-resolution pixels, so that every mode is measured alike.
+DisparityErrors CompareToTruth(const cv::Mat& disparity, const cv::Mat& true_disparity) {
+  if (disparity.size() == true_disparity.size()) return CompareDisparity(disparity, true_disparity);
+  const int n = int(std::lround(double(true_disparity.cols) / disparity.cols));
+  cv::Mat full;
+  cv::resize(disparity * n, full, cv::Size(disparity.cols * n, disparity.rows * n), 0, 0, cv::INTER_NEAREST);
+  EXPECT_EQ(full.size(), true_disparity.size());
+  return CompareDisparity(full(cv::Rect(cv::Point(), true_disparity.size())), true_disparity);
+}
+
+}  // namespace
+
 WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Rig& rig,
                      const std::string& name, int frames, const std::string& num_disparities,
                      const WallChainOptions& options) {
@@ -71,7 +91,7 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Rig& r
   WallRun run;
   for (size_t i = 0; i < std::min({disparities.size(), clouds.size(), stats.size()}); ++i) {
     EXPECT_TRUE(stats[i].plane_found) << name << " frame " << i;
-    run.disparity.push_back(CompareDisparity(ImageToMat(disparities[i].disparity), true_disparity));
+    run.disparity.push_back(CompareToTruth(ImageToMat(disparities[i].disparity), true_disparity));
     run.wall.push_back(MeasureWall(clouds[i], stats[i], rect, true_disparity, normal, wall.wall_offset,
                                    0.02));
     const auto& d = run.disparity.back();

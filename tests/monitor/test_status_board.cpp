@@ -55,6 +55,29 @@ TEST(StatusBoard, FullNamesAndLossesApartFromSkips) {
   EXPECT_EQ(words[5], "40") << row;
 }
 
+TEST(StatusBoard, EachStagesTimePerFrameUnderItsProcess) {
+  ws::StatusBoard board;
+  auto status = Status("stereo-match", 7);
+  for (const char* name : {"receive STEREO_IMAGES", "rectify", "match", "cloud", "publish STEREO_CLOUD"}) {
+    widestereo::stage_time_t t{};
+    t.stage = name;
+    t.count = t.window = 100;
+    t.median_ms = 12.3f;
+    t.p99_ms = 40.5f;
+    status.stages.push_back(t);
+  }
+  status.nstages = int32_t(status.stages.size());
+  board.Add(status, 0);
+  const std::string table = board.Render(1000000, {60, 0});
+  const std::string line = LineWith(table, "ms median/p99:");
+  EXPECT_NE(line.find("receive STEREO_IMAGES 12.3/40.5,"), std::string::npos) << table;
+  for (const char* entry : {"rectify 12.3/40.5,", "match 12.3/40.5,", "publish STEREO_CLOUD 12.3/40.5\n"})
+    EXPECT_NE(table.find(entry), std::string::npos) << entry << " in\n" << table;
+  for (const auto& l : Lines(table)) EXPECT_LE(l.size(), 60u) << l;  // broken between stages, not cut
+  // Gone: no budget, it is not current.
+  EXPECT_EQ(board.Render(10000000).find("ms median/p99"), std::string::npos);
+}
+
 TEST(StatusBoard, SilentProcessesAreGoneAndEndedOnesSaySo) {
   ws::StatusBoard board;
   board.Add(Status("stereo-detect", 1), 0);

@@ -21,7 +21,7 @@ using namespace ws::test;
 using widestereo::process_status_t;
 
 process_status_t Status(const std::string& name, int64_t utime) {
-  process_status_t s;
+  process_status_t s{};
   s.utime = utime;
   s.name = name;
   s.host = "robot";
