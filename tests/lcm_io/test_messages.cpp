@@ -29,7 +29,7 @@ image_t Gray(int w, int h, uint8_t value) {
 }
 
 camera_corners_t Corners() {
-  camera_corners_t c;
+  camera_corners_t c{};
   c.board_id = "chessboard:9x6:0.025";
   c.image_width = 640;
   c.image_height = 480;
@@ -97,7 +97,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   calib.view_rms = {0.2};
   ExpectRoundTrip(calib);
 
-  calibration_status_t status;
+  calibration_status_t status{};
   status.utime = 4;
   status.state = "collecting";
   status.grid_rows = 2;
@@ -108,9 +108,10 @@ TEST(Messages, EveryTypeRoundTrips) {
   status.hint = "move the board to the top-left corner";
   ExpectRoundTrip(status);
 
-  disparity_t disparity;
+  disparity_t disparity{};
   disparity.utime = 5;
   disparity.disparity = ws::MatToImage(cv::Mat(3, 4, CV_32FC1, cv::Scalar(1.5f)), 5);
+  disparity.min_disparity = 0;
   disparity.num_disparities = 64;
   disparity.Q[15] = 1;
   disparity.rectification = disparity_t::RECTIFICATION_LATLON;
@@ -120,7 +121,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   disparity.baseline = 0.15;
   ExpectRoundTrip(disparity);
 
-  point_cloud_t cloud;
+  point_cloud_t cloud{};
   cloud.utime = 6;
   cloud.frame = "left_rectified";
   cloud.npoints = 2;
@@ -129,7 +130,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   cloud.intensity = {10, 20};
   ExpectRoundTrip(cloud);
 
-  cloud_stats_t stats;
+  cloud_stats_t stats{};
   stats.utime = 7;
   stats.plane_found = true;
   stats.plane_normal[2] = 1;
@@ -140,7 +141,7 @@ TEST(Messages, EveryTypeRoundTrips) {
   stats.stage_ms = {0.1, 2.5};
   ExpectRoundTrip(stats);
 
-  process_status_t ps;
+  process_status_t ps{};
   ps.utime = 8;
   ps.name = "stereo-detect";
   ps.host = "robot";
@@ -233,7 +234,7 @@ TEST(Messages, WrongTypeTruncatedAndTrailingBytesAreRejected) {
 }
 
 TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
-  point_cloud_t cloud;
+  point_cloud_t cloud{};
   cloud.npoints = 0;
   cloud.nintensity = 0;
   auto bytes = Encode(cloud);
