@@ -80,7 +80,7 @@ void CompareRegion(const char* name, ws::MatcherConfig config, const ws::Rectifi
               Median(common_ms) / Median(whole_ms));
 }
 
-void CompareGrid(const char* name, const ws::MatcherConfig& config, const ws::StereoRig& rig,
+void CompareGrid(const char* name, const ws::MatcherConfig& config, const ws::Rig& rig,
                  const widestereo::stereo_frame_t& frame, int runs) {
   ws::RectifyOptions options;
   const auto full = std::make_shared<const ws::Rectification>(ws::BuildRectification(rig, options));

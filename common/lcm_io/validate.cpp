@@ -108,11 +108,11 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   }
   // The non-radial field: none, or a grid of its coefficients over a
   // rectangle; a correction of more than the focal length is no lens's.
-  Require(msg.field_cols == 0 && msg.field_rows == 0 && msg.nfield == 0 ||
-              msg.field_cols >= 4 && msg.field_rows >= 4 &&
-                  msg.field_cols <= NonRadialField::kMaxControlPoints &&
-                  msg.field_rows <= NonRadialField::kMaxControlPoints &&
-                  msg.nfield == 2 * msg.field_cols * msg.field_rows,
+  Require((msg.field_cols == 0 && msg.field_rows == 0 && msg.nfield == 0) ||
+              (msg.field_cols >= 4 && msg.field_rows >= 4 &&
+               msg.field_cols <= NonRadialField::kMaxControlPoints &&
+               msg.field_rows <= NonRadialField::kMaxControlPoints &&
+               msg.nfield == 2 * msg.field_cols * msg.field_rows),
           t, "a non-radial field has 4 to 64 control points a side and 2 cols rows coefficients");
   Require(AllFinite(msg.field_domain) && AllFinite(msg.field_coeffs), t,
           "non-finite non-radial field");

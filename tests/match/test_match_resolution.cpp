@@ -26,7 +26,7 @@ TEST(MatchResolution, RemapAtTheMatchersResolutionGivesTheDisparityOfAFullSizeRe
   auto source = ws::MakeSimSource("config/sim/wall.yaml", false);
   const auto pair = source->Next();
   ASSERT_TRUE(pair);
-  const ws::StereoRig rig = ws::TrueStereoRig(source->simulator().Truth());
+  const ws::Rig rig = ws::TrueStereoRig(source->simulator().Truth());
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(pair->left, 1);
   frame.right = ws::MatToImage(pair->right, 1);

@@ -206,7 +206,9 @@ TEST(ModelRegistry, KnowsEveryModelByKind) {
           EXPECT_EQ(stored.kind, kind);
           // The table's identifiable coefficients: those stored but the gauge's.
           EXPECT_EQ(stored.coeffs.size(), coeffs.size() + Traits(kind).gauge_fixed) << kind;
-          if (!Traits(kind).spline) EXPECT_EQ(Traits(kind).terms, num_coeffs) << kind;
+          if (!Traits(kind).spline) {
+            EXPECT_EQ(Traits(kind).terms, num_coeffs) << kind;
+          }
           EXPECT_EQ(m.CoeffName(0).rfind(Traits(kind).coeff_key, 0), 0u) << kind;
           EXPECT_EQ(m.EstimatedCoeffs(stored.coeffs), coeffs);
           // Built back from what was stored, it is the same function.

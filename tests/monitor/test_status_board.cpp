@@ -106,7 +106,9 @@ TEST(StatusBoard, FitsTheScreenAndWrapsTheHintBetweenWords) {
   EXPECT_EQ(table.find("STEREO_IMAGES"), std::string::npos) << "condensed to a line per process: " << table;
   EXPECT_NE(table.find("hint: show the board"), std::string::npos) << table;
   for (const auto& line : lines)  // no word cut at the end of a hint line
-    if (line.rfind("hint: ", 0) == 0 || line.rfind("      ", 0) == 0) EXPECT_NE(line.back(), ' ') << line;
+    if (line.rfind("hint: ", 0) == 0 || line.rfind("      ", 0) == 0) {
+      EXPECT_NE(line.back(), ' ') << line;
+    }
   EXPECT_NE(table.find("tilted"), std::string::npos) << table;
   // A screen too small even for one line a process: cut, and says so.
   EXPECT_NE(board.Render(1000000, {60, 12}).find("more lines: a taller terminal shows them"), std::string::npos);
