@@ -58,9 +58,9 @@ test: build
 # and those that run what asan_checks does not build: the Java, Python and
 # browser tests and the install example.
 # ASAN_OPT: -O1 -g1 (line tables for the reports), not RelWithDebInfo's
-# -O2 -g: calib/problem.cpp, the heaviest file, took 363 s of CPU so against
-# more than 407 s (stopped unfinished); and that file is compiled without the
-# sanitizers (common/calib/CMakeLists.txt). docs/reliability.md has the
+# -O2 -g: calib/solver/problem.cpp, the heaviest file, took 363 s of CPU so
+# against more than 407 s (stopped unfinished); and that file is compiled
+# without the sanitizers (common/calib/CMakeLists.txt). docs/reliability.md has the
 # figures: about 13 min to build and 3 to test on two idle cores.
 test-asan: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWS_SANITIZE=ON -DWS_BUILD_BENCH=OFF \

@@ -10,7 +10,7 @@
 
 #include <opencv2/calib3d.hpp>
 
-#include "calib/calib_data.h"
+#include "calib/solver/calib_data.h"
 #include "models/camera_model.h"
 
 namespace ws::bench {

@@ -5,14 +5,19 @@
     scripts/check_layers.py --self-test
 
 A folder A includes folder B when a file of common/A/ has `#include "B/..."`.
+A folder's sub-folders are nodes of the graph too: common/calib/solver/ is
+"calib/solver", apart from "calib" (the files of calib/ itself), so the
+layers of calib (solver < start < evaluate < calib < node) are checked like
+the folders.
 Fails (exit 1), saying which files make each edge, when
   - the folders form a cycle once the edges of ALLOWED_EDGES are left out
     (each closes a loop known today; the goal is an empty list);
   - an allowed edge no longer exists or closes no loop (take it off
     ALLOWED_EDGES);
-  - a file of the solver core (SOLVER_CORE) includes, directly or through
-    other headers of common/, an LCM header or a file-format header
-    (FORBIDDEN_IN_SOLVER), other than the known SOLVER_CORE_ALLOWED ones.
+  - a file of the solver core (SOLVER_CORE: files, or every file of a
+    folder given as "folder/") includes, directly or through other headers
+    of common/, an LCM header or a file-format header (FORBIDDEN_IN_SOLVER),
+    other than the known SOLVER_CORE_ALLOWED ones.
 Prints the graph either way. Python 3 standard library only.
 """
 import os
@@ -26,14 +31,10 @@ ALLOWED_EDGES = [
     ("lcm_io", "detect"),    # lcm_io/validate.cpp: detect -> lcm_io -> detect
 ]
 
-# The solver core: the problem and its blocks, residuals, covariance and
-# outliers (calib/; its own folder once calib is layered).
-SOLVER_CORE = [
-    "calib/problem.h", "calib/problem.cpp", "calib/residuals.h",
-    "calib/camera_block.h", "calib/camera_block.cpp",
-    "calib/covariance.h", "calib/covariance.cpp",
-    "calib/outliers.h", "calib/outliers.cpp",
-]
+# The solver core: every file of calib/solver/ (the problem and its blocks,
+# residuals, priors, covariance, outliers, the data it works on, its
+# settings).
+SOLVER_CORE = ["calib/solver/"]
 
 # Include prefixes the solver core must not reach: LCM (the library, the
 # generated message types, the codecs) and file formats.
@@ -42,18 +43,14 @@ FORBIDDEN_IN_SOLVER = {
     "yaml-cpp/": "YAML", "nlohmann/": "JSON", "runtime/opencv_yaml.h": "YAML files",
     "runtime/yaml_config.h": "YAML files", "runtime/atomic_file.h": "file writing",
     "rig/rig_file.h": "the calibration file", "rig/rig_message.h": "LCM codecs",
-    "calib/report.h": "the JSON report", "runtime/json_file.h": "JSON files",
-    "calib/corner_import.h": "corner files", "calib/corner_export.h": "corner files",
+    "runtime/json_file.h": "JSON files", "calib/node/": "the calibration node (LCM, files)",
     "interop/": "other tools' files", "opencv2/core/persistence.hpp": "cv::FileStorage",
+    "opencv2/imgcodecs.hpp": "image files", "fstream": "file I/O", "filesystem": "files",
 }
 
-# (solver core file, forbidden include) pairs known today, to be removed.
-SOLVER_CORE_ALLOWED = [  # through calib/calib_data.h, the solver's input
-    ("calib/problem.h", "widestereo/stereo_corners_t.hpp"),
-    ("calib/problem.cpp", "widestereo/stereo_corners_t.hpp"),
-    ("calib/outliers.h", "widestereo/stereo_corners_t.hpp"),
-    ("calib/outliers.cpp", "widestereo/stereo_corners_t.hpp"),
-]
+# (solver core file, forbidden include) pairs known today, to be removed;
+# the goal is an empty list.
+SOLVER_CORE_ALLOWED = []
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 SOURCE_ENDINGS = (".h", ".hpp", ".cpp", ".cc", ".in")
@@ -73,15 +70,35 @@ def read_includes(common):
     return files
 
 
+def node_folders(common):
+    """The nodes of the graph: the folders of common/ and their sub-folders."""
+    folders = []
+    for d in sorted(os.listdir(common)):
+        if os.path.isdir(os.path.join(common, d)):
+            folders.append(d)
+            folders += ["%s/%s" % (d, sub) for sub in sorted(os.listdir(os.path.join(common, d)))
+                        if os.path.isdir(os.path.join(common, d, sub))]
+    return folders
+
+
+def node_of(rel, folders):
+    """The folder node a path relative to common/ belongs to: its sub-folder
+    ("calib/solver/problem.h": "calib/solver") or else its folder."""
+    parts = rel.split("/")
+    if len(parts) > 2 and "/".join(parts[:2]) in folders:
+        return "/".join(parts[:2])
+    return parts[0]
+
+
 def folder_graph(files, folders):
     """{folder: {included folder: [files that include it]}}."""
     graph = {folder: {} for folder in folders}
     for rel, includes in files.items():
-        here = rel.split("/")[0]
+        here = node_of(rel, folders)
         if here not in folders:
             continue
         for include, quoted in includes:
-            there = include.split("/")[0]
+            there = node_of(include, folders)
             # Only headers of common/: "widestereo/image_t.hpp" is a generated
             # LCM type, not common/widestereo/.
             if quoted and include in files and there in folders and there != here:
@@ -152,7 +169,7 @@ def reached_includes(files, start):
 
 def check(common, allowed_edges, solver_core, solver_allowed, out):
     files = read_includes(common)
-    folders = sorted(d for d in os.listdir(common) if os.path.isdir(os.path.join(common, d)))
+    folders = node_folders(common)
     graph = folder_graph(files, folders)
     failures = []
 
@@ -188,11 +205,19 @@ def check(common, allowed_edges, solver_core, solver_allowed, out):
                 out.write("    %s -> %s: %s\n" % (a, b, ", ".join(sorted(set(layered[a][b])))))
         failures.append("a folder cycle: " + " <-> ".join(sorted(group)))
 
-    out.write("solver core (%d files):\n" % len(solver_core))
-    for rel in solver_core:
-        if rel not in files:
-            failures.append("solver core file %s does not exist: update SOLVER_CORE" % rel)
-            continue
+    core = []
+    for entry in solver_core:
+        if entry.endswith("/"):
+            found = sorted(rel for rel in files if rel.startswith(entry))
+            if not found:
+                failures.append("the solver core folder %s has no files: update SOLVER_CORE" % entry)
+            core += found
+        elif entry not in files:
+            failures.append("solver core file %s does not exist: update SOLVER_CORE" % entry)
+        else:
+            core.append(entry)
+    out.write("solver core (%d files: %s):\n" % (len(core), ", ".join(solver_core)))
+    for rel in core:
         for include in sorted(reached_includes(files, rel)):
             for prefix, what in FORBIDDEN_IN_SOLVER.items():
                 if include.startswith(prefix):
@@ -226,17 +251,32 @@ def self_test():
     clean = {"a/x.h": '#include "b/y.h"\n', "b/y.h": "#include <vector>\n", "core/p.h": '#include "b/y.h"\n'}
     looped = dict(clean, **{"b/y.h": '#include "a/x.h"\n'})
     lcm = dict(clean, **{"b/y.h": '#include "widestereo/frame_t.hpp"\n'})
+    # Sub-folders are nodes: a/low/ < a/high/ < a/ (its own files).
+    layered = dict(clean, **{"a/low/l.h": "#include <vector>\n", "a/high/h.h": '#include "a/low/l.h"\n',
+                             "a/z.h": '#include "a/high/h.h"\n'})
+    sub_looped = dict(layered, **{"a/low/l.h": '#include "a/high/h.h"\n'})
+    parent_looped = dict(layered, **{"a/low/l.h": '#include "a/z.h"\n'})
+    core_folder = dict(layered, **{"core/p.h": '#include "a/low/l.h"\n', "core/q.cpp": '#include "core/p.h"\n'})
+    core_lcm = dict(core_folder, **{"core/q.cpp": '#include "core/p.h"\n#include <lcm/lcm-cpp.hpp>\n'})
+    core_file = dict(core_folder, **{"a/low/l.h": "#include <fstream>\n"})
     cases = [
-        ("a clean tree passes", clean, [], True),
-        ("a new cycle fails", looped, [], False),
-        ("an allowed edge passes", looped, [("b", "a")], True),
-        ("a stale allowance fails", clean, [("b", "a")], False),
-        ("an allowance closing no loop fails", clean, [("a", "b")], False),
-        ("the core reaching LCM through a header fails", lcm, [], False),
+        ("a clean tree passes", clean, [], ["core/p.h"], True),
+        ("a new cycle fails", looped, [], ["core/p.h"], False),
+        ("an allowed edge passes", looped, [("b", "a")], ["core/p.h"], True),
+        ("a stale allowance fails", clean, [("b", "a")], ["core/p.h"], False),
+        ("an allowance closing no loop fails", clean, [("a", "b")], ["core/p.h"], False),
+        ("the core reaching LCM through a header fails", lcm, [], ["core/p.h"], False),
+        ("sub-folders in layers pass", layered, [], ["core/p.h"], True),
+        ("a cycle between sub-folders fails", sub_looped, [], ["core/p.h"], False),
+        ("a cycle between a sub-folder and its folder fails", parent_looped, [], ["core/p.h"], False),
+        ("a core folder of clean files passes", core_folder, [], ["core/"], True),
+        ("a core folder's other file including LCM fails", core_lcm, [], ["core/"], False),
+        ("a core folder reaching file I/O through a sub-folder fails", core_file, [], ["core/"], False),
+        ("an empty core folder fails", clean, [], ["nowhere/"], False),
     ]
     ok = True
-    for name, files, allowed, expect in cases:
-        got = check(tree(files), allowed, ["core/p.h"], [], io.StringIO())
+    for name, files, allowed, core, expect in cases:
+        got = check(tree(files), allowed, core, [], io.StringIO())
         print("%s: %s" % (name, "ok" if got == expect else "WRONG"))
         ok &= got == expect
     return ok

@@ -17,7 +17,7 @@
 
 #include "bench_support.h"
 #include "calib/calibrate.h"
-#include "calib/synthetic_rig.h"
+#include "synthetic_rig.h"
 
 namespace {
 

@@ -28,7 +28,8 @@
 
 #include "bench_support.h"
 #include "calib/calibrate.h"
-#include "calib/corner_import.h"
+#include "calib/node/corner_import.h"
+#include "calib/node/corners_message.h"
 #include "detect/stereo_corner_finder.h"
 #include "lcm_io/image_codec.h"
 #include "detect/corner_refinement.h"

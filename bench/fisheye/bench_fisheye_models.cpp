@@ -15,7 +15,8 @@
 #include <optional>
 
 #include "calib/calibrate.h"
-#include "calib/heldout.h"
+#include "calib/evaluate/heldout.h"
+#include "calib/node/corners_message.h"
 #include "lcm_io/channels.h"
 #include "opencv_fisheye_fit.h"
 #include "runtime/process.h"

@@ -1,5 +1,5 @@
 // export_corners_vnl: the board corners of a STEREO_CORNERS log as one
-// mrcal corners.vnl (calib/corner_export.h), so that mrcal-calibrate-cameras
+// mrcal corners.vnl (calib/node/corner_export.h), so that mrcal-calibrate-cameras
 // solves the very corners stereo-calibrate did (bench/fisheye/run.sh,
 // bench/real/run.sh). Images are named left-NNNN.png / right-NNNN.png by
 // frame id (a one-camera log: left only), so mrcal's globs 'left-*.png'
@@ -9,7 +9,8 @@
 #include <cstdio>
 #include <fstream>
 
-#include "calib/corner_export.h"
+#include "calib/node/corner_export.h"
+#include "calib/node/corners_message.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"

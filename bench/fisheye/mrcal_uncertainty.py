@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # mrcal's projection uncertainty of a solved camera on the grid widestereo's
-# report uses (calib/projection_uncertainty.h): 32 x 24 points over the
+# report uses (calib/evaluate/projection_uncertainty.h): 32 x 24 points over the
 # image, each pixel's ray at infinity, mrcal.projection_uncertainty's
 # worst-direction 1-sigma; median and worst over the cells holding a corner
 # of CORNERS.vnl (as the report's median_px and worst_px).

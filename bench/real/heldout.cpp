@@ -17,7 +17,8 @@
 #include <lcm/lcm-cpp.hpp>
 #include <nlohmann/json.hpp>
 
-#include "calib/heldout.h"
+#include "calib/evaluate/heldout.h"
+#include "calib/node/corners_message.h"
 #include "lcm_io/channels.h"
 #include "opencv_fisheye_fit.h"
 #include "rig/rig_file.h"

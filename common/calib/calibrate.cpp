@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "calib/camera_result.h"
-#include "calib/heldout.h"
+#include "calib/evaluate/heldout.h"
 #include "calib/mono_solve.h"
-#include "calib/stage_log.h"
+#include "calib/solver/stage_log.h"
 #include "calib/stereo_solve.h"
 #include "models/model_registry.h"
 

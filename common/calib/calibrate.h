@@ -22,13 +22,13 @@
 #include <string>
 #include <vector>
 
-#include "calib/board_warp.h"
-#include "calib/calib_data.h"
-#include "calib/heldout_corner.h"
-#include "calib/options.h"
-#include "calib/pose.h"
-#include "calib/projection_uncertainty.h"
-#include "calib/quality.h"
+#include "calib/evaluate/heldout_corner.h"
+#include "calib/evaluate/projection_uncertainty.h"
+#include "calib/solver/board_warp.h"
+#include "calib/solver/calib_data.h"
+#include "calib/solver/options.h"
+#include "calib/solver/pose.h"
+#include "calib/solver/quality.h"
 #include "models/camera_model.h"
 
 namespace ws::calib {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "calib/stage_log.h"
+#include "calib/solver/stage_log.h"
 
 namespace ws::calib {
 

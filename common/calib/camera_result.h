@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "calib/calibrate.h"
-#include "calib/heldout.h"
-#include "calib/initialise.h"
-#include "calib/problem.h"
+#include "calib/evaluate/heldout.h"
+#include "calib/solver/problem.h"
+#include "calib/start/initialise.h"
 
 namespace ws::calib {
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <utility>
 
-#include "calib/quality.h"
+#include "calib/solver/quality.h"
 
 namespace ws::calib {
 namespace {

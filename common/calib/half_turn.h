@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "calib/board_warp.h"
 #include "calib/mono_solve.h"
+#include "calib/solver/board_warp.h"
 
 namespace ws::calib {
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "calib/heldout.h"
-#include "calib/outliers.h"
-#include "calib/pose_fit.h"
-#include "calib/stage_log.h"
+#include "calib/evaluate/heldout.h"
+#include "calib/solver/outliers.h"
+#include "calib/solver/stage_log.h"
+#include "calib/start/pose_fit.h"
 
 namespace ws::calib {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "calib/quality.h"
+#include "calib/solver/quality.h"
 
 namespace ws::calib {
 namespace {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "calib/mono_solve.h"
-#include "calib/problem.h"
+#include "calib/solver/problem.h"
 
 namespace ws::calib {
 

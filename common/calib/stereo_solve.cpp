@@ -9,9 +9,9 @@
 #include "calib/camera_result.h"
 #include "calib/half_turn.h"
 #include "calib/mono_solve.h"
-#include "calib/outliers.h"
 #include "calib/pair_consistency.h"
-#include "calib/stage_log.h"
+#include "calib/solver/outliers.h"
+#include "calib/solver/stage_log.h"
 
 namespace ws::calib {
 namespace {

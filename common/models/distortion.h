@@ -28,7 +28,7 @@
 //   // Local support: Distort at the ideal point (x, y) reads only
 //   // coeffs[FirstLocalCoeff(x, y) + j], 0 <= j < NumLocalCoeffs() (those of
 //   // them in [0, NumCoeffs())), so that a solver differentiates a corner's
-//   // residual by those few (calib/residuals.h). A spline: its degree + 1.
+//   // residual by those few (calib/solver/residuals.h). A spline: its degree + 1.
 //   static constexpr int kMaxLocalCoeffs;            // bound of NumLocalCoeffs()
 //   int NumLocalCoeffs() const;
 //   int FirstLocalCoeff(double x, double y) const;

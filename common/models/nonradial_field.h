@@ -23,7 +23,7 @@
 // Coefficients: 2 cols rows numbers, the x components c^x_ij at j cols + i,
 // then the y components at cols rows + j cols + i; then, with a tilt,
 // tau_x and tau_y. A calibration keeps F free of what the other parameters
-// (the tilt's included) already describe (calib/nonradial_prior.h).
+// (the tilt's included) already describe (calib/solver/nonradial_prior.h).
 #pragma once
 
 #include <array>

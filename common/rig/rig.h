@@ -6,7 +6,7 @@
 //   rig/rig_file.h     the calibration file (stereo-calibrate --out), YAML
 //   rig/rig_message.h  the STEREO_CALIBRATION message (stereo_calibration_t)
 // A solve's result (calib::StereoCalibration) becomes one with calib::ToRig
-// (calib/solved_rig.h); a camera alone is a CameraModel (models/).
+// (calib/node/solved_rig.h); a camera alone is a CameraModel (models/).
 #pragma once
 
 #include <string>

@@ -2,7 +2,7 @@
 // and back. camera_calibration_t carries the full coefficient vector (for a
 // B-spline alpha_0 = alpha_1 = 0 included); a rig's message carries its RMS
 // figures, and no per-view RMS or parameter deviations (a solve's message
-// adds them: calib/solved_rig.h).
+// adds them: calib/node/solved_rig.h).
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 // A header of their own so that the many files that need only the options
 // (through process.h) do not compile CLI11: each file that includes it
 // builds CLI11's global validators, several seconds of compile time apiece
-// (calib/calibrate_node.cpp went from 24 s to 7 s on a loaded core).
+// (calib/node/calibrate_node.cpp went from 24 s to 7 s on a loaded core).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // The process-wide request to stop: SIGINT and SIGTERM make it (ws::Process
 // installs the handlers), and long work polls it so that the process exits
-// promptly: a calibration's solves (calib/problem.h) and long file reads.
+// promptly: a calibration's solves (calib/solver/problem.h) and long file reads.
 // Work that stops throws Stopped; what it would have saved or published is
 // not, since it is not done.
 #pragma once

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <thread>
 
-#include "calib/calibrate_node.h"
-#include "calib/folder_corners.h"
+#include "calib/node/calibrate_node.h"
+#include "calib/node/folder_corners.h"
 #include "lcm_io/lcm_log.h"
 #include "models/model_registry.h"
 #include "runtime/output_folder.h"

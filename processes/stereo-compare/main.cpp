@@ -1,6 +1,6 @@
 // stereo-compare: how much two calibrations of one rig differ, in pixels
 // across each camera's image, after the small rotation between their camera
-// frames that fits best (calib/projection_diff.h; mrcal's
+// frames that fits best (calib/evaluate/projection_diff.h; mrcal's
 // show-projection-diff). Two models, two days, two rigs: whether a
 // recalibration changed anything real. Either calibration may be another
 // tool's: mrcal's .cameramodel (or its output folder), Kalibr's camchain,
@@ -17,9 +17,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "calib/calib_plots.h"
-#include "calib/projection_diff.h"
-#include "calib/report.h"
+#include "calib/evaluate/projection_diff.h"
+#include "calib/node/calib_plots.h"
+#include "calib/node/report.h"
 #include "interop/any_rig.h"
 #include "runtime/atomic_file.h"
 

@@ -9,8 +9,9 @@
 //   stereo-import-corners --mrcal corners.vnl --board ... --image-size ... --pairs '*left*' '*right*' ...
 #include <cstdio>
 
-#include "calib/calib_data.h"
-#include "calib/corner_import.h"
+#include "calib/node/corner_import.h"
+#include "calib/node/corners_message.h"
+#include "calib/solver/calib_data.h"
 #include "detect/board_spec.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"

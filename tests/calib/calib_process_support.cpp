@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "calib/node/corners_message.h"
 #include "lcm_io/channels.h"
 #include "widestereo/stereo_corners_t.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/calib_data.h"
+#include "calib/solver/calib_data.h"
 #include "test_support.h"
 
 namespace ws::calib::test {

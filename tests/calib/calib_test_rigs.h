@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "calib/calibrate.h"
-#include "calib/synthetic_rig.h"
+#include "synthetic_rig.h"
 
 namespace ws::calib::test {
 

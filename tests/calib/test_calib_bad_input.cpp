@@ -5,7 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "calib/calibrate_node.h"
+#include "calib/node/calibrate_node.h"
+#include "calib/node/corners_message.h"
 #include "calib_test_rigs.h"
 
 namespace {

@@ -15,8 +15,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calib/calibrate.h"
-#include "calib/corner_import.h"
-#include "calib/heldout.h"
+#include "calib/evaluate/heldout.h"
+#include "calib/node/corner_import.h"
+#include "calib/node/corners_message.h"
 #include "calib_process_support.h"
 #include "detect/corner_refinement.h"
 #include "detect/stereo_corner_finder.h"

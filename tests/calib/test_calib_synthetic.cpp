@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "calib/table2.h"
+#include "calib/node/table2.h"
 #include "calib_test_rigs.h"
 
 namespace {

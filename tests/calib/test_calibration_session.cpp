@@ -9,9 +9,10 @@
 #include <limits>
 #include <random>
 
-#include "calib/calibration_session.h"
-#include "calib/corner_noise.h"
-#include "calib/coverage.h"
+#include "calib/evaluate/coverage.h"
+#include "calib/node/calibration_session.h"
+#include "calib/node/corners_message.h"
+#include "calib/solver/corner_noise.h"
 #include "calib_test_rigs.h"
 #include "test_support.h"
 

@@ -7,9 +7,9 @@
 
 #include <fstream>
 
-#include "calib/corner_export.h"
-#include "calib/corner_import.h"
-#include "calib/glob_captures.h"
+#include "calib/node/corner_export.h"
+#include "calib/node/corner_import.h"
+#include "calib/node/glob_captures.h"
 #include "calib_process_support.h"
 #include "test_support.h"
 

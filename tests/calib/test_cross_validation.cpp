@@ -1,4 +1,4 @@
-// Cross-validation (issue #14, calib/heldout.h): a held-out RMS tells a
+// Cross-validation (issue #14, calib/evaluate/heldout.h): a held-out RMS tells a
 // model that follows the lens from one that follows the noise of the views
 // it saw.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "calib/calibrate.h"
-#include "calib/heldout.h"
+#include "calib/evaluate/heldout.h"
 #include "calib_test_rigs.h"
 
 namespace {

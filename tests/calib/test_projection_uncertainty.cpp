@@ -1,4 +1,4 @@
-// Projection uncertainty (issue #14, calib/projection_uncertainty.h): the
+// Projection uncertainty (issue #14, calib/evaluate/projection_uncertainty.h): the
 // 1-sigma a calibration predicts from its own covariance against the spread
 // of the same camera-frame rays' pixels over 20 solves of the same views
 // with fresh corner noise.

@@ -13,6 +13,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <thread>
 
+#include "calib/node/corners_message.h"
 #include "calib_test_rigs.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"

@@ -1,4 +1,4 @@
-// stereo-compare (issue #14, calib/projection_diff.h) as a user runs it:
+// stereo-compare (issue #14, calib/evaluate/projection_diff.h) as a user runs it:
 // a calibration against itself is 0; against the simulator's truth its
 // differences are the test's own evaluation of the same grid; a shift of
 // the principal point is nearly a rotation of the camera, which the fit
@@ -8,13 +8,13 @@
 #include <cmath>
 
 #include "calib/calibrate.h"
-#include "calib/projection_diff.h"
-#include "calib/solved_rig.h"
-#include "calib/synthetic_rig.h"
+#include "calib/evaluate/projection_diff.h"
+#include "calib/node/solved_rig.h"
 #include "calib_process_support.h"
 #include "rig/rig_file.h"
 #include "sim/simulator.h"
 #include "sim/truth_calibration.h"
+#include "synthetic_rig.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The calibration cost's Jacobians (calib/residuals.h: each corner
+// The calibration cost's Jacobians (calib/solver/residuals.h: each corner
 // differentiated by its local coefficients only, the chain rule split at the
 // ideal point) against central differences of its own residuals, for every
 // block, with the board pose in the camera's frame and via the extrinsic,
@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "../models/test_cameras.h"
-#include "calib/residuals.h"
+#include "calib/solver/residuals.h"
 
 namespace ws::calib {
 namespace {

@@ -9,7 +9,7 @@
 #include <type_traits>
 
 #include "auth/message_auth.h"
-#include "calib/calibration_session.h"
+#include "calib/node/calibration_session.h"
 #include "cloud/cloud_filter.h"
 #include "fuzz_support.h"
 #include "lcm_io/channels.h"

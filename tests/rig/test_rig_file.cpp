@@ -9,13 +9,13 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 
-#include "calib/report.h"
-#include "calib/solved_rig.h"
-#include "calib/synthetic_rig.h"
+#include "calib/node/report.h"
+#include "calib/node/solved_rig.h"
 #include "models/model_registry.h"
 #include "opencv_fisheye.h"
 #include "rig/rig_file.h"
 #include "runtime/json_file.h"
+#include "synthetic_rig.h"
 #include "test_support.h"
 
 namespace {
@@ -132,8 +132,8 @@ TEST(RigFile, ASensorTiltReadsBackBitForBit) {
 // The report calls a model's coefficients what the calibration file does
 // (models/model_kind.h, coeff_key) and holds the same numbers under it, and
 // the same knots: a solve's result of every model written both ways as
-// stereo-calibrate writes them (calib/solved_rig.h's ToRig and the file;
-// calib/report.h's StereoReport and runtime/json_file.h), then read back.
+// stereo-calibrate writes them (calib/node/solved_rig.h's ToRig and the file;
+// calib/node/report.h's StereoReport and runtime/json_file.h), then read back.
 TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
   const std::string dir = test::TempDir("rig-file-keys");
   std::set<std::string> keys;

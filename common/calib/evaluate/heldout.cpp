@@ -1,0 +1,278 @@
+#include "calib/evaluate/heldout.h"
+
+#include <cmath>
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include <Eigen/Dense>
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include "calib/solver/covariance.h"
+#include "calib/start/pose_fit.h"
+
+namespace ws::calib {
+
+CameraBlock FixedBlock(const CameraModel& model) {
+  CameraBlock block(MakeModel(model.distortion, Coefficients::kIdentifiable));
+  block.intrinsics = model.Intrinsics();
+  block.coeffs = std::visit([&](const auto& m) { return m.EstimatedCoeffs(model.distortion.coeffs); },
+                            block.model);
+  block.field = NonRadialField::FromData(model.nonradial);
+  const std::vector<double> nonradial = block.field.Coeffs(model.nonradial);
+  block.coeffs.insert(block.coeffs.end(), nonradial.begin(), nonradial.end());
+  block.fixed = true;
+  return block;
+}
+
+HeldOutFit FitHeldOutViews(const CameraModel& model, const CameraData& data, int min_points,
+                           const BoardWarp& warp) {
+  const CameraBlock camera = FixedBlock(model);
+  HeldOutFit fit;
+  fit.view_rms.assign(data.views.size(), -1.0);
+  double sum = 0;
+  for (size_t v = 0; v < data.views.size(); ++v) {
+    const BoardView& view = data.views[v];
+    if (view.size() < min_points) continue;
+    const std::vector<char> all(view.size(), 1);
+    double best = std::numeric_limits<double>::infinity();
+    for (Pose pose : PlanarPoseCandidates(camera, view, all))
+      best = std::min(best, RefinePose(camera, view, all, &pose, warp));
+    if (!std::isfinite(best)) continue;
+    fit.view_rms[v] = best;
+    sum += best * best * view.size();
+    fit.points += view.size();
+    ++fit.views;
+  }
+  fit.rms_px = fit.points > 0 ? std::sqrt(sum / fit.points) : 0.0;
+  return fit;
+}
+
+namespace {
+
+// What one board pose's corners (those of every observation on it) add to
+// the normal equations of the free parameters f and the pose p, and their
+// Schur complement with the pose eliminated: S = A_ff - A_fp A_pp^-1 A_pf,
+// b = g_f - A_fp A_pp^-1 g_p.
+struct PoseTerms {
+  int view = -1;
+  std::vector<int> blocks;  // into Linearisation::blocks
+  // A_pp^-1; none where A_pp is not positive definite (its corners cannot
+  // fix the pose: it adds nothing)
+  std::optional<Eigen::Matrix<double, 6, 6>> App_inverse;
+  Eigen::MatrixXd S;
+  Eigen::VectorXd b;
+};
+
+std::vector<PoseTerms> PosesOf(const Problem& problem, const Linearisation& lin) {
+  std::vector<PoseTerms> poses;
+  const int nf = lin.free_size;
+  for (size_t k = 0; k < lin.blocks.size(); ++k) {
+    const Linearisation::Block& block = lin.blocks[k];
+    if (block.pose >= int(poses.size())) poses.resize(block.pose + 1);
+    poses[block.pose].blocks.push_back(int(k));
+    poses[block.pose].view = problem.observations[block.observation].view;
+  }
+  for (PoseTerms& pose : poses) {
+    Eigen::Matrix<double, 6, 6> App = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::MatrixXd Afp = Eigen::MatrixXd::Zero(nf, 6);
+    Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
+    pose.S = Eigen::MatrixXd::Zero(nf, nf);
+    pose.b = Eigen::VectorXd::Zero(nf);
+    for (int k : pose.blocks) {
+      const Linearisation::Block& block = lin.blocks[k];
+      App += block.J_pose.transpose() * block.J_pose;
+      Afp += block.J_free.transpose() * block.J_pose;
+      gp += block.J_pose.transpose() * block.r;
+      pose.S.noalias() += block.J_free.transpose() * block.J_free;
+      pose.b.noalias() += block.J_free.transpose() * block.r;
+    }
+    pose.App_inverse = PoseBlockInverse(App);
+    if (!pose.App_inverse) continue;
+    pose.S.noalias() -= Afp * *pose.App_inverse * Afp.transpose();
+    pose.b.noalias() -= Afp * *pose.App_inverse * gp;
+  }
+  return poses;
+}
+
+// The Gauss-Newton step of the free parameters for normal equations S, b
+// (S d = -b), S scaled to unit diagonal first (the parameters' units differ
+// by orders of magnitude). Directions the fold's views do not determine
+// (eigenvalues below 1e-12 of the largest: a spline's spans no training
+// corner reaches, without the prior) keep their value, as Levenberg-
+// Marquardt from the full solution would; none if S is not finite.
+std::optional<Eigen::VectorXd> Step(const Eigen::MatrixXd& S, const Eigen::VectorXd& b) {
+  if (!S.allFinite() || !b.allFinite()) return std::nullopt;
+  const Eigen::VectorXd d = S.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(d.asDiagonal() * S * d.asDiagonal());
+  const Eigen::VectorXd& values = eig.eigenvalues();
+  const double floor = 1e-12 * values.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd inverse =
+      values.unaryExpr([&](double v) { return v > floor ? 1.0 / v : 0.0; });
+  const Eigen::MatrixXd& V = eig.eigenvectors();
+  Eigen::VectorXd step = -(d.asDiagonal() * (V * (inverse.asDiagonal() * (V.transpose() * (d.asDiagonal() * b)))));
+  if (!step.allFinite()) return std::nullopt;
+  return step;
+}
+
+}  // namespace
+
+CrossValidation CrossValidate(const Problem& solved, int folds) {
+  std::vector<int> views;
+  for (const Observation& o : solved.observations) views.push_back(o.view);
+  std::sort(views.begin(), views.end());
+  views.erase(std::unique(views.begin(), views.end()), views.end());
+  CrossValidation cv;
+  const int n_cameras = int(solved.cameras.size());
+  if (folds < 2 || int(views.size()) < 2 * folds) return cv;
+  Problem problem = solved;
+  const Linearisation lin = Linearise(problem, "cross-validation");
+  const std::vector<PoseTerms> poses = PosesOf(problem, lin);
+  Eigen::MatrixXd S_all = lin.prior_J.transpose() * lin.prior_J;
+  Eigen::VectorXd b_all = lin.prior_J.transpose() * lin.prior_r;
+  for (const PoseTerms& pose : poses)
+    if (pose.App_inverse) {
+      S_all += pose.S;
+      b_all += pose.b;
+    }
+  // Each residual pair's corner: its index and distance from its camera's
+  // principal point (a block holds its observation's inlier corners in order).
+  std::vector<std::vector<double>> radius(lin.blocks.size());
+  std::vector<std::vector<int>> corner(lin.blocks.size());
+  for (size_t b = 0; b < lin.blocks.size(); ++b) {
+    const Observation& o = problem.observations[lin.blocks[b].observation];
+    for (int i = 0; i < o.corners->size(); ++i)
+      if ((*o.inliers)[i]) {
+        radius[b].push_back(PixelRadius(problem.cameras[o.camera], o.corners->image[i]));
+        corner[b].push_back(i);
+      }
+  }
+  std::vector<double> sum(n_cameras, 0.0);
+  std::vector<int> count(n_cameras, 0);
+  cv.fold_rms_px.assign(n_cameras, {});
+  cv.extrapolated.assign(n_cameras, 0);
+  for (int k = 0; k < folds; ++k) {
+    std::vector<int> held;  // dealt round-robin in view order
+    for (size_t i = k; i < views.size(); i += folds) held.push_back(views[i]);
+    auto is_held = [&](const PoseTerms& pose) {
+      return std::binary_search(held.begin(), held.end(), pose.view);
+    };
+    // Training: the step from the full solution without the fold's poses.
+    Eigen::MatrixXd S = S_all;
+    Eigen::VectorXd b = b_all;
+    for (const PoseTerms& pose : poses)
+      if (pose.App_inverse && is_held(pose)) {
+        S -= pose.S;
+        b -= pose.b;
+      }
+    const std::optional<Eigen::VectorXd> step = Step(S, b);
+    if (!step) continue;  // the other folds do not determine the camera
+    // How far from the centre the training views reach, per camera.
+    std::vector<double> field(n_cameras, 0.0);
+    for (const PoseTerms& pose : poses)
+      if (!is_held(pose))
+        for (int index : pose.blocks) {
+          const int camera = problem.observations[lin.blocks[index].observation].camera;
+          for (double r : radius[index]) field[camera] = std::max(field[camera], r);
+        }
+    // Testing: each held-out pose refitted to its corners under the step.
+    std::vector<double> fold_sum(n_cameras, 0.0);
+    std::vector<int> fold_count(n_cameras, 0);
+    for (const PoseTerms& pose : poses) {
+      if (!pose.App_inverse || !is_held(pose)) continue;
+      std::vector<Eigen::VectorXd> e;
+      Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
+      for (int index : pose.blocks) {
+        const Linearisation::Block& block = lin.blocks[index];
+        e.push_back(block.r + block.J_free * *step);
+        gp += block.J_pose.transpose() * e.back();
+      }
+      const Eigen::Matrix<double, 6, 1> pose_step = -*pose.App_inverse * gp;
+      for (size_t i = 0; i < pose.blocks.size(); ++i) {
+        const Linearisation::Block& block = lin.blocks[pose.blocks[i]];
+        const int camera = problem.observations[block.observation].camera;
+        const Eigen::VectorXd held_out = e[i] + block.J_pose * pose_step;
+        for (int j = 0; j < held_out.size() / 2; ++j) {
+          if (radius[pose.blocks[i]][j] > field[camera]) {
+            ++cv.extrapolated[camera];
+            continue;
+          }
+          const double squared = held_out.segment<2>(2 * j).squaredNorm();
+          fold_sum[camera] += squared;
+          ++fold_count[camera];
+          cv.corners.push_back({camera, pose.view, corner[pose.blocks[i]][j], k, squared});
+        }
+      }
+    }
+    for (int c = 0; c < n_cameras; ++c) {
+      sum[c] += fold_sum[c];
+      count[c] += fold_count[c];
+      cv.fold_rms_px[c].push_back(fold_count[c] ? std::sqrt(fold_sum[c] / fold_count[c]) : 0.0);
+    }
+    ++cv.folds;
+  }
+  for (int c = 0; c < n_cameras; ++c)
+    cv.rms_px.push_back(count[c] ? std::sqrt(sum[c] / count[c]) : -1.0);
+  if (cv.folds < 2) cv = CrossValidation{};
+  return cv;
+}
+
+std::vector<std::vector<double>> FoldRmsOnCommonCorners(
+    const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera) {
+  using Key = std::tuple<int, int>;  // view, corner
+  struct Seen {
+    int count = 0, fold = 0;
+  };
+  std::map<Key, Seen> seen;
+  for (size_t c = 0; c < candidates.size(); ++c)
+    for (const HeldOutCorner& h : *candidates[c]) {
+      if (h.camera != camera) continue;
+      Seen& s = seen[{h.view, h.index}];
+      if (c == 0) s.fold = h.fold;
+      ++s.count;  // a corner is held out once per cross-validation
+    }
+  int folds = 0;
+  for (const auto& [key, s] : seen) folds = std::max(folds, s.fold + 1);
+  std::vector<std::vector<double>> out;
+  for (const auto* corners : candidates) {
+    std::vector<double> sum(folds, 0.0);
+    std::vector<int> count(folds, 0);
+    for (const HeldOutCorner& h : *corners) {
+      if (h.camera != camera) continue;
+      const Seen& s = seen.at({h.view, h.index});
+      if (s.count != int(candidates.size())) continue;
+      sum[s.fold] += h.squared;
+      ++count[s.fold];
+    }
+    std::vector<double> rms(folds);
+    for (int k = 0; k < folds; ++k) rms[k] = count[k] ? std::sqrt(sum[k] / count[k]) : 0.0;
+    out.push_back(rms);
+  }
+  return out;
+}
+
+int ChooseWithinNoise(const std::vector<std::vector<double>>& fold_rms) {
+  if (fold_rms.empty()) return -1;
+  size_t folds = fold_rms[0].size();
+  for (const auto& f : fold_rms) folds = std::min(folds, f.size());
+  auto mean = [&](const std::vector<double>& f) {
+    return std::accumulate(f.begin(), f.begin() + folds, 0.0) / std::max<size_t>(folds, 1);
+  };
+  size_t best = 0;
+  for (size_t i = 1; i < fold_rms.size(); ++i)
+    if (mean(fold_rms[i]) < mean(fold_rms[best])) best = i;
+  for (size_t i = 0; i < best; ++i) {
+    std::vector<double> d(folds);
+    for (size_t k = 0; k < folds; ++k) d[k] = fold_rms[i][k] - fold_rms[best][k];
+    const double m = mean(d);
+    double var = 0;
+    for (double x : d) var += (x - m) * (x - m);
+    const double se = folds > 1 ? std::sqrt(var / (folds - 1) / folds) : 0.0;
+    if (m <= se) return int(i);
+  }
+  return int(best);
+}
+
+}  // namespace ws::calib

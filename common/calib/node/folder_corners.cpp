@@ -1,0 +1,157 @@
+#include "calib/node/folder_corners.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+#include <lcm/lcm-cpp.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "detect/board_size_check.h"
+#include "lcm_io/channels.h"
+#include "lcm_io/image_codec.h"
+#include "runtime/ordered_pipeline.h"
+#include "runtime/stop_request.h"
+#include "source/dir_source.h"
+
+namespace ws::calib {
+namespace {
+
+// Every image of the folder, left ones first: where a board size is looked for.
+std::vector<std::string> AllImages(const ImageFolder& folder) {
+  std::vector<std::string> images;
+  for (const auto& pair : folder.pairs) images.push_back(pair.left);
+  for (const auto& pair : folder.pairs)
+    if (!pair.right.empty()) images.push_back(pair.right);
+  return images;
+}
+
+// Why no image shows `board`, and the size that some do show, if any.
+std::string NoBoardAdvice(const ImageFolder& folder, const BoardSpec& board) {
+  std::string advice = "no " + std::to_string(board.cols) + "x" + std::to_string(board.rows) +
+                       " board in any image";
+  if (board.type != BoardType::chessboard) return advice + ": check --board";
+  // Sizes are tried on a few images; the one found is then counted in all.
+  constexpr size_t kTried = 6;
+  std::vector<cv::Mat> images;
+  for (const std::string& path : AllImages(folder)) {
+    images.push_back(cv::imread(path, cv::IMREAD_GRAYSCALE));
+    if (images.size() == kTried) break;
+  }
+  for (const cv::Size& size : NeighbourSizes(board)) {
+    bool shown = false;
+    for (const cv::Mat& image : images) shown = shown || (!image.empty() && ShowsChessboard(image, size));
+    if (!shown) continue;
+    int found = 0;
+    const auto all = AllImages(folder);
+    for (const std::string& path : all) found += ShowsChessboard(cv::imread(path, cv::IMREAD_GRAYSCALE), size);
+    return advice + "; " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+           " boards are found in " + std::to_string(found) + " of " + std::to_string(all.size()) +
+           " images: --board " + WithSize(board, size) +
+           " (COLSxROWS counts inner corners: a board of 10x7 squares is 9x6)";
+  }
+  return advice + " (sizes one corner off tried too): check --board (COLSxROWS counts inner corners, "
+                  "a board of 10x7 squares is 9x6) and that the images show the whole board";
+}
+
+// The names, the first kShown of them and how many more.
+std::string List(const std::vector<std::string>& names) {
+  constexpr size_t kShown = 20;
+  std::string text;
+  for (size_t i = 0; i < std::min(names.size(), kShown); ++i) text += (i ? ", " : "") + names[i];
+  if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+  return text;
+}
+
+}  // namespace
+
+FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCornerFinder& finder, int workers,
+                           const std::string& corners_log, TextLog& log) {
+  FolderCorners result;
+  result.folder = FindImageFolder(dir, mono);
+  const bool one_camera = result.folder.layout == FolderLayout::kOneCamera;
+  DirSource source(dir, result.folder, false);
+  lcm::LCM out("file://" + corners_log + "?mode=w");
+  if (!out.good()) throw std::runtime_error("cannot write " + corners_log);
+  OrderedPipeline pipeline({workers, 2 * workers, OrderedPipeline::WhenFull::wait});
+  const int64_t total = int64_t(result.folder.pairs.size());
+  std::string first_board;  // the first left image with the board
+  for (int64_t id = 0; !StopRequested(); ++id) {
+    std::optional<StereoPair> pair = source.Next();
+    for (const std::string& event : source.TakeEvents()) log.Info(event);
+    if (!pair) break;
+    if (pair->left.empty()) {
+      result.unreadable.push_back(pair->label);
+      log.Error("cannot read " + pair->label + ": left out");
+      continue;
+    }
+    ++result.read;
+    result.names[id] = pair->label;
+    widestereo::stereo_frame_t frame{};
+    frame.frame_id = id;
+    frame.utime = (id + 1) * 100000;
+    frame.left = MatToImage(pair->left, frame.utime);
+    frame.right = one_camera ? NoImage(frame.utime) : MatToImage(pair->right, frame.utime);
+    const ImagePairPaths paths = result.folder.pairs[size_t(id)];
+    auto shared = std::make_shared<const widestereo::stereo_frame_t>(std::move(frame));
+    pipeline.Submit([&, shared, paths]() -> OrderedPipeline::Delivery {
+      std::shared_ptr<widestereo::stereo_corners_t> corners;
+      try {
+        corners = std::make_shared<widestereo::stereo_corners_t>(finder.Find(*shared));
+      } catch (const std::exception& e) {
+        return [&, paths, why = std::string(e.what())] {
+          const std::string name = ImageName(paths.left, dir);
+          result.unreadable.push_back(name);
+          log.Error(name + ": " + why + ": left out");
+        };
+      }
+      return [&, corners, paths] {
+        out.publish(channel::kStereoCorners, corners.get());
+        if (corners->left.n > 0) {
+          ++result.left_boards;
+          if (first_board.empty()) first_board = paths.left;
+        } else {
+          result.left_without_board.push_back(ImageName(paths.left, dir));
+        }
+        if (one_camera) return;
+        if (corners->right.n > 0)
+          ++result.right_boards;
+        else
+          result.right_without_board.push_back(ImageName(paths.right, dir));
+      };
+    });
+    if ((id + 1) * 10 / total != id * 10 / total)  // about ten lines however many images
+      log.Progress("finding the board: " + std::to_string(id + 1) + " of " + std::to_string(total) + " " +
+                   (one_camera ? "images" : "pairs"));
+  }
+  pipeline.Drain();
+  if (StopRequested()) {  // the log of part of the folder is no log of it
+    std::filesystem::remove(corners_log);
+    throw Stopped();
+  }
+  const std::string what = one_camera ? " images" : " pairs";
+  log.Info("read " + std::to_string(result.read) + " of " + std::to_string(total) + what + " (" +
+           LayoutName(result.folder.layout) + ")");
+  if (result.read == 0)
+    throw std::runtime_error("nothing in " + dir + " could be read as " +
+                             (one_camera ? "an image" : "two images of one size and type"));
+  const std::string of = " of " + std::to_string(result.read);
+  log.Info("board " + finder.board().id + " found: left " + std::to_string(result.left_boards) + of +
+           (one_camera ? "" : ", right " + std::to_string(result.right_boards) + of));
+  if (!result.left_without_board.empty()) log.Info("no board in: " + List(result.left_without_board));
+  if (!result.right_without_board.empty()) log.Info("no board in: " + List(result.right_without_board));
+  if (result.left_boards + result.right_boards == 0)
+    throw std::runtime_error(NoBoardAdvice(result.folder, finder.board()));
+  if (first_board.empty()) return result;
+  if (const auto larger = LargerBoardShown(cv::imread(first_board, cv::IMREAD_GRAYSCALE), finder.board()))
+    throw std::runtime_error(
+        ImageName(first_board, dir) + " shows a " + std::to_string(larger->width) + "x" +
+        std::to_string(larger->height) + " board: a " + std::to_string(finder.board().cols) + "x" +
+        std::to_string(finder.board().rows) +
+        " one is only part of it, numbered from a different corner in each image. Give the whole board: "
+        "--board " + WithSize(finder.board(), *larger) + " (COLSxROWS counts inner corners)");
+  return result;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,203 @@
+#include "calib/node/report.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "calib/node/table2.h"
+#include "models/model_registry.h"
+
+namespace ws::calib {
+namespace {
+
+Json Numbers(const std::vector<double>& values) {
+  Json out = Json::array();
+  for (double v : values) out.push_back(v);
+  return out;
+}
+
+// Per-view RMS with null for views not used.
+Json ViewRmsJson(const std::vector<double>& rms) {
+  Json out = Json::array();
+  for (double v : rms) out.push_back(v < 0 ? Json() : Json(v));
+  return out;
+}
+
+// projection_uncertainty.h.
+Json UncertaintyReport(const ProjectionUncertainty& u) {
+  Json out;
+  out["definition"] =
+      "worst-direction 1-sigma of projecting a fixed camera-frame ray, from the solve's "
+      "covariance with the board poses marginalised (docs/calibration.md: Projection uncertainty)";
+  out.update(ImageGridJson(u.grid, "sigma_px", u.sigma_px));
+  out["observed"] = std::vector<int>(u.observed.begin(), u.observed.end());
+  out["median_px"] = u.median_px;
+  out["worst_px"] = u.worst_px;
+  return out;
+}
+
+const char* FlowName(StereoFlow flow) { return flow == StereoFlow::kJoint ? "joint" : "paper"; }
+
+}  // namespace
+
+Json ImageGridJson(const ImageGrid& grid, const std::string& key,
+                   const std::vector<double>& values) {
+  Json out;
+  out["cols"] = grid.cols;
+  out["rows"] = grid.rows;
+  out["step_px"] = {grid.step_x, grid.step_y};
+  Json array = Json::array();
+  for (double v : values) array.push_back(std::isfinite(v) ? Json(v) : Json());
+  out[key] = array;
+  return out;
+}
+
+Json CameraReport(const CameraCalibration& c) {
+  const CameraModel& m = c.model;
+  Json j;
+  j["name"] = c.name;
+  j["rms_px"] = c.rms_px;
+  j["heldout_rms_px"] = c.heldout_rms_px < 0 ? Json() : Json(c.heldout_rms_px);
+  j["views"] = c.views;
+  j["points"] = c.points;
+  j["outliers"] = c.outliers;
+  j["image_size"] = {m.image_width, m.image_height};
+  j["fx"] = m.fx;
+  j["fy"] = m.fy;
+  j["cx"] = m.cx;
+  j["cy"] = m.cy;
+  j["p1"] = m.p1;
+  j["p2"] = m.p2;
+  j["knots"] = Numbers(m.distortion.knots);
+  j[Traits(m.distortion.kind).coeff_key] = Numbers(m.distortion.coeffs);
+  Json stddev = Json::object();
+  for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
+    stddev[c.param_names[i]] = c.stddev[i];
+  j["stddev"] = stddev;
+  j["model"] = ModelName(m.distortion.kind);
+  j["degree"] = m.distortion.degree;
+  j["invalid_points"] = c.invalid_points;
+  j["view_rms"] = ViewRmsJson(c.view_rms);
+  j["skipped"] = c.skipped;
+  j["init_method"] = c.init_method;
+  j["max_observed_radius"] = c.max_observed_radius;
+  if (c.board_warp.free) {  // board_warp.h; millimetres
+    Json warp;
+    warp["x2_mm"] = 1e3 * c.board_warp.data[0];
+    warp["y2_mm"] = 1e3 * c.board_warp.data[1];
+    warp["centre_mm"] = 1e3 * c.board_warp.Centre();
+    if (c.board_warp_stddev.size() == 2) {
+      warp["stddev_x2_mm"] = 1e3 * c.board_warp_stddev[0];
+      warp["stddev_y2_mm"] = 1e3 * c.board_warp_stddev[1];
+    }
+    j["board_warp"] = warp;
+  }
+  if (!m.nonradial.empty()) {  // models/nonradial_field.h
+    const NonRadial& f = m.nonradial;
+    j["nonradial"] = {{"cols", f.cols}, {"rows", f.rows},
+                      {"domain", Numbers(std::vector<double>(f.domain.begin(), f.domain.end()))},
+                      {"coeffs", Numbers(f.coeffs)},
+                      {"tilt", Numbers(std::vector<double>(f.tilt.begin(), f.tilt.end()))}};
+  }
+  Json field_curve = Json::array();
+  for (const FieldTrial& t : c.field_curve)
+    field_curve.push_back({{"tilt", t.tilt}, {"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
+                           {"heldout_rms_px", t.heldout_rms_px}});
+  j["field_curve"] = field_curve;
+  j["field_chosen"] = c.field_chosen;
+  if (const WarpChoice& w = c.warp_choice; w.made) {  // --board-warp auto
+    Json choice;
+    choice["kept"] = w.kept;
+    choice["flat_heldout_rms_px"] = w.flat_heldout_px;
+    choice["warped_heldout_rms_px"] = w.warped_heldout_px;
+    choice["x2_mm"] = 1e3 * w.estimated[0];
+    choice["y2_mm"] = 1e3 * w.estimated[1];
+    if (w.stddev.size() == 2) {
+      choice["stddev_x2_mm"] = 1e3 * w.stddev[0];
+      choice["stddev_y2_mm"] = 1e3 * w.stddev[1];
+    }
+    j["board_warp_choice"] = choice;
+  }
+  const ResidualGrid& g = c.grid;
+  Json grid;
+  grid["rows"] = g.rows;
+  grid["cols"] = g.cols;
+  grid["count"] = g.count;
+  std::vector<double> mx, my;
+  for (const auto& v : g.mean) {
+    mx.push_back(v.x());
+    my.push_back(v.y());
+  }
+  grid["mean_x"] = Numbers(mx);
+  grid["mean_y"] = Numbers(my);
+  grid["rms"] = Numbers(g.rms);
+  j["residual_grid"] = grid;
+  j["heldout_fold_rms_px"] = Numbers(c.heldout_fold_rms_px);
+  j["heldout_extrapolated_corners"] = c.heldout_extrapolated;
+  if (!c.uncertainty.empty()) j["projection_uncertainty"] = UncertaintyReport(c.uncertainty);
+  Json curve = Json::array();
+  for (const KnotTrial& t : c.knot_curve)
+    curve.push_back({{"knots", t.knots},
+                     {"rms_px", t.rms_px},
+                     {"heldout_rms_px", t.heldout_rms_px},
+                     {"fold_rms_px", Numbers(t.fold_rms_px)}});
+  j["knot_curve"] = curve;
+  return j;
+}
+
+Json StereoReport(const StereoCalibration& s) {
+  Json j;
+  j["model"] = ModelName(s.model);
+  j["cameras"] = {CameraReport(s.left)};
+  j["flow"] = FlowName(s.flow);
+  j["solve_seconds"] = s.solve_seconds;
+  if (s.mono) return j;  // one camera: no right, no stereo
+  j["cameras"].push_back(CameraReport(s.right));
+  Json stereo;
+  stereo["rms_px"] = s.rms_px;
+  std::vector<double> R, T;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) R.push_back(s.R(r, c));
+    T.push_back(s.T(r));
+  }
+  stereo["R"] = Numbers(R);
+  stereo["T"] = Numbers(T);
+  stereo["baseline_m"] = s.T.norm();
+  stereo["views"] = s.views;
+  stereo["inconsistent_views"] = s.inconsistent_views;
+  stereo["half_turned_views"] = s.half_turned_views;
+  stereo["view_rms"] = ViewRmsJson(s.view_rms);
+  Json stddev = Json::object();
+  for (size_t i = 0; i < s.extrinsic_stddev.size() && i < s.extrinsic_names.size(); ++i)
+    stddev[s.extrinsic_names[i]] = s.extrinsic_stddev[i];
+  stereo["stddev"] = stddev;
+  j["stereo"] = stereo;
+  return j;
+}
+
+Json ModelsReport(const ModelCalibrations& calibrations) {
+  Json j;
+  j["models"] = Json::array();
+  double seconds = 0;
+  for (const auto& c : calibrations.solved) {
+    j["models"].push_back(StereoReport(c));
+    seconds += c.solve_seconds;
+  }
+  for (const auto& failure : calibrations.failed)
+    j["models"].push_back({{"model", failure.model}, {"error", failure.error}});
+  Json table = Json::array();
+  for (const auto& row : TableRows(calibrations.solved, calibrations.chosen))
+    table.push_back({{"model", row.model},
+                     {"left_rms_px", row.left_rms},
+                     {"right_rms_px", row.right_rms},
+                     {"stereo_rms_px", row.stereo_rms},
+                     {"left_heldout_rms_px", row.left_heldout},
+                     {"right_heldout_rms_px", row.right_heldout},
+                     {"coeffs", row.coeffs},
+                     {"chosen", row.chosen}});
+  j["table_ii"] = table;
+  j["chosen"] = calibrations.solved.empty() ? Json() : Json(ModelName(Chosen(calibrations).model));
+  j["solve_seconds"] = seconds;
+  return j;
+}
+
+}  // namespace ws::calib

@@ -1,0 +1,381 @@
+#include "calib/solver/problem.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include "calib/solver/covariance.h"
+#include "calib/solver/nonradial_prior.h"
+#include "calib/solver/residuals.h"
+#include "calib/solver/smoothness_prior.h"
+#include "runtime/stop_request.h"
+
+namespace ws::calib {
+namespace {
+
+ceres::LossFunction* MakeLoss(const SolveSettings& settings) {
+  switch (settings.robust_loss) {
+    case RobustLoss::kHuber:
+      return new ceres::HuberLoss(settings.robust_scale_px);
+    case RobustLoss::kCauchy:
+      return new ceres::CauchyLoss(settings.robust_scale_px);
+    case RobustLoss::kNone:
+      break;
+  }
+  return nullptr;
+}
+
+// Every parameter block of a solve copied into one buffer in a fixed order
+// (cameras, extrinsic, poses in the order of the observations). Ceres orders
+// blocks by their address in places (the Schur elimination groups), so
+// blocks scattered over the heap would make the summation order, and the
+// last bits of the solution, differ from run to run.
+class ParameterArena {
+ public:
+  explicit ParameterArena(Problem& problem) {
+    auto add = [&](double* block, int size) {
+      if (index_.count(block)) return;
+      index_[block] = values_.size();
+      blocks_.emplace_back(block, size);
+      values_.insert(values_.end(), block, block + size);
+    };
+    for (CameraBlock& camera : problem.cameras) {
+      add(camera.intrinsics.data(), kNumIntrinsics);
+      add(camera.coeffs.data(), static_cast<int>(camera.coeffs.size()));
+    }
+    add(problem.extrinsic.data.data(), 6);
+    add(problem.warp.data.data(), 2);
+    for (Observation& o : problem.observations) add(o.pose->data.data(), 6);
+  }
+  double* operator[](double* block) { return values_.data() + index_.at(block); }
+  // The solved values back into the problem's own blocks.
+  void CopyBack() const {
+    for (const auto& [block, size] : blocks_)
+      std::copy_n(values_.data() + index_.at(block), size, block);
+  }
+
+ private:
+  std::vector<double> values_;
+  std::map<double*, size_t> index_;
+  std::vector<std::pair<double*, int>> blocks_;
+};
+
+constexpr int kExtrinsic = -1, kWarp = -2;  // Built::owner of the rig's blocks
+
+// The Ceres problem of a Problem, and which of its blocks are what (arena
+// pointers).
+struct Built {
+  explicit Built(Problem& problem) : arena(problem) {}
+  ParameterArena arena;
+  ceres::Problem ceres;
+  std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
+  std::vector<int> data_observation;  // per data block: its index in problem.observations
+  int data_residuals = 0;
+  std::vector<double*> poses;        // board poses
+  std::vector<double*> free_blocks;  // free camera blocks, the extrinsic, the warp
+  std::vector<int> owner;  // per free block: its camera, kExtrinsic or kWarp
+  std::vector<std::vector<int>> held;  // per free block: entries a manifold holds constant
+};
+
+// The inlier corners of an observation as cost functions: one for the view,
+// or one per corner with a robust loss (Ceres applies a loss per block).
+std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem& problem,
+                                                                   const Observation& o,
+                                                                   bool per_corner) {
+  const CameraBlock& camera = problem.cameras[o.camera];
+  std::vector<ViewPoints> groups(1);
+  for (int i = 0; i < o.corners->size(); ++i) {
+    if (!(*o.inliers)[i]) continue;
+    if (per_corner && groups.back().size() > 0) groups.emplace_back();
+    groups.back().Add(o.corners->object[i], o.corners->image[i],
+                      WarpBasis(problem.warp.extent, o.corners->object[i]));
+  }
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+  if (groups.front().size() == 0) return costs;
+  for (ViewPoints& points : groups) {
+    points.max_radius = camera.max_radius;
+    costs.emplace_back(MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic));
+  }
+  return costs;
+}
+
+// Fills `built` from the problem; observations that cannot be evaluated at
+// the current parameters move to problem.left_out.
+void Build(Problem& problem, const SolveSettings& settings, Built* built) {
+  const bool per_corner = settings.robust_loss != RobustLoss::kNone;
+  std::vector<Observation> kept;
+  ParameterArena& arena = built->arena;
+  for (Observation& o : problem.observations) {
+    CameraBlock& camera = problem.cameras[o.camera];
+    std::vector<double*> blocks{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
+                                arena[problem.warp.data.data()], arena[o.pose->data.data()]};
+    if (o.via_extrinsic) blocks.push_back(arena[problem.extrinsic.data.data()]);
+    auto costs = ObservationCosts(problem, o, per_corner);
+    bool valid = true;
+    for (const auto& cost : costs) {
+      std::vector<double> residuals(cost->num_residuals());
+      valid = valid && cost->Evaluate(blocks.data(), residuals.data(), nullptr);
+    }
+    if (!valid) {
+      problem.left_out.emplace_back(o.camera, o.view);
+      continue;
+    }
+    kept.push_back(o);
+    for (auto& cost : costs) {
+      built->data_residuals += cost->num_residuals();
+      built->data_blocks.push_back(
+          built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
+      built->data_observation.push_back(int(kept.size()) - 1);
+    }
+    double* pose = arena[o.pose->data.data()];
+    if (!costs.empty() &&
+        std::find(built->poses.begin(), built->poses.end(), pose) == built->poses.end())
+      built->poses.push_back(pose);
+  }
+  problem.observations = kept;
+  if (built->poses.empty()) throw CalibrationError(settings.what + ": no corners to solve with");
+
+  ceres::Problem& cp = built->ceres;
+  for (size_t c = 0; c < problem.cameras.size(); ++c) {
+    CameraBlock& camera = problem.cameras[c];
+    double* intrinsics = arena[camera.intrinsics.data()];
+    double* coeffs = arena[camera.coeffs.data()];
+    if (!cp.HasParameterBlock(intrinsics)) continue;
+    if (camera.fixed) {
+      cp.SetParameterBlockConstant(intrinsics);
+      cp.SetParameterBlockConstant(coeffs);
+    } else if (camera.pinhole_only) {
+      cp.SetParameterBlockConstant(coeffs);
+      cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
+    } else {
+      std::vector<int> held_intrinsics, held_coeffs;
+      if (!Traits(KindOf(camera.model)).tangential) {  // kb4: p1 = p2 = 0 by definition
+        held_intrinsics = {kP1, kP2};
+        cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
+      }
+      const int n = static_cast<int>(camera.coeffs.size());
+      AddSmoothnessPrior(cp, camera.model, coeffs, n, camera.prior_weight);
+      AddNonRadialPrior(cp, camera, coeffs);
+      if (camera.free_coeffs == 0) {
+        cp.SetParameterBlockConstant(coeffs);
+      } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {
+        for (int k = camera.free_coeffs; k < n; ++k) held_coeffs.push_back(k);
+        cp.SetManifold(coeffs, new ceres::SubsetManifold(n, held_coeffs));
+      }
+      for (auto [block, held] : {std::pair{intrinsics, held_intrinsics}, {coeffs, held_coeffs}}) {
+        built->free_blocks.push_back(block);
+        built->owner.push_back(int(c));
+        built->held.push_back(held);
+      }
+    }
+  }
+  double* extrinsic = arena[problem.extrinsic.data.data()];
+  if (problem.extrinsic_used && cp.HasParameterBlock(extrinsic)) {
+    if (problem.extrinsic_fixed) {
+      cp.SetParameterBlockConstant(extrinsic);
+    } else {
+      built->free_blocks.push_back(extrinsic);
+      built->owner.push_back(kExtrinsic);
+      built->held.emplace_back();
+    }
+  }
+  double* warp = arena[problem.warp.data.data()];
+  if (problem.warp.free) {
+    built->free_blocks.push_back(warp);
+    built->owner.push_back(kWarp);
+    built->held.emplace_back();
+  } else if (cp.HasParameterBlock(warp)) {
+    cp.SetParameterBlockConstant(warp);
+  }
+}
+
+bool SolutionValid(const Problem& problem) {
+  for (const CameraBlock& camera : problem.cameras)
+    if (!AllFinite(camera)) return false;
+  if (!problem.extrinsic.AllFinite()) return false;
+  for (const Observation& o : problem.observations)
+    if (!o.pose->AllFinite()) return false;
+  return true;
+}
+
+// Ends a solve after the iteration during which a stop was requested.
+struct AbortOnStop : ceres::IterationCallback {
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    return StopRequested() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+};
+
+}  // namespace
+
+Pose BoardPose(const Problem& problem, const Observation& o) {
+  if (!o.via_extrinsic) return *o.pose;
+  const Pose& e = problem.extrinsic;
+  return Pose::FromRt(e.R() * o.pose->R(), e.R() * o.pose->t() + e.t());
+}
+
+SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
+  ThrowIfStopRequested();
+  Built built(problem);
+  Build(problem, settings, &built);
+  ceres::Solver::Options options;
+  if (built.free_blocks.empty() && built.poses.size() == 1) {
+    options.linear_solver_type = ceres::DENSE_QR;  // one pose: nothing to eliminate
+  } else {
+    // Schur elimination of the board poses (Ceres's bundle-adjustment layout).
+    auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+    for (double* pose : built.poses) ordering->AddElementToGroup(pose, 0);
+    std::vector<double*> all;
+    built.ceres.GetParameterBlocks(&all);
+    for (double* block : all)
+      if (!ordering->IsMember(block)) ordering->AddElementToGroup(block, 1);
+    options.linear_solver_type = ceres::DENSE_SCHUR;
+    options.linear_solver_ordering = ordering;
+  }
+  options.num_threads = 1;  // the same input gives the same output
+  options.max_num_iterations = settings.max_iterations;
+  options.function_tolerance = settings.tolerance;
+  options.gradient_tolerance = 1e-2 * settings.tolerance;
+  options.parameter_tolerance = settings.tolerance;
+  options.logging_type = ceres::SILENT;
+  AbortOnStop abort_on_stop;
+  options.callbacks.push_back(&abort_on_stop);
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &built.ceres, &summary);
+  ThrowIfStopRequested();  // a solve cut short is no solution
+  built.arena.CopyBack();
+  SolveOutcome outcome;
+  outcome.message = summary.BriefReport();
+  if (!summary.IsSolutionUsable() || !std::isfinite(summary.final_cost) || !SolutionValid(problem))
+    throw CalibrationError(settings.what + ": the solver did not reach a valid camera (" +
+                           outcome.message + "); the views may not constrain the model");
+  return outcome;
+}
+
+void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
+  ThrowIfStopRequested();
+  Built built(problem);
+  Build(problem, settings, &built);
+  if (built.free_blocks.empty()) return;
+  // sigma^2 from the data residuals only (the prior is not a measurement).
+  ceres::Problem::EvaluateOptions evaluate;
+  evaluate.num_threads = 1;
+  evaluate.apply_loss_function = false;
+  evaluate.residual_blocks = built.data_blocks;
+  double cost = 0;
+  built.ceres.Evaluate(evaluate, &cost, nullptr, nullptr, nullptr);
+  int free_parameters = 6 * static_cast<int>(built.poses.size());
+  for (double* block : built.free_blocks)
+    free_parameters += built.ceres.ParameterBlockTangentSize(block);
+  const int dof = built.data_residuals - free_parameters;
+  if (dof <= 0) return;
+  const auto covariance =
+      CameraCovariance(built.ceres, built.free_blocks, built.poses, 2 * cost / dof);
+  if (!covariance) return;
+  int offset = 0;
+  std::vector<int> camera_index[2];  // per camera parameter: its row of *covariance, or -1
+  for (size_t b = 0; b < built.free_blocks.size(); ++b) {
+    const int size = built.ceres.ParameterBlockSize(built.free_blocks[b]);
+    const std::vector<int>& held = built.held[b];
+    const int owner = built.owner[b];
+    std::vector<double>& out = owner == kExtrinsic ? outcome->stddev_extrinsic
+                               : owner == kWarp    ? outcome->stddev_warp
+                                                   : outcome->stddev_camera[owner];
+    for (int k = 0; k < size; ++k) {  // a held entry is exact: sigma 0
+      const bool exact = std::find(held.begin(), held.end(), k) != held.end();
+      out.push_back(exact ? 0.0 : std::sqrt(std::max(0.0, (*covariance)(offset, offset))));
+      if (owner >= 0) camera_index[owner].push_back(exact ? -1 : offset);
+      offset += !exact;
+    }
+  }
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<int>& index = camera_index[c];
+    Eigen::MatrixXd& out = outcome->covariance_camera[c];
+    out.setZero(index.size(), index.size());
+    for (size_t i = 0; i < index.size(); ++i)
+      for (size_t j = 0; j < index.size(); ++j)
+        if (index[i] >= 0 && index[j] >= 0) out(i, j) = (*covariance)(index[i], index[j]);
+  }
+}
+
+Linearisation Linearise(Problem& problem, const std::string& what) {
+  Built built(problem);
+  Build(problem, SolveSettings{what}, &built);
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = built.poses;
+  options.parameter_blocks.insert(options.parameter_blocks.end(), built.free_blocks.begin(),
+                                  built.free_blocks.end());
+  std::vector<ceres::ResidualBlockId> all;
+  built.ceres.GetResidualBlocks(&all);
+  options.residual_blocks = built.data_blocks;
+  for (ceres::ResidualBlockId id : all)
+    if (std::find(built.data_blocks.begin(), built.data_blocks.end(), id) == built.data_blocks.end())
+      options.residual_blocks.push_back(id);
+  options.apply_loss_function = false;
+  options.num_threads = 1;
+  std::vector<double> residuals;
+  ceres::CRSMatrix crs;
+  if (!built.ceres.Evaluate(options, nullptr, &residuals, nullptr, &crs))
+    throw CalibrationError(what + ": the residuals cannot be evaluated at the solution");
+  const int pose_columns = 6 * int(built.poses.size());
+  Linearisation out;
+  out.free_size = crs.num_cols - pose_columns;
+  // Rows [row, row + count) of the Jacobian: by the free parameters into
+  // *free and, if pose_column >= 0, by that pose into *pose.
+  auto rows = [&](int row, int count, int pose_column, Eigen::MatrixXd* free,
+                  Eigen::MatrixXd* pose) {
+    free->setZero(count, out.free_size);
+    if (pose) pose->setZero(count, 6);
+    for (int i = 0; i < count; ++i)
+      for (int k = crs.rows[row + i]; k < crs.rows[row + i + 1]; ++k) {
+        const int column = crs.cols[k];
+        if (column >= pose_columns) (*free)(i, column - pose_columns) = crs.values[k];
+        else if (pose && column >= pose_column && column < pose_column + 6)
+          (*pose)(i, column - pose_column) = crs.values[k];
+      }
+  };
+  int row = 0;
+  for (size_t b = 0; b < built.data_blocks.size(); ++b) {
+    const int count = built.ceres.GetCostFunctionForResidualBlock(built.data_blocks[b])->num_residuals();
+    const Observation& o = problem.observations[built.data_observation[b]];
+    const double* pose = built.arena[o.pose->data.data()];
+    const int index = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
+    Linearisation::Block block;
+    block.observation = built.data_observation[b];
+    block.pose = index;
+    block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
+    rows(row, count, 6 * index, &block.J_free, &block.J_pose);
+    out.blocks.push_back(std::move(block));
+    row += count;
+  }
+  out.prior_r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, crs.num_rows - row);
+  rows(row, crs.num_rows - row, -1, &out.prior_J, nullptr);
+  return out;
+}
+
+std::vector<CornerResidual> Residuals(const Problem& problem, int camera) {
+  std::vector<CornerResidual> out;
+  const CameraBlock& block = problem.cameras[camera];
+  for (const Observation& o : problem.observations) {
+    if (o.camera != camera) continue;
+    const Pose pose = BoardPose(problem, o);
+    const Eigen::Matrix3d R = pose.R();
+    const Eigen::Vector3d t = pose.t();
+    for (int i = 0; i < o.corners->size(); ++i) {
+      const auto pixel = ProjectPoint(block, R * Warped(problem.warp, o.corners->object[i]) + t);
+      CornerResidual r;
+      r.view = o.view;
+      r.index = i;
+      r.id = o.corners->ids[i];
+      r.observed = o.corners->image[i];
+      r.residual = pixel ? Eigen::Vector2d(*pixel - r.observed) : Eigen::Vector2d(NAN, NAN);
+      r.outlier = !(*o.inliers)[i];
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+}  // namespace ws::calib
