@@ -9,7 +9,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 
 namespace ws {
 

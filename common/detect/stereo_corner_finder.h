@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "detect/corner_detector.h"
 #include "lcm_io/image_codec.h"
 #include "widestereo/stereo_corners_t.hpp"

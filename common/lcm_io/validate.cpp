@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "lcm_io/image_codec.h"
 #include "models/distortion_function.h"
 #include "models/nonradial_field.h"

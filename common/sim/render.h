@@ -23,7 +23,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "sim/ray_map.h"
 #include "sim/sim_config.h"
 

@@ -51,7 +51,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "models/camera_model.h"
 
 namespace ws {

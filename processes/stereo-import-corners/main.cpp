@@ -12,7 +12,7 @@
 #include "calib/node/corner_import.h"
 #include "calib/node/corners_message.h"
 #include "calib/solver/calib_data.h"
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "lcm_io/channels.h"
 #include "runtime/process.h"
 #include "runtime/process_cli.h"

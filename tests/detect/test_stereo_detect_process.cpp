@@ -16,7 +16,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "detect/synthetic_view.h"
 #include "detect_test_views.h"
 #include "lcm_io/channels.h"

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 #include "rectify/rectification.h"
 
 namespace ws::test {

@@ -2,7 +2,7 @@
 // object points follow the ids.
 #include <gtest/gtest.h>
 
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "detect/board_spec.h"
+#include "board/board_spec.h"
 
 #include <cmath>
 #include <sstream>
