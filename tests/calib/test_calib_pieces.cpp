@@ -3,17 +3,20 @@
 // noise): the homography and Zhang's closed form (start/homography.h,
 // start/initialise.h), the board pose of one view with the camera fixed,
 // pinhole and fisheye past 90 degrees (start/pose_fit.h, start/ray_pose.h),
+// the equidistant fisheye start (start/equidistant_start.h),
 // and the solver's problem (solver/problem.h): its shape and a solve from a
 // perturbed start back to the truth.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
 #include "calib/solver/camera_block.h"
 #include "calib/solver/problem.h"
+#include "calib/start/equidistant_start.h"
 #include "calib/start/homography.h"
 #include "calib/start/initialise.h"
 #include "calib/start/pose_fit.h"
@@ -343,6 +346,33 @@ TEST(RefinePose, ReturnsTheTruePoseOfAFisheyeBoardPastNinetyDegrees) {
   EXPECT_LT(rms, 1e-9);
   EXPECT_LT(RotationError(pose, f.truth), 1e-9);
   EXPECT_LT((pose.t() - f.truth.t()).norm(), 1e-9);
+}
+
+TEST(EquidistantStart, FindsTheFocalLengthOfAnEquidistantFisheyeWithinItsGrid) {
+  const double f = 400;  // r = f theta: 90 degrees at 628 px, the image corners past 110
+  const CameraBlock camera = PinholeBlock(ModelKind::kKb4, Spline(), f, f, kPinholeCx, kPinholeCy);
+  const SyntheticRig rig = ExactRig(camera, 5);
+  CalibrationOptions options;
+  options.model = ModelKind::kKb4;
+  const Prepared prepared = Prepare(rig.data.left, options);
+  ASSERT_EQ(prepared.NumUsable(), 5);
+  std::vector<Pose> poses(5);
+  std::vector<bool> posed;
+  const PinholeInit init = EquidistantStart(prepared, 3, &poses, &posed);
+  // The search steps by 1 % about the best of a 10 % grid: within half a step.
+  EXPECT_EQ(init.method, "equidistant");
+  EXPECT_NEAR(init.fx, f, 0.006 * f);
+  EXPECT_EQ(init.fy, init.fx);
+  EXPECT_EQ(init.cx, kPinholeCx);
+  EXPECT_EQ(init.cy, kPinholeCy);
+  ASSERT_EQ(posed.size(), 5u);
+  for (int v = 0; v < 5; ++v) {
+    ASSERT_TRUE(posed[v]) << "view " << v;
+    // Off only as far as f is: a few milliradians and millimetres.
+    EXPECT_LT(RotationError(poses[v], rig.left_poses[v]), 5e-3) << "view " << v;
+    EXPECT_LT((poses[v].t() - rig.left_poses[v].t()).norm(), 5e-3) << "view " << v;
+  }
+  std::printf("equidistant start: f %.3f px (truth %.1f)\n", init.fx, f);
 }
 
 // ------------------------------------------------------------------- problem
