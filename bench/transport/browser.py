@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """One browser on stereo-view's page for the transport benchmark: Debian's
 headless Chromium (Selenium) opens the page's depth view and keeps it open,
-reading every update, until Ctrl-C (the launcher's stop). It runs at the
-lowest priority (nice 19), standing in for a browser on another machine: the
-rig's processes go first on the shared cores. At the end it prints the CPU
-its Chromium took, which a browser elsewhere would not take from the rig.
+reading every update, until Ctrl-C (the launcher's stop): a browser on the
+rig itself (page_reader.py stands for one on another machine). It runs at
+the lowest priority (nice 19), so that the rig's processes go first on the
+shared cores. At the end it prints the CPU its Chromium took, which a
+browser elsewhere would not take from the rig.
     bench/transport/browser.py http://127.0.0.1:PORT/ [--log-dir DIR] [--quiet] ..."""
 import os
 import signal
