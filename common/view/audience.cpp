@@ -28,4 +28,8 @@ void Audience::Leave(Views views) {
 
 bool Audience::Watching(PageView view) const { return streams_[Index(view)].load() > 0; }
 
+bool Audience::Watching(Views views) const {
+  return (views.calibration && Watching(PageView::kCalibration)) || (views.depth && Watching(PageView::kDepth));
+}
+
 }  // namespace ws::view

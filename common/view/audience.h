@@ -26,6 +26,8 @@ class Audience {
   void Join(Views views);
   void Leave(Views views);
   bool Watching(PageView view) const;
+  // Whether some stream shows any of `views`.
+  bool Watching(Views views) const;
 
  private:
   std::array<std::atomic<int>, 2> streams_{};  // by PageView: the streams watching it

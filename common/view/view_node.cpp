@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -165,15 +164,10 @@ void ViewNode::PublishView() {
 }
 
 template <class Msg>
-void ViewNode::SubscribeSampled(const char* channel, std::initializer_list<PageView> views, int64_t& last_us,
+void ViewNode::SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us,
                                 NewestFirst<Msg>& stage) {
-  auto watched = [this, views = std::vector<PageView>(views)] {
-    for (PageView view : views)
-      if (audience_.Watching(view)) return true;
-    return false;
-  };
   process_.SubscribeSampled<Msg>(
-      channel, [this, watched, &last_us] { return watched() && Due(last_us); },
+      channel, [this, views, &last_us] { return audience_.Watching(views) && Due(last_us); },
       [&stage](Msg& msg) { stage.Offer(std::move(msg)); },
       2);  // LCM's queue holds two big messages at most: the stage takes the newest
 }
@@ -181,7 +175,8 @@ void ViewNode::SubscribeSampled(const char* channel, std::initializer_list<PageV
 void ViewNode::Start() {
   const bool live = !process_.file_input();
   auto received = [this] { return process_.file_input() ? process_.Now() : WallMicros(); };
-  SubscribeSampled(channel::kStereoImages, {PageView::kCalibration, PageView::kDepth}, last_frame_us_, frames_);
+  const Audience::Views both, depth{/*calibration=*/false, /*depth=*/true};
+  SubscribeSampled(channel::kStereoImages, both, last_frame_us_, frames_);
   process_.Subscribe<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
   process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
@@ -193,8 +188,8 @@ void ViewNode::Start() {
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(RigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });
-  SubscribeSampled(channel::kStereoDisparity, {PageView::kDepth}, last_disparity_us_, disparities_);
-  SubscribeSampled(channel::kStereoCloudFiltered, {PageView::kDepth}, last_cloud_us_, clouds_);
+  SubscribeSampled(channel::kStereoDisparity, depth, last_disparity_us_, disparities_);
+  SubscribeSampled(channel::kStereoCloudFiltered, depth, last_cloud_us_, clouds_);
   process_.Subscribe<widestereo::cloud_stats_t>(channel::kCloudStats, [this, received](const auto& m) {
     board_.Add(m, received());
     hub_.Publish("cloud_stats", CloudStatsEvent(m));

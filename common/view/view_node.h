@@ -82,8 +82,7 @@ class ViewNode {
   // `views` and at least 1 / image_hz has passed since `last_us`; else
   // counts it as skipped.
   template <class Msg>
-  void SubscribeSampled(const char* channel, std::initializer_list<PageView> views, int64_t& last_us,
-                        NewestFirst<Msg>& stage);
+  void SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us, NewestFirst<Msg>& stage);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
   void PublishView();

@@ -31,6 +31,9 @@ TEST(Audience, AViewIsWatchedWhileAnyStreamShowsIt) {
   audience.Join(Audience::Parse("calibration"));
   EXPECT_TRUE(audience.Watching(PageView::kCalibration));
   EXPECT_FALSE(audience.Watching(PageView::kDepth));
+  // A set of views is watched while any one of them is.
+  EXPECT_FALSE(audience.Watching(depth));
+  EXPECT_TRUE(audience.Watching(both));
 }
 
 TEST(Audience, AnotherViewNameIsRefused) {
