@@ -44,13 +44,15 @@ struct KnotTrial {
 };
 
 // One candidate of --nonradial auto (mono_solve.h): the camera with a sensor
-// tilt or not and a field of cols x rows control points (0 x 0: none), its
-// fitted and held-out RMS.
+// tilt or not and a field of cols x rows control points (0 x 0: none) with
+// its smoothness weight, its fitted and held-out RMS.
 struct FieldTrial {
   bool tilt = false;
   int cols = 0, rows = 0;
+  double smoothness = 0;  // the field's prior weight lambda (nonradial_prior.h)
   double rms_px = 0;
   double heldout_rms_px = -1;
+  std::vector<double> fold_rms_px;
 };
 
 // One camera's calibration and its quality.
@@ -65,7 +67,7 @@ struct CameraCalibration {
   int heldout_extrapolated = 0;           // held-out corners past the training views' field, left out
   std::vector<HeldOutCorner> heldout_corners;  // camera 0: this one (FoldRmsOnCommonCorners)
   std::vector<KnotTrial> knot_curve;      // --knots auto: every count tried, in order
-  std::vector<FieldTrial> field_curve;    // --nonradial auto: none, the tilt, then every grid tried
+  std::vector<FieldTrial> field_curve;    // --nonradial auto: none, the tilt, then every field tried
   int field_chosen = 0;                   // its index in field_curve
   int views = 0;                          // views used
   int points = 0;                         // inlier corners used

@@ -38,7 +38,7 @@ struct MonoState {
   std::vector<KnotTrial> knot_curve;  // --knots auto: every count tried
   CrossValidation heldout;            // of the last solve, when --knots auto ran it
   WarpChoice warp_choice;             // --board-warp auto
-  std::vector<FieldTrial> field_curve;  // --nonradial auto: "none", the tilt, then every grid tried
+  std::vector<FieldTrial> field_curve;  // --nonradial auto: "none", the tilt, then every field tried
   int field_chosen = 0;                 // its index in field_curve
 };
 

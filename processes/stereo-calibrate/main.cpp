@@ -102,9 +102,10 @@ int main(int argc, char** argv) {
   app.add_option("--nonradial", nonradial,
                  "The lens model's non-radial part, a sensor tilt (OpenCV's tauX, tauY) and a "
                  "smooth 2-D field over the image: auto (the tilt kept where it lowers the "
-                 "held-out RMS beyond the fold-to-fold noise, then grids of 4 to 16 control points "
-                 "across tried; the one of the lowest held-out RMS kept where it beats none beyond "
-                 "that noise), none, tilt, COLSxROWS or tilt+COLSxROWS")
+                 "held-out RMS beyond the fold-to-fold noise, then fields of 16 control points "
+                 "across at smoothness weights from 10 down to 0.01 and grids of 4 to 11 across "
+                 "tried; the one of the lowest held-out RMS kept where it beats none beyond that "
+                 "noise), none, tilt, COLSxROWS or tilt+COLSxROWS (at --smoothness)")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))

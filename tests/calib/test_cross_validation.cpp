@@ -3,7 +3,10 @@
 // it saw.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <numeric>
+#include <random>
 
 #include "calib/calibrate.h"
 #include "calib/evaluate/heldout.h"
@@ -94,6 +97,36 @@ TEST(CrossValidation, ChoosesTheFewestWithinTheFoldNoise) {
       {0.102, 0.1122, 0.0918, 0.102, 0.1071}, {0.100, 0.110, 0.090, 0.100, 0.105}};
   EXPECT_EQ(ChooseWithinNoise(consistent), 1);
   EXPECT_EQ(ChooseWithinNoise({}), -1);
+}
+
+TEST(CrossValidation, TheResolutionIsTheSpreadOfTheHeldOutRmsOfFreshCorners) {
+  // Held-out RMS of n corners of Gaussian noise, drawn afresh many times:
+  // its spread is what HeldOutResolution says, of any one draw.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  const int n = 2000, draws = 400;
+  std::vector<double> rms;
+  double resolution = 0;
+  for (int d = 0; d < draws; ++d) {
+    CrossValidation cv;
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+      const double ex = noise(rng), ey = noise(rng);
+      cv.corners.push_back({0, i / 40, i % 40, i % 5, ex * ex + ey * ey});
+      cv.corners.push_back({1, i / 40, i % 40, i % 5, 1.0});  // another camera's: not counted
+      sum += ex * ex + ey * ey;
+    }
+    cv.rms_px = {std::sqrt(sum / n), 1.0};
+    rms.push_back(cv.rms_px[0]);
+    resolution += HeldOutResolution(cv, 0) / draws;
+  }
+  const double mean = std::accumulate(rms.begin(), rms.end(), 0.0) / draws;
+  double var = 0;
+  for (double r : rms) var += (r - mean) * (r - mean) / (draws - 1);
+  std::printf("held-out RMS of %d corners: spread %.5f px, resolution %.5f px\n", n, std::sqrt(var),
+              resolution);
+  EXPECT_NEAR(resolution, std::sqrt(var), 0.1 * std::sqrt(var));
+  EXPECT_EQ(HeldOutResolution(CrossValidation{}, 0), 0.0);
 }
 
 }  // namespace

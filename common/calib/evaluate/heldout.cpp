@@ -253,6 +253,12 @@ std::vector<std::vector<double>> FoldRmsOnCommonCorners(
   return out;
 }
 
+double HeldOutResolution(const CrossValidation& cv, int camera) {
+  const auto n = std::count_if(cv.corners.begin(), cv.corners.end(),
+                               [&](const HeldOutCorner& h) { return h.camera == camera; });
+  return n > 0 ? cv.rms_px[size_t(camera)] / (2.0 * std::sqrt(double(n))) : 0.0;
+}
+
 int ChooseWithinNoise(const std::vector<std::vector<double>>& fold_rms) {
   if (fold_rms.empty()) return -1;
   size_t folds = fold_rms[0].size();

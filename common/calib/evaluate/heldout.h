@@ -78,6 +78,14 @@ CrossValidation CrossValidate(const Problem& solved, int folds);
 std::vector<std::vector<double>> FoldRmsOnCommonCorners(
     const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera);
 
+// How finely camera `camera`'s held-out RMS r over n held-out corners
+// resolves a model's error: its standard error as an estimate of the
+// noise, r / (2 sqrt n) (|e|^2 of a corner of Gaussian noise sigma per
+// coordinate has mean 2 sigma^2 and standard deviation 2 sigma^2). A gain
+// below it is consistent across the folds at best, and could not be seen
+// on a fresh set of as many corners. 0 without held-out corners.
+double HeldOutResolution(const CrossValidation& cv, int camera);
+
 // Of candidates in order of complexity, each with its per-fold held-out RMS
 // (the same folds for all), the least complex whose excess over the best
 // (the lowest mean) is within the fold-to-fold noise: mean_k(e_k - best_k)

@@ -100,8 +100,10 @@ Json CameraReport(const CameraCalibration& c) {
   }
   Json field_curve = Json::array();
   for (const FieldTrial& t : c.field_curve)
-    field_curve.push_back({{"tilt", t.tilt}, {"cols", t.cols}, {"rows", t.rows}, {"rms_px", t.rms_px},
-                           {"heldout_rms_px", t.heldout_rms_px}});
+    field_curve.push_back({{"tilt", t.tilt}, {"cols", t.cols}, {"rows", t.rows},
+                           {"smoothness", t.smoothness}, {"rms_px", t.rms_px},
+                           {"heldout_rms_px", t.heldout_rms_px},
+                           {"fold_rms_px", Numbers(t.fold_rms_px)}});
   j["field_curve"] = field_curve;
   j["field_chosen"] = c.field_chosen;
   if (const WarpChoice& w = c.warp_choice; w.made) {  // --board-warp auto

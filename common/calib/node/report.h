@@ -27,7 +27,8 @@
 // (the bow this camera's views estimated, kept or not). With a non-radial
 // part (models/nonradial_field.h) "nonradial" {"cols", "rows", "domain",
 // "coeffs", "tilt"}; "field_curve" (--nonradial auto: none, the tilt, then
-// every grid tried, {"tilt", "cols", "rows", "rms_px", "heldout_rms_px"};
+// every field tried, {"tilt", "cols", "rows", "smoothness", "rms_px",
+// "heldout_rms_px", "fold_rms_px"};
 // empty otherwise) and "field_chosen" (its index).
 // With several models: {"models": [one object as above per model],
 // "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px",

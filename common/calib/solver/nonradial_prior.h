@@ -19,8 +19,9 @@
 //   (smoothness_prior.h): they decide the cells no corner reaches.
 // - Size, lambda c: a weak pull of every coefficient towards 0, so that
 //   a control point beyond every corner stays near no correction.
-// lambda is the calibration's smoothness weight (options.h, 0.01): a field
-// that moves a corner by 1 px costs as much as a corner 0.01 px off.
+// lambda, chosen with the field by held-out error (options.h,
+// kFieldSmoothnessLadder): a field that moves a corner by 1 px costs as much
+// as a corner lambda px off.
 #pragma once
 
 #include <ceres/problem.h>

@@ -90,13 +90,14 @@ enum class FieldRule {
   // board's bow are settled, first the sensor tilt: solved and
   // cross-validated on the same corners, kept where it beats no tilt beyond
   // the fold-to-fold noise (ChooseWithinNoise of the two). Then, on top of
-  // what that kept, fields of each of kFieldLadder control points across
-  // (rows in proportion to the image) are solved and cross-validated in
-  // that order (a coarse one may miss what a finer one finds), until two
-  // grids in a row predict worse than the best so far beyond the
-  // fold-to-fold noise (over-fitting: finer grids only add parameters); the
-  // grid of the lowest held-out RMS is kept where it beats no field beyond
-  // the fold-to-fold noise. Whether the lens has a non-radial part is a
+  // what that kept, fields are solved and cross-validated in two ladders:
+  // the finest grid of kFieldLadder (rows in proportion to the image) at
+  // each weight of kFieldSmoothnessLadder, smooth to rough; then the
+  // coarser grids at the weight that predicted best (a coarse one may miss
+  // what a finer one finds); each until two in a row predict worse than
+  // its best beyond the fold-to-fold noise (over-fitting). The field of
+  // the lowest held-out RMS is kept where it beats no field beyond the
+  // fold-to-fold noise. Whether the lens has a non-radial part is a
   // test, how fine a grid it needs the best prediction. A radially
   // symmetric lens comes out as none. With several models, the non-radial
   // part is chosen for the model the radial comparison chose (calibrate.h).
@@ -104,6 +105,12 @@ enum class FieldRule {
   kGrid,  // given: field_tilt, and field_cols x field_rows control points (0 x 0: no field)
 };
 inline constexpr int kFieldLadder[] = {4, 6, 8, 11, 16};
+// The field's smoothness weights lambda (nonradial_prior.h) tried, smooth
+// to rough, half a decade apart: how much bending the views support is
+// their held-out error's to say (a rich grid with its roughness chosen by
+// cross-validation: Eilers and Marx, "Flexible smoothing with B-splines and
+// penalties", Statistical Science 1996).
+inline constexpr double kFieldSmoothnessLadder[] = {10, 3.16, 1, 0.316, 0.1, 0.0316, 0.01};
 
 // The B-spline's settings (the spline models; camera_block.h): its knots,
 // degree and smoothness prior.
