@@ -133,8 +133,10 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   // stereo solves keep them out and leave out no more, since a pair whose
   // cameras were not exposed together would otherwise lose its corners to
   // the shared board pose one by one instead of being found (CheckPairs).
+  // The standard deviations only of the solve that is kept (below).
   CalibrationOptions extrinsic_options = options;
   extrinsic_options.outliers = OutlierRule::kOff;
+  extrinsic_options.covariance = false;
   // R, T with both cameras held at their own solutions: the paper's
   // extrinsic step, and the start of the joint solve.
   auto solve_extrinsics = [&] {
@@ -192,6 +194,11 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     Say(options, "joint solve left out: sharing the board poses worsens the cameras' fit beyond "
                  "chance (pairs not exposed together?); each camera from its own views");
   }
+  if (options.covariance)
+    EstimateStddev(problem,
+                   {"stereo standard deviations", options.max_iterations, options.robust_loss,
+                    options.robust_scale_px},
+                   &outcome);
   // Held-out RMS: of the joint solve where it is kept, else of each
   // camera's own solve (R, T then play no part in it).
   const bool joint_kept = out.flow == StereoFlow::kJoint;
