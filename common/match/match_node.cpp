@@ -86,6 +86,10 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
       rectified_writer_(config_.save_rectified, "--save-rectified"),
       disparity_writer_(config_.save_disparity, "--save-disparity"),
       matcher_(AtMatchScale(config_.matcher)),
+      maps_(Live<MapsJob>(process, NewestFirst<MapsJob>::Policy::newest), [this](MapsJob& job) { BuildMaps(job); },
+            [this](const MapsJob& job) {
+              process_.log().Info("maps for " + job.source + " not built: a newer calibration replaced it");
+            }),
       publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
@@ -103,43 +107,77 @@ void MatchNode::SetRig(const Rig& rig, const std::string& source) {
   auto geometry = std::make_shared<const Rectification>(
       CalibrationGeometry(rig, options, config_.max_image_pixels, source));
   const cv::Size size = geometry->input_size;
+  MapsJob job{std::make_shared<const Rig>(rig), geometry, source};
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
-    rig_ = std::make_shared<const Rig>(rig);
+    rig_ = job.rig;
     rect_ = std::move(geometry);
     rect_has_maps_ = false;
+    maps_error_.clear();
     calibration_source_ = source;
   }
+  maps_changed_.notify_all();  // a frame waiting for the maps before waits for these now
   process_.log().Info("using " + source + " (" + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                      ", " + ModelName(rig.left.distortion.kind) + " model); its maps are built for its first frame of that size");
+                      ", " + ModelName(rig.left.distortion.kind) + " model); building its maps");
   process_.SetState("matching");
+  maps_.Offer(std::move(job));
+}
+
+void MatchNode::BuildMaps(MapsJob& job) {
+  {
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    if (rig_ != job.rig) return;  // replaced while it waited: the newer one is built next
+  }
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    Rectification rect = *job.geometry;
+    BuildRectificationMaps(*job.rig, &rect);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    process_.log().Info("rectification maps for " + job.source + " built in " + std::to_string(int(ms)) + " ms: f = " +
+                        std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
+                        std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " +
+                        std::to_string(rect.baseline) + " m, " + ModelName(job.rig->left.distortion.kind) + " model");
+    auto built = std::make_shared<const Rectification>(std::move(rect));
+    std::lock_guard<std::mutex> lock(rect_mutex_);
+    if (rig_ == job.rig) {  // not replaced meanwhile
+      rect_ = ready_ = std::move(built);
+      rect_has_maps_ = true;
+      ready_source_ = job.source;
+    }
+  } catch (const std::exception& e) {
+    const std::string error = "the rectification maps for " + job.source + " could not be built: " + e.what();
+    {
+      std::lock_guard<std::mutex> lock(rect_mutex_);
+      if (rig_ == job.rig) maps_error_ = error;
+    }
+    process_.ReportError(error);
+  }
+  maps_changed_.notify_all();
 }
 
 std::shared_ptr<const Rectification> MatchNode::Maps(const widestereo::stereo_frame_t& frame, std::string* source) {
-  std::shared_ptr<const Rig> rig;
-  Rectification rect;
-  {
-    std::lock_guard<std::mutex> lock(rect_mutex_);
+  std::unique_lock<std::mutex> lock(rect_mutex_);
+  while (true) {
     *source = calibration_source_;
     RequireFrameSize(frame, rect_->input_size, calibration_source_);
     if (rect_has_maps_) return rect_;
-    rig = rig_;
-    rect = *rect_;
+    if (!maps_error_.empty()) throw std::runtime_error(maps_error_);
+    // Being built (from a log they were built in line: never here): the
+    // calibration before for this size meanwhile, or wait. A newer
+    // calibration while waiting: its size is checked again.
+    if (ready_ && ready_->input_size == rect_->input_size) {
+      *source = ready_source_;
+      return ready_;
+    }
+    const std::shared_ptr<const Rig> rig = rig_;
+    maps_changed_.wait(lock, [&] { return rig_ != rig || rect_has_maps_ || !maps_error_.empty(); });
   }
-  const auto start = std::chrono::steady_clock::now();
-  BuildRectificationMaps(*rig, &rect);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  process_.log().Info("rectification maps for " + *source + " built in " + std::to_string(int(ms)) + " ms: f = " +
-                      std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
-                      std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " + std::to_string(rect.baseline) + " m, " +
-                      ModelName(rig->left.distortion.kind) + " model");
-  auto built = std::make_shared<const Rectification>(std::move(rect));
-  std::lock_guard<std::mutex> lock(rect_mutex_);
-  if (rig_ == rig) {  // not replaced meanwhile
-    rect_ = built;
-    rect_has_maps_ = true;
-  }
-  return built;
+}
+
+bool MatchNode::WaitForMaps(std::chrono::milliseconds timeout) {
+  std::unique_lock<std::mutex> lock(rect_mutex_);
+  maps_changed_.wait_for(lock, timeout, [&] { return rig_ && (rect_has_maps_ || !maps_error_.empty()); });
+  return rig_ && rect_has_maps_;
 }
 
 void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
@@ -164,6 +202,7 @@ void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
 void MatchNode::Drain() {
   match_.Drain();
   publish_.Drain();
+  maps_.Drain();
 }
 
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {

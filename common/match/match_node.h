@@ -2,6 +2,8 @@
 // and turns each stereo frame into a disparity image and a point cloud.
 #pragma once
 
+#include <chrono>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -58,10 +60,20 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
                        const std::string& calibration_source = "the calibration");
 
 // Wires MatchFrame to the bus: a calibration file given at the start, and
-// every STEREO_CALIBRATION after it, replaces the calibration, whose maps are
-// built for the first frame of its image size (calibration_size.h): a
-// calibration larger than config.max_image_pixels is refused, and frames of
-// another size are rejected before they are decoded; STEREO_IMAGES
+// every STEREO_CALIBRATION after it, replaces the calibration, checked on its
+// numbers first (calibration_size.h: one larger than config.max_image_pixels
+// is refused, the one before kept); frames of another size are rejected
+// before they are decoded. Its maps are built as it arrives, not at its first
+// frame: live on a thread of their own (the newest calibration waiting is
+// built next, one replaced before its build started is not built), so that
+// neither the input thread nor matching stops for them (about 0.2 s for
+// 1280x960). Meanwhile frames go on through the maps of the calibration
+// before when it is for the same image size (each disparity carries the
+// geometry it was matched with); without one (the first calibration, or
+// another size) a frame waits for the new maps in the matching stage, and
+// the frames after it are skipped and counted as below. From a log they are
+// built in line, before the next message: every frame after a calibration
+// is matched through it. STEREO_IMAGES
 // become STEREO_DISPARITY and STEREO_CLOUD, and the rectified pairs PNG
 // files and the disparity as a colour PNG with its legend in metres when
 // config.save_rectified and save_disparity say so (frame_image_writer.h).
@@ -82,22 +94,35 @@ class MatchNode {
  public:
   MatchNode(Process& process, MatchConfig config);
   ~MatchNode();
-  // Uses the rig from now on (its maps are built for its first frame);
-  // `source` names the calibration in log lines and errors ("calibration
-  // file calib.yaml", "STEREO_CALIBRATION"). Throws std::invalid_argument
-  // for a rig larger than config.max_image_pixels, keeping the one before.
+  // Uses the rig from now on and has its maps built (above); `source` names
+  // the calibration in log lines and errors ("calibration file calib.yaml",
+  // "STEREO_CALIBRATION"). Throws std::invalid_argument for a rig larger
+  // than config.max_image_pixels, keeping the one before.
   void SetRig(const Rig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
   // Takes the frame's payload (moves it into the pipeline).
   void OnFrame(widestereo::stereo_frame_t& frame);
-  // Returns when every frame handed over has been published or counted.
+  // Returns when every frame handed over has been published or counted, and
+  // the maps of the calibrations handed over are built.
   void Drain();
+  // True once the maps of the rig in use are built, waiting at most `timeout`
+  // for them; false without a rig, when their build failed, or on timeout.
+  bool WaitForMaps(std::chrono::milliseconds timeout);
 
  private:
+  // A calibration whose maps are to be built.
+  struct MapsJob {
+    std::shared_ptr<const Rig> rig;
+    std::shared_ptr<const Rectification> geometry;  // without maps
+    std::string source;
+  };
+  void BuildMaps(MapsJob& job);
   void Match(widestereo::stereo_frame_t& frame);
-  // The rectification of the rig in use and its name; its maps are built on
-  // the first call for it. Throws std::invalid_argument for a frame of
-  // another size.
+  // The rectification to match a frame through, with its maps, and its
+  // name: the rig in use's, or while its maps are being built the one before
+  // if it is for the same image size; otherwise it waits for them. Throws
+  // std::invalid_argument for a frame of another size than the rig in use's,
+  // std::runtime_error when its maps could not be built.
   std::shared_ptr<const Rectification> Maps(const widestereo::stereo_frame_t& frame, std::string* source);
   void Publish(MatchedFrame& matched);
 
@@ -108,13 +133,26 @@ class MatchNode {
   // At the matcher's resolution (AtMatchScale), as the rectification:
   // used by the matching stage only, but for its const config().
   DisparityMatcher matcher_;
-  std::mutex rect_mutex_;  // guards rig_, rect_ and calibration_source_
+  // Guards rig_, rect_, rect_has_maps_, maps_error_, calibration_source_,
+  // ready_ and ready_source_.
+  std::mutex rect_mutex_;
+  // Notified (under rect_mutex_) when the rig in use changes or its maps
+  // are built or fail.
+  std::condition_variable maps_changed_;
   std::shared_ptr<const Rig> rig_;  // the calibration in use
-  // Its rectification: without maps until a frame of its size comes.
+  // Its rectification: without maps until they are built.
   std::shared_ptr<const Rectification> rect_;
   bool rect_has_maps_ = false;
+  std::string maps_error_;  // why its maps could not be built ("" : they are, or will be)
   std::string calibration_source_;
+  // The newest rectification with maps, and its calibration's name: rect_
+  // once its maps are built, until then the one before (none at first).
+  std::shared_ptr<const Rectification> ready_;
+  std::string ready_source_;
   int64_t frames_without_calibration_ = 0;
+  // Builds the maps of the newest calibration. Declared before the stages:
+  // destroyed after them, since matching may wait for it.
+  NewestFirst<MapsJob> maps_;
   // Destroyed (drained) before the rest, matching before publishing.
   NewestFirst<MatchedFrame> publish_;
   NewestFirst<widestereo::stereo_frame_t> match_;

@@ -1,8 +1,8 @@
 // The image size a calibration is for, and the frames it may be used on,
 // checked on the numbers alone: before any rectification map is built or any
 // pixel decoded, so that neither a calibration of an absurd size nor a frame
-// of another size costs memory or time. stereo-match and stereo-health build
-// a calibration's maps for the first frame of its size, not ahead.
+// of another size costs memory or time. stereo-match builds a calibration's
+// maps once it passes these checks, stereo-health for its first frame.
 #pragma once
 
 #include <cstdint>

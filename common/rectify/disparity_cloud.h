@@ -6,9 +6,16 @@
 // never does.
 // step > 1 keeps every step-th pixel of every step-th row: a megapixel
 // frame's full cloud is a 13 MB message, too much for a busy network. The
-// step counts pixels of the full-resolution rectified image: on a grid n
-// times coarser (Rectification::downscale) it is step / n of its pixels (at
-// least 1), so the cloud is built at the resolution it is published at.
+// step counts pixels of the full-resolution rectified image, and the cloud
+// samples the same image positions at any resolution: on a grid n times
+// coarser (Rectification::downscale) full-resolution pixel (U, V) lies at
+// ((U + 1/2) / n - 1/2, (V + 1/2) / n - 1/2), between grid pixels. It
+// becomes a point when its nearest grid pixel holds a disparity, the bilinear
+// mean of the grid pixels about it that hold one within a pixel of the
+// nearest's (at an edge of the image, of the field or of an object, the
+// others are left out). The step is then at least n (one point per grid
+// pixel at most): the cloud costs what the grid it is published at costs,
+// not the full resolution.
 #pragma once
 
 #include <opencv2/core.hpp>

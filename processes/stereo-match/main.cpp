@@ -59,9 +59,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-depth", config.cloud.max_depth, "Farthest point put in the cloud, metres")->capture_default_str();
   config.cloud.step = 2;  // a full 1280x960 cloud is 13 MB a frame: full only on request
   app.add_option("--cloud-step", config.cloud.step,
-                 "Every N-th pixel of every N-th row becomes a cloud point, N in full-resolution pixels "
-                 "(N / downscale of the matched grid, at least 1; 1: the full cloud; 2 makes the "
-                 "message 4x smaller)")
+                 "Every N-th pixel of every N-th row becomes a cloud point, N in full-resolution pixels: "
+                 "the same image positions at any --downscale, their disparity interpolated on the "
+                 "matched grid (N at least the downscale; 1: the full cloud; 2 makes the message 4x "
+                 "smaller)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   auto* save_dir = app.add_option("--save-rectified", config.save_rectified.dir,

@@ -121,6 +121,53 @@ TEST(DisparityCloud, StepKeepsEveryNthPixelOfEveryNthRow) {
   EXPECT_EQ(ws::DisparityToCloud(rect, disparity, 0, gray, {0.5, 1}).npoints, 0) << "all beyond max_depth";
 }
 
+// On a grid n times coarser (stereo-match --downscale) the cloud samples the
+// full-resolution pixels a full-size disparity would give: a slanted plane's
+// disparity, on the full grid and on the half grid (each coarse pixel the
+// mean of the 2 x 2 it covers), gives the same points at step 4, at the same
+// image positions. The first row and column (full-resolution 0, a quarter
+// of a coarse pixel outside the coarse grid's first centre) take the
+// disparity of the coarse pixels inside: within the slope's quarter pixel.
+TEST(DisparityCloud, ACoarseGridSamplesTheFullResolutionPositions) {
+  const auto rig = ws::RigFromMessage(IdentityCalibration(64, 48, 100, 0.1));
+  ws::RectifyOptions options;
+  const ws::Rectification full_rect = ws::BuildRectification(rig, options);
+  options.downscale = 2;
+  const ws::Rectification coarse_rect = ws::BuildRectification(rig, options);
+  ASSERT_EQ(coarse_rect.size, cv::Size(32, 24));
+  // D(U, V) = 10 + 0.05 U + 0.02 V full-resolution pixels; a coarse pixel's
+  // disparity is the full one at its centre (2 u + 1/2, 2 v + 1/2), halved.
+  auto plane = [](double U, double V) { return 10 + 0.05 * U + 0.02 * V; };
+  cv::Mat full(48, 64, CV_32FC1), coarse(24, 32, CV_32FC1);
+  for (int V = 0; V < 48; ++V)
+    for (int U = 0; U < 64; ++U) full.at<float>(V, U) = float(plane(U, V));
+  for (int v = 0; v < 24; ++v)
+    for (int u = 0; u < 32; ++u) coarse.at<float>(v, u) = float(plane(2 * u + 0.5, 2 * v + 0.5) / 2);
+  const auto a = ws::DisparityToCloud(full_rect, full, 0, {}, {20.0, 4});
+  const auto b = ws::DisparityToCloud(coarse_rect, coarse, 0, {}, {20.0, 4});
+  ASSERT_EQ(a.npoints, 16 * 12);
+  ASSERT_EQ(b.npoints, a.npoints);
+  for (int k = 0; k < a.npoints; ++k) {
+    const int i = k % 16, j = k / 16;
+    const cv::Vec3d pa(a.xyz[k][0], a.xyz[k][1], a.xyz[k][2]), pb(b.xyz[k][0], b.xyz[k][1], b.xyz[k][2]);
+    // Full-resolution pixel (4 i, 4 j), whatever the grid.
+    EXPECT_NEAR(pb[0] / pb[2] * full_rect.f + full_rect.cx, 4 * i, 1e-3) << k;
+    EXPECT_NEAR(pb[1] / pb[2] * full_rect.f + full_rect.cy, 4 * j, 1e-3) << k;
+    if (i > 0 && j > 0)
+      EXPECT_LT(cv::norm(pa - pb), 1e-5) << "full-resolution pixel (" << 4 * i << ", " << 4 * j << ")";
+    else  // a quarter coarse pixel of both slopes: at most 0.035 px of the 10 to 13 px disparity
+      EXPECT_NEAR(pb[2] / pa[2], 1, 0.004) << k;
+  }
+  // An edge: 10 | 20 coarse pixels. No point between the two depths.
+  coarse.setTo(10.0f);
+  coarse.colRange(16, 32).setTo(20.0f);
+  const auto edge = ws::DisparityToCloud(coarse_rect, coarse, 0, {}, {20.0, 4});
+  ASSERT_EQ(edge.npoints, 16 * 12);
+  const double z10 = coarse_rect.f * 0.1 / 10, z20 = coarse_rect.f * 0.1 / 20;
+  for (const auto& p : edge.xyz)
+    EXPECT_TRUE(std::abs(p[2] - z10) < 1e-5 || std::abs(p[2] - z20) < 1e-5) << p[2];
+}
+
 struct Score {
   double bad_rate;  // of pixels with ground truth and an estimate: |d - gt| > 1 px
   double density;   // of pixels with ground truth: those with an estimate
