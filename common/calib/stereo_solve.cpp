@@ -182,13 +182,9 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   // Where some pairs showed that the cameras were not exposed together, the
   // joint solve is kept only if sharing the board poses costs what it should;
   // otherwise each camera keeps its own views' solution (the paper's flow).
-  if (joint && (out.inconsistent_views.empty() || JointFitsAsWellAsAlone(problem, mono, out.views))) {
-    Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
-                     outcome.message + ")");
-    for (int c = 0; c < 2; ++c)
-      (c == 0 ? out.left : out.right) =
-          CameraResult(problem, c, mono[c].prepared, outcome, mono[c].init_method, options);
-  } else if (joint) {
+  const bool keep_joint =
+      joint && (out.inconsistent_views.empty() || JointFitsAsWellAsAlone(problem, mono, out.views));
+  if (joint && !keep_joint) {
     outcome = solve_extrinsics();
     out.flow = StereoFlow::kPaper;
     Say(options, "joint solve left out: sharing the board poses worsens the cameras' fit beyond "
@@ -199,6 +195,13 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
                    {"stereo standard deviations", options.max_iterations, options.robust_loss,
                     options.robust_scale_px},
                    &outcome);
+  if (keep_joint) {
+    Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
+                     outcome.message + ")");
+    for (int c = 0; c < 2; ++c)
+      (c == 0 ? out.left : out.right) =
+          CameraResult(problem, c, mono[c].prepared, outcome, mono[c].init_method, options);
+  }
   // Held-out RMS: of the joint solve where it is kept, else of each
   // camera's own solve (R, T then play no part in it).
   const bool joint_kept = out.flow == StereoFlow::kJoint;
