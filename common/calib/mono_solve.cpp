@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "calib/evaluate/heldout.h"
+#include "calib/solver/corner_noise.h"
 #include "calib/solver/outliers.h"
 #include "calib/solver/stage_log.h"
 #include "calib/start/pose_fit.h"
@@ -170,6 +171,15 @@ void ChooseWarp(const CalibrationOptions& options, const std::string& what, Mono
   if (!choice.kept) Restore(flat, s);
 }
 
+// The median of the usable views' corner noise (corner_noise.h), pixels
+// per coordinate.
+double MedianCornerNoise(const Prepared& p) {
+  std::vector<double> noise;
+  for (size_t v = 0; v < p.views.size(); ++v)
+    if (p.usable[v]) noise.push_back(CornerNoise(p.views[v]));
+  return noise.empty() ? 0.0 : Median(std::move(noise));
+}
+
 // The rows of a field of `cols` control points across an image of this
 // aspect: as many per unit length, at least NonRadialField's minimum.
 int FieldRows(int cols, int width, int height) {
@@ -185,8 +195,10 @@ bool WorseBeyondNoise(const FinalSolve& candidate, const FinalSolve& best) {
 
 // --nonradial (options.h, FieldRule): a given tilt and grid; or, auto, the
 // sensor tilt solved from the radial camera and kept if it beats none
-// beyond the fold-to-fold noise (ChooseWithinNoise of the two); then, on
-// top of what that kept and solved from it with F = 0 on the same corners,
+// beyond the fold-to-fold noise (ChooseWithinNoise of the two); then,
+// where the held-out RMS exceeds the corners' own noise by more than it
+// resolves (else there is nothing for a field to take up), on top of what
+// that kept and solved from it with F = 0 on the same corners,
 // fields cross-validated in two ladders: the finest grid of kFieldLadder at
 // each smoothness weight of kFieldSmoothnessLadder, smooth to rough; then
 // the coarser grids at the weight that predicted best. Each ladder stops
@@ -251,6 +263,21 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
       ChooseCandidate({candidates[0], candidates[1]}) == 1)
     base = 1;
   const bool tilt = base == 1;
+  // A field only where the lens leaves something to take up: the held-out
+  // RMS above the corners' own noise (corner_noise.h, per corner sqrt(2)
+  // sigma: an upper bound where the lens bends the rows) by more than the
+  // held-out RMS resolves. Else none, and no field is solved.
+  const double floor_px = std::sqrt(2.0) * MedianCornerNoise(p);
+  const double heldout_px = candidates[base].heldout.rms_px[0];
+  const double excess_px = std::sqrt(std::max(0.0, heldout_px * heldout_px - floor_px * floor_px));
+  if (!(excess_px > HeldOutResolution(candidates[base].heldout, 0))) {
+    s->field_chosen = int(base);
+    Say(options, what + ": non-radial part " + name(s->field_curve[base]) + " chosen, no field "
+                     "tried (held-out RMS " + Fixed(heldout_px) + " px, the corners' own noise " +
+                     Fixed(floor_px) + " px)");
+    Restore(candidates[base], s);
+    return;
+  }
   const size_t first_field = candidates.size();
   // One ladder of fields solved from the base, in order, until two in a row
   // predict worse than the best of the ladder beyond the noise; returns the

@@ -89,8 +89,10 @@ enum class FieldRule {
   // The default: per camera, after the radial model, its knots and the
   // board's bow are settled, first the sensor tilt: solved and
   // cross-validated on the same corners, kept where it beats no tilt beyond
-  // the fold-to-fold noise (ChooseWithinNoise of the two). Then, on top of
-  // what that kept, fields are solved and cross-validated in two ladders:
+  // the fold-to-fold noise (ChooseWithinNoise of the two). Then, where the
+  // held-out RMS exceeds the corners' own noise by more than it resolves,
+  // on top of what that kept, fields are solved and cross-validated in two
+  // ladders:
   // the finest grid of kFieldLadder (rows in proportion to the image) at
   // each weight of kFieldSmoothnessLadder, smooth to rough; then the
   // coarser grids at the weight that predicted best (a coarse one may miss
