@@ -173,11 +173,11 @@ void ChooseWarp(const CalibrationOptions& options, const std::string& what, Mono
 
 // The median of the usable views' corner noise (corner_noise.h), pixels
 // per coordinate.
-double MedianCornerNoise(const Prepared& p) {
-  std::vector<double> noise;
+double UsableViewsNoise(const Prepared& p) {
+  std::vector<const BoardView*> views;
   for (size_t v = 0; v < p.views.size(); ++v)
-    if (p.usable[v]) noise.push_back(CornerNoise(p.views[v]));
-  return noise.empty() ? 0.0 : Median(std::move(noise));
+    if (p.usable[v]) views.push_back(&p.views[v]);
+  return MedianCornerNoise(views);
 }
 
 // The rows of a field of `cols` control points across an image of this
@@ -267,7 +267,7 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   // RMS above the corners' own noise (corner_noise.h, per corner sqrt(2)
   // sigma: an upper bound where the lens bends the rows) by more than the
   // held-out RMS resolves. Else none, and no field is solved.
-  const double floor_px = std::sqrt(2.0) * MedianCornerNoise(p);
+  const double floor_px = std::sqrt(2.0) * UsableViewsNoise(p);
   const double heldout_px = candidates[base].heldout.rms_px[0];
   const double excess_px = std::sqrt(std::max(0.0, heldout_px * heldout_px - floor_px * floor_px));
   if (!(excess_px > HeldOutResolution(candidates[base].heldout, 0))) {
@@ -278,7 +278,6 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
     Restore(candidates[base], s);
     return;
   }
-  const size_t first_field = candidates.size();
   // One ladder of fields solved from the base, in order, until two in a row
   // predict worse than the best of the ladder beyond the noise; returns the
   // candidate of its lowest held-out RMS (0: none solved).
@@ -308,16 +307,16 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   std::vector<FieldTrial> grids;
   for (int cols : kFieldLadder)
     if (cols != finest) grids.push_back({tilt, cols, FieldRows(cols, p.width, p.height), lambda});
-  climb(grids);
+  const size_t coarser_best = climb(grids);
   // The field that predicts best, kept only if it beats none beyond the
   // fold-to-fold noise and the held-out RMS's resolution.
-  size_t best = first_field;
-  for (size_t i = first_field + 1; i < candidates.size(); ++i)
-    if (candidates[i].heldout.rms_px[0] < candidates[best].heldout.rms_px[0]) best = i;
+  auto lower = [&](size_t a, size_t b) {  // 0: none solved
+    return b && (!a || candidates[b].heldout.rms_px[0] < candidates[a].heldout.rms_px[0]) ? b : a;
+  };
+  const size_t best = lower(smoothest_best, coarser_best);
   const CrossValidation& without = candidates[base].heldout;
   const double resolution = HeldOutResolution(without, 0);
-  const size_t chosen = best < candidates.size() &&
-                                ChooseCandidate({candidates[base], candidates[best]}) == 1 &&
+  const size_t chosen = best && ChooseCandidate({candidates[base], candidates[best]}) == 1 &&
                                 without.rms_px[0] - candidates[best].heldout.rms_px[0] > resolution
                             ? best
                             : base;

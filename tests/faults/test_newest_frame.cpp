@@ -152,12 +152,7 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
 // process itself, live (not from a log): its own thread builds them.
 TEST(NewestFrame, StereoMatchBuildsTheMapsWhenTheCalibrationArrivesNotAtTheFirstFrame) {
   const std::string dir = TempDir("faults-maps-ahead");
-  ws::ProcessOptions options;
-  options.name = "stereo-match";
-  options.in_url = UniqueUdpmUrl();
-  options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
-  options.log_dir = dir;
-  options.quiet = true;
+  const ws::ProcessOptions options = LiveInFileOut("stereo-match", dir);
   {
     ws::Process process(options);
     ASSERT_FALSE(process.file_input());

@@ -133,12 +133,7 @@ TEST(ProcessLcm, TwoProcessesTalkOverUdpm) {
 // counted as skipped, never as lost; a frame that really went missing is.
 TEST(ProcessLcm, ASampledSubscriptionCountsSkipsApartFromLosses) {
   const std::string dir = TempDir("sampled");
-  ws::ProcessOptions options;
-  options.name = "sampler";
-  options.in_url = UniqueUdpmUrl();
-  options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
-  options.log_dir = dir;
-  options.quiet = true;
+  const ws::ProcessOptions options = LiveInFileOut("sampler", dir);
   ws::Process process(options);
   int calls = 0;
   std::vector<int64_t> handled;

@@ -146,6 +146,16 @@ std::string UniqueUdpmUrl(int offset) {
          "?ttl=0";
 }
 
+ws::ProcessOptions LiveInFileOut(const std::string& name, const std::string& dir) {
+  ws::ProcessOptions options;
+  options.name = name;
+  options.in_url = UniqueUdpmUrl();
+  options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
+  options.log_dir = dir;
+  options.quiet = true;
+  return options;
+}
+
 bool HandleUntil(lcm::LCM& lcm, double seconds, const std::function<bool()>& done) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (!done() && std::chrono::steady_clock::now() < end) lcm.handleTimeout(10);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/process_options.h"
 #include "widestereo/channel_counters_t.hpp"
 #include "widestereo/command_t.hpp"
 
@@ -89,6 +90,10 @@ constexpr bool kMemoryBoundsMeaningful = true;
 // A udpm URL on this host (ttl=0) with a port unique to this test process, so
 // tests running at the same time do not hear each other.
 std::string UniqueUdpmUrl(int offset = 0);
+
+// A process `name` that listens live on a bus of its own (UniqueUdpmUrl)
+// and writes to DIR/out.lcmlog, its log in DIR, quietly.
+ws::ProcessOptions LiveInFileOut(const std::string& name, const std::string& dir);
 
 // Handles messages on `lcm` until `done` or `seconds` have passed; returns `done`.
 bool HandleUntil(lcm::LCM& lcm, double seconds, const std::function<bool()>& done);

@@ -56,4 +56,10 @@ double CornerNoise(const BoardView& view) {
   return Median(std::move(norms)) / (std::sqrt(kSumOfSquares) * std::sqrt(2.0 * std::log(2.0)));
 }
 
+double MedianCornerNoise(const std::vector<const BoardView*>& views) {
+  std::vector<double> noise;
+  for (const BoardView* view : views) noise.push_back(CornerNoise(*view));
+  return noise.empty() ? 0.0 : Median(std::move(noise));
+}
+
 }  // namespace ws::calib

@@ -21,6 +21,8 @@
 // a view the person holding the board chose moves them by far more.
 #pragma once
 
+#include <vector>
+
 #include "calib/solver/calib_data.h"
 
 namespace ws::calib {
@@ -28,5 +30,9 @@ namespace ws::calib {
 // The noise estimate above, pixels per coordinate; 0 when the view has no
 // three neighbouring corners in a row or column.
 double CornerNoise(const BoardView& view);
+
+// The median of CornerNoise over `views`: a camera's typical detection
+// noise, which a few blurred views do not decide; 0 when there are none.
+double MedianCornerNoise(const std::vector<const BoardView*>& views);
 
 }  // namespace ws::calib

@@ -21,10 +21,10 @@ double Level(double sigma, size_t corners, double expected) {
 
 // The median detection noise of camera `camera`'s views (corner_noise.h).
 double DetectionNoise(const Problem& problem, int camera) {
-  std::vector<double> noise;
+  std::vector<const BoardView*> views;
   for (const Observation& o : problem.observations)
-    if (o.camera == camera) noise.push_back(CornerNoise(*o.corners));
-  return noise.empty() ? 0.0 : Median(std::move(noise));
+    if (o.camera == camera) views.push_back(o.corners);
+  return MedianCornerNoise(views);
 }
 
 // Decides anew which of camera `camera`'s corners are outliers (their
