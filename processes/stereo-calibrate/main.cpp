@@ -90,8 +90,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--outlier-sigma", outliers,
                  "Corners left out as outliers: auto (farther from their projection than "
-                 "sigma sqrt(2 ln 2N), Chauvenet's criterion for N corners of robust noise "
-                 "sigma), K (farther than K sigma, at least 0.25 px) or off")
+                 "sigma sqrt(2 ln 2N), Chauvenet's criterion for N corners, sigma the inliers' "
+                 "RMS per coordinate or the corners' own noise if larger), K (farther than K "
+                 "times the median-based noise, at least 0.25 px) or off")
       ->capture_default_str();
   app.add_option("--board-warp", warp,
                  "The board's bow (mrcal's calobject_warp paraboloid; reported in mm): auto "
@@ -102,10 +103,12 @@ int main(int argc, char** argv) {
   app.add_option("--nonradial", nonradial,
                  "The lens model's non-radial part, a sensor tilt (OpenCV's tauX, tauY) and a "
                  "smooth 2-D field over the image: auto (the tilt kept where it lowers the "
-                 "held-out RMS beyond the fold-to-fold noise, then fields of 16 control points "
+                 "held-out RMS beyond the fold-to-fold noise; where the held-out RMS exceeds "
+                 "the corners' own noise by more than it resolves, fields of 16 control points "
                  "across at smoothness weights from 10 down to 0.01 and grids of 4 to 11 across "
                  "tried; the one of the lowest held-out RMS kept where it beats none beyond that "
-                 "noise), none, tilt, COLSxROWS or tilt+COLSxROWS (at --smoothness)")
+                 "noise and by more than the held-out RMS resolves), none, tilt, COLSxROWS or "
+                 "tilt+COLSxROWS (at --smoothness)")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))
