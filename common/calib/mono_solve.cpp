@@ -186,6 +186,17 @@ int FieldRows(int cols, int width, int height) {
   return std::max(NonRadialField::kDegree + 1, int(std::lround(cols * double(height) / width)));
 }
 
+// A field trial not yet solved: the tilt or not, cols x rows control
+// points (0 x 0: none) at smoothness lambda.
+FieldTrial Trial(bool tilt, int cols, int rows, double lambda) {
+  FieldTrial t;
+  t.tilt = tilt;
+  t.cols = cols;
+  t.rows = rows;
+  t.smoothness = lambda;
+  return t;
+}
+
 // Whether `candidate` predicts worse than `best` beyond the fold-to-fold
 // noise: the mean of the paired per-fold differences exceeds its standard
 // error (the mirror of ChooseWithinNoise's test).
@@ -228,7 +239,7 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   const double given = options.spline.smoothness;
   if (options.nonradial == FieldRule::kGrid) {
     solve(s->problem.cameras[0],
-          {options.field_tilt, options.field_cols, options.field_rows, given});
+          Trial(options.field_tilt, options.field_cols, options.field_rows, given));
     return;
   }
   if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
@@ -259,7 +270,7 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   };
   // The tilt: kept where it predicts better than none beyond the noise.
   size_t base = 0;
-  if (tried(candidates[0].camera, {true, 0, 0, 0}) &&
+  if (tried(candidates[0].camera, Trial(true, 0, 0, 0)) &&
       ChooseCandidate({candidates[0], candidates[1]}) == 1)
     base = 1;
   const bool tilt = base == 1;
@@ -301,12 +312,14 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   const int finest = std::end(kFieldLadder)[-1];
   const int finest_rows = FieldRows(finest, p.width, p.height);
   std::vector<FieldTrial> weights;
-  for (double lambda : kFieldSmoothnessLadder) weights.push_back({tilt, finest, finest_rows, lambda});
+  for (double lambda : kFieldSmoothnessLadder)
+    weights.push_back(Trial(tilt, finest, finest_rows, lambda));
   const size_t smoothest_best = climb(weights);
   const double lambda = smoothest_best ? s->field_curve[smoothest_best].smoothness : given;
   std::vector<FieldTrial> grids;
   for (int cols : kFieldLadder)
-    if (cols != finest) grids.push_back({tilt, cols, FieldRows(cols, p.width, p.height), lambda});
+    if (cols != finest)
+      grids.push_back(Trial(tilt, cols, FieldRows(cols, p.width, p.height), lambda));
   const size_t coarser_best = climb(grids);
   // The field that predicts best, kept only if it beats none beyond the
   // fold-to-fold noise and the held-out RMS's resolution.
