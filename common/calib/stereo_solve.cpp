@@ -204,17 +204,15 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   }
   // Held-out RMS: of the joint solve where it is kept, else of each
   // camera's own solve (R, T then play no part in it).
-  const bool joint_kept = out.flow == StereoFlow::kJoint;
   const CrossValidation joint_cv =
-      joint_kept ? CrossValidate(problem, options.cv_folds)
-                 : CrossValidation{};
+      keep_joint ? CrossValidate(problem, options.cv_folds) : CrossValidation{};
   for (int c = 0; c < 2; ++c) {
     CameraCalibration& camera = c == 0 ? out.left : out.right;
     camera.knot_curve = mono[c].knot_curve;
     camera.warp_choice = mono[c].warp_choice;
     camera.field_curve = mono[c].field_curve;
     camera.field_chosen = mono[c].field_chosen;
-    if (joint_kept)
+    if (keep_joint)
       SetHeldOut(joint_cv, c, &camera);
     else
       SetHeldOut(HeldOut(mono[c], options), 0, &camera);
