@@ -278,10 +278,12 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   // RMS above the corners' own noise (corner_noise.h, per corner sqrt(2)
   // sigma: an upper bound where the lens bends the rows) by more than the
   // held-out RMS resolves. Else none, and no field is solved.
-  const double floor_px = std::sqrt(2.0) * UsableViewsNoise(p);
+  // (Values, not references: the ladders below grow `candidates`.)
   const double heldout_px = candidates[base].heldout.rms_px[0];
+  const double resolution = HeldOutResolution(candidates[base].heldout, 0);
+  const double floor_px = std::sqrt(2.0) * UsableViewsNoise(p);
   const double excess_px = std::sqrt(std::max(0.0, heldout_px * heldout_px - floor_px * floor_px));
-  if (!(excess_px > HeldOutResolution(candidates[base].heldout, 0))) {
+  if (!(excess_px > resolution)) {
     s->field_chosen = int(base);
     Say(options, what + ": non-radial part " + name(s->field_curve[base]) + " chosen, no field "
                      "tried (held-out RMS " + Fixed(heldout_px) + " px, the corners' own noise " +
@@ -327,10 +329,8 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
     return b && (!a || candidates[b].heldout.rms_px[0] < candidates[a].heldout.rms_px[0]) ? b : a;
   };
   const size_t best = lower(smoothest_best, coarser_best);
-  const CrossValidation& without = candidates[base].heldout;
-  const double resolution = HeldOutResolution(without, 0);
   const size_t chosen = best && ChooseCandidate({candidates[base], candidates[best]}) == 1 &&
-                                without.rms_px[0] - candidates[best].heldout.rms_px[0] > resolution
+                                heldout_px - candidates[best].heldout.rms_px[0] > resolution
                             ? best
                             : base;
   s->field_chosen = int(chosen);
