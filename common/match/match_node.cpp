@@ -185,15 +185,22 @@ void MatchNode::OnCalibration(const widestereo::stereo_calibration_t& msg) {
 }
 
 void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
-  bool calibrated;
+  bool calibrated, servable;
   {
     std::lock_guard<std::mutex> lock(rect_mutex_);
     calibrated = rig_ != nullptr;
+    // Maps to match it through now (or an error to report): the rig's, or
+    // the ones before for the same image size.
+    servable = rect_has_maps_ || !maps_error_.empty() || (ready_ && ready_->input_size == rect_->input_size);
   }
   if (!calibrated) {
     if (frames_without_calibration_++ == 0)
       process_.ReportError("frames arrive before any calibration: dropped until one does");
     process_.Counters(channel::kStereoImages).dropped++;
+    return;
+  }
+  if (!servable) {  // live, the first maps for this size being built: it would be stale once they are
+    process_.Counters(channel::kStereoImages).skipped++;
     return;
   }
   match_.Offer(std::move(frame));

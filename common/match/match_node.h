@@ -100,7 +100,10 @@ class MatchNode {
   // than config.max_image_pixels, keeping the one before.
   void SetRig(const Rig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
-  // Takes the frame's payload (moves it into the pipeline).
+  // Takes the frame's payload (moves it into the pipeline). Live, a frame
+  // that comes while no maps can serve it (the first calibration's, or one
+  // for a new image size, still being built) is skipped, not held: held,
+  // it would be matched a build's time late, and its cloud stale.
   void OnFrame(widestereo::stereo_frame_t& frame);
   // Returns when every frame handed over has been published or counted, and
   // the maps of the calibrations handed over are built.

@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
                      "FILE.yaml, then from every STEREO_CALIBRATION), matches them (block matching or SGBM), and publishes "
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
-                     "built; the pairs it skips are counted as dropped in PROCESS_STATUS. With "
+                     "built, and skips the pairs that come while the first maps for their image size are "
+                     "built (they would be stale once they are); the pairs it skips are counted in "
+                     "PROCESS_STATUS. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
   ws::MatchConfig config;
