@@ -6,6 +6,10 @@
 //    arrival of its STEREO_CLOUD_FILTERED here: median and 99th percentile,
 //    over the whole run and again without its first quarter (the processes'
 //    start-up: maps built, a browser loading the page),
+//  - the pairs whose STEREO_CLOUD_FILTERED never came (skipped for a newer
+//    pair or lost on the way), from the first cloud on (pairs sent while
+//    the chain's processes were still starting are not counted) and again
+//    without the run's first quarter,
 //  - every process's drop counters from PROCESS_STATUS,
 //  - every process's CPU share between its first and last heartbeat of the
 //    run (from /proc/PID/stat: the processes run on this host),
@@ -22,6 +26,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -83,6 +88,36 @@ double Percentile(std::vector<double> values, double p) {
   return values[std::min(values.size() - 1, size_t(p * double(values.size())))];
 }
 
+// "N of M pairs (P %)": the pairs first..last (frame ids) with no id in
+// `clouds`.
+std::string Missing(const std::set<int64_t>& clouds, int64_t first, int64_t last) {
+  if (first < 0 || last < first) return "no pairs";
+  int64_t missing = 0;
+  for (int64_t id = first; id <= last; ++id) missing += !clouds.count(id);
+  const int64_t due = last - first + 1;
+  char text[64];
+  std::snprintf(text, sizeof text, "%lld of %lld pairs (%.1f %%)", (long long)missing, (long long)due,
+                100.0 * double(missing) / double(due));
+  return text;
+}
+
+// "a b c ...": of the pairs first..last, how many with no id in `clouds`
+// arrived here in each second of the run (`arrival_s`: frame id -> seconds
+// after the first pair).
+std::string MissingPerSecond(const std::set<int64_t>& clouds, const std::map<int64_t, double>& arrival_s,
+                             int64_t first, int64_t last) {
+  std::vector<int> per_second;
+  for (const auto& [id, t] : arrival_s) {
+    if (first < 0 || id < first || id > last) continue;
+    const size_t second = size_t(t);
+    if (per_second.size() <= second) per_second.resize(second + 1, 0);
+    per_second[second] += !clouds.count(id);
+  }
+  std::string text;
+  for (int n : per_second) text += (text.empty() ? "" : " ") + std::to_string(n);
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,19 +132,28 @@ int main(int argc, char** argv) {
 
   ws::Process process(cli.options());
   int64_t first_utime = 0, pairs = 0, first_id = -1, last_id = -1;
+  int64_t steady_id = -1;   // the first pair after the first quarter of the run
+  int64_t settled_id = -1;  // the last pair a second before the run stops (its cloud had time to come)
   std::vector<double> latency_ms, steady_ms;  // steady: after the first quarter of the run
+  std::set<int64_t> cloud_ids;                // the pairs whose filtered cloud came
+  std::map<int64_t, double> arrival_s;        // each pair's arrival here, seconds after the first
   std::map<std::string, widestereo::process_status_t> status;
   // Each process's first heartbeat after the first pair, and when it came.
   std::map<std::string, std::pair<widestereo::process_status_t, int64_t>> first_status, last_status;
   std::map<std::string, double> first_cpu, last_cpu;  // CPU seconds at those heartbeats
   process.Subscribe<widestereo::stereo_frame_t>(ws::channel::kStereoImages, [&](const widestereo::stereo_frame_t& f) {
     if (first_id < 0) first_id = f.frame_id, first_utime = ws::WallMicros();
+    const int64_t since_first = ws::WallMicros() - first_utime;
+    if (steady_id < 0 && since_first >= duration_s * 0.25e6) steady_id = f.frame_id;
+    if (since_first <= (duration_s - 1) * 1e6) settled_id = f.frame_id;
     last_id = f.frame_id;
+    arrival_s[f.frame_id] = since_first * 1e-6;
     ++pairs;
   });
   process.Subscribe<widestereo::point_cloud_t>(ws::channel::kStereoCloudFiltered,
                                                [&](const widestereo::point_cloud_t& c) {
                                                  const int64_t now = ws::WallMicros();
+                                                 cloud_ids.insert(c.frame_id);
                                                  latency_ms.push_back((now - c.utime) * 1e-3);
                                                  if (first_id >= 0 && now - first_utime >= duration_s * 0.25e6)
                                                    steady_ms.push_back(latency_ms.back());
@@ -170,6 +214,11 @@ int main(int argc, char** argv) {
               median_ms, Percentile(latency_ms, 0.99));
   std::printf("  after the first %.0f s: %zu clouds, latency median %.0f ms, p99 %.0f ms\n", duration_s * 0.25,
               steady_ms.size(), Percentile(steady_ms, 0.5), Percentile(steady_ms, 0.99));
+  const int64_t first_cloud = cloud_ids.empty() ? -1 : *cloud_ids.begin();
+  std::printf("clouds missing from the first on: %s; after the first %.0f s: %s\n", Missing(cloud_ids, first_cloud, settled_id).c_str(),
+              duration_s * 0.25, Missing(cloud_ids, steady_id, settled_id).c_str());
+  std::printf("  per second of the run: %s\n",
+              MissingPerSecond(cloud_ids, arrival_s, first_cloud, settled_id).c_str());
   if (compute_ms > 0)
     std::printf("latency median / sum of the stage medians after the capture's stamp (%.1f ms): %.2f\n", compute_ms,
                 median_ms / compute_ms);

@@ -13,24 +13,31 @@
 # OTHER_TREE: another checkout, built in its build/: its stereo-* processes
 # run with its own config/ files instead (a baseline measured in the same
 # session), with this tree's listener.
-# VARIANTS="transport" runs the first launch only.
+# VARIANTS="transport" runs the first launch only. ROUNDS=N (default 1)
+# runs the variants N times in turn (A B A B ...: a machine whose speed
+# drifts over minutes slows them alike) and ends with each figure's median
+# and range over the rounds, per variant (summary.py).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 DURATION=${1:-60}
 RATE=${2:-15}
 OTHER=${3:-}
 VARIANTS=${VARIANTS:-transport transport-view-remote transport-view}
+ROUNDS=${ROUNDS:-1}
 RUN=logs/bench-transport-$(date +%Y%m%d-%H%M%S)${OTHER:+-other}
 mkdir -p "$RUN/frames"
 echo "net.core.rmem_max = $(sysctl -n net.core.rmem_max)"
 build/bench/bench_transport --prepare "$RUN/frames" --sim config/sim/wall.yaml --log-dir "$RUN" --quiet
 mv "$RUN/frames/calibration.yaml" "$RUN/calibration.yaml"
 PORT=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+for round in $(seq "$ROUNDS"); do
 for variant in $VARIANTS; do
-  mkdir -p "$RUN/$variant"
-  ln -sfn ../frames "$RUN/$variant/frames"
-  ln -sfn ../calibration.yaml "$RUN/$variant/calibration.yaml"
-  python3 - "bench/transport/$variant.yaml" "$RUN/$variant/launch.yaml" "$OTHER" <<'PY'
+  dir=$variant
+  [ "$ROUNDS" = 1 ] || dir=round-$round/$variant
+  mkdir -p "$RUN/$dir"
+  ln -sfn "$PWD/$RUN/frames" "$RUN/$dir/frames"
+  ln -sfn "$PWD/$RUN/calibration.yaml" "$RUN/$dir/calibration.yaml"
+  python3 - "bench/transport/$variant.yaml" "$RUN/$dir/launch.yaml" "$OTHER" <<'PY'
 import sys, yaml
 launch_file, out, other = sys.argv[1:]
 launch = yaml.safe_load(open(launch_file))
@@ -46,11 +53,14 @@ PY
     transport-view) extra=(--append "stereo-view=--port=$PORT" --append "browser=http://127.0.0.1:$PORT/") ;;
     transport-view-remote) extra=(--append "stereo-view=--port=$PORT" --append "page_reader=http://127.0.0.1:$PORT/") ;;
   esac
-  scripts/launch "$RUN/$variant/launch.yaml" --run-dir "$RUN/$variant" --no-record \
+  scripts/launch "$RUN/$dir/launch.yaml" --run-dir "$RUN/$dir" --no-record \
     --set "stereo-capture.rate=$RATE" --append "bench_transport=--duration=$DURATION" "${extra[@]}" \
-    > "$RUN/$variant/launch.out"
+    > "$RUN/$dir/launch.out"
   echo "== $variant.yaml, ${OTHER:-this tree}: capture at $RATE Hz for $DURATION s"
-  cat "$RUN/$variant/bench_transport.out"
-  grep -h "^browser: Chromium" "$RUN/$variant/browser.out" 2>/dev/null || true
-  grep -h "^page reader: [0-9]" "$RUN/$variant/page_reader.out" 2>/dev/null || true
+  [ "$ROUNDS" = 1 ] || echo "   round $round of $ROUNDS"
+  cat "$RUN/$dir/bench_transport.out"
+  grep -h "^browser: Chromium" "$RUN/$dir/browser.out" 2>/dev/null || true
+  grep -h "^page reader: [0-9]" "$RUN/$dir/page_reader.out" 2>/dev/null || true
 done
+done
+[ "$ROUNDS" = 1 ] || python3 bench/transport/summary.py "$RUN" $VARIANTS

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Summary of a bench/transport/run.sh run with ROUNDS > 1: for each
+variant, each figure's median over the rounds and its range (lowest,
+highest), from every round's bench_transport.out.
+
+  bench/transport/summary.py RUN_DIR VARIANT...
+"""
+import glob
+import re
+import statistics
+import sys
+
+# figure name -> pattern on bench_transport.out (first group: the value)
+FIGURES = {
+    "clouds missing from the first on %": r"^clouds missing from the first on: \d+ of \d+ pairs \(([\d.]+) %\)",
+    "  after the first quarter %": r"^clouds missing from the first on: .*; after the first \d+ s: \d+ of \d+ pairs \(([\d.]+) %\)",
+    "latency median ms": r"^capture -> STEREO_CLOUD_FILTERED: \d+ clouds, latency median (\d+) ms",
+    "latency p99 ms": r"^capture -> STEREO_CLOUD_FILTERED: .* p99 (\d+) ms",
+    "  after the first quarter: p99 ms": r"^  after the first \d+ s: \d+ clouds, .* p99 (\d+) ms",
+    "median / sum of the stages": r"^latency median / sum of the stage medians .*: ([\d.]+)",
+    # the machine's speed in that round: stages whose work does not change
+    "stereo-match match, median ms": r"^  stereo-match +match +([\d.]+) ",
+    "stereo-cloud filter, median ms": r"^  stereo-cloud +filter +([\d.]+) ",
+}
+PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view")
+
+
+def figures(path):
+    text = open(path).read()
+    out = {}
+    for name, pattern in FIGURES.items():
+        m = re.search(pattern, text, re.M)
+        if m:
+            out[name] = float(m.group(1))
+    cpu = text.split("CPU (share of one core", 1)[-1].split("latency budget", 1)[0]
+    for process in PROCESSES:
+        m = re.search(r"^  %s\s+([\d.]+) %%" % process, cpu, re.M)
+        if m:
+            out["CPU %s %%" % process] = float(m.group(1))
+    return out
+
+
+def main():
+    run, variants = sys.argv[1], sys.argv[2:]
+    per_variant = {}
+    for variant in variants:
+        rounds = [figures(f) for f in sorted(glob.glob(f"{run}/round-*/{variant}/bench_transport.out"))]
+        per_variant[variant] = rounds
+    names = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]
+    print(f"== summary over the rounds: median (lowest - highest) of {', '.join(str(len(r)) for r in per_variant.values())} rounds")
+    print("  %-36s" % "figure" + "".join("%-30s" % v for v in variants))
+    for name in names:
+        cells = []
+        for variant in variants:
+            values = [r[name] for r in per_variant[variant] if name in r]
+            cells.append("%g (%g - %g)" % (statistics.median(values), min(values), max(values)) if values else "-")
+        if any(c != "-" for c in cells):
+            print("  %-36s" % name + "".join("%-30s" % c for c in cells))
+
+
+if __name__ == "__main__":
+    main()
