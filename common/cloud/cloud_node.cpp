@@ -39,6 +39,25 @@ std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult
   return text;
 }
 
+// Runs the chain once on a plane of 320 x 240 points 2 m ahead (a 1280 x
+// 960 pair's cloud at every 4th pixel), for nothing: its first run
+// allocates and touches what later runs reuse. Live, that first run took
+// 70-80 ms against 20 ms for the later ones (bench/transport) and the first
+// clouds waited for it; warmed up, the first cloud came 40-75 ms sooner.
+void WarmUp(const CloudFilter& filter) {
+  widestereo::point_cloud_t plane{};
+  plane.frame = "warm-up";
+  for (int row = 0; row < 240; ++row)
+    for (int col = 0; col < 320; ++col)
+      plane.xyz.push_back({0.01f * float(col - 160), 0.01f * float(row - 120),
+                           2.0f + 0.001f * float((row * 7 + col * 13) % 5)});
+  plane.npoints = int(plane.xyz.size());
+  try {
+    filter.Run(plane);
+  } catch (const std::exception&) {  // a chain that rejects it will say so on the first live cloud
+  }
+}
+
 }  // namespace
 
 CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
@@ -59,6 +78,7 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
     if (error)
       throw std::runtime_error("--pcd-dir: cannot create '" + save_.pcd_dir + "': " + error.message());
   }
+  if (!process.file_input()) WarmUp(filter_);
   process_.SetState("filtering");
   process_.AtExit([this] { stage_.Drain(); });
 }

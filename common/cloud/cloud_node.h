@@ -17,7 +17,9 @@
 // Live, the chain runs on a thread of its own and takes the newest cloud
 // waiting (runtime/newest_first.h): a cloud replaced before the chain took it
 // is counted as skipped on STEREO_CLOUD, so that the output stays about one
-// chain time behind the input, whatever its rate. From a log, every cloud is
+// chain time behind the input, whatever its rate; the chain is run once at
+// start on a made-up plane (nothing published), so that the first clouds do
+// not wait for what its first run allocates. From a log, every cloud is
 // filtered, in line.
 //
 // Counting: a cloud that fails validation is rejected (by Process); a valid
