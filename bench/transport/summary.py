@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Summary of a bench/transport/run.sh run with ROUNDS > 1: for each
 variant, each figure's median over the rounds and its range (lowest,
-highest), from every round's bench_transport.out.
+highest), from every round's bench_transport.out; with --rounds, one
+Markdown table row per round and variant instead, in the order they ran.
 
-  bench/transport/summary.py RUN_DIR VARIANT...
+  bench/transport/summary.py [--rounds] RUN_DIR VARIANT...
 """
 import glob
 import re
@@ -40,7 +41,21 @@ def figures(path):
     return out
 
 
+def round_rows(run, variants):
+    names = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]
+    print("| round | launch | " + " | ".join(n.strip() for n in names) + " |")
+    print("|---|---|" + "---|" * len(names))
+    for path in sorted(glob.glob(f"{run}/round-*"), key=lambda p: int(p.rsplit("-", 1)[1])):
+        for variant in variants:
+            f = figures(f"{path}/{variant}/bench_transport.out")
+            cells = ["%g" % f[n] if n in f else "—" for n in names]
+            print(f"| {path.rsplit('-', 1)[1]} | {variant} | " + " | ".join(cells) + " |")
+
+
 def main():
+    if sys.argv[1] == "--rounds":
+        round_rows(sys.argv[2], sys.argv[3:])
+        return
     run, variants = sys.argv[1], sys.argv[2:]
     per_variant = {}
     for variant in variants:
