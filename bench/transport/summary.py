@@ -23,7 +23,7 @@ FIGURES = {
     "stereo-match match, median ms": r"^  stereo-match +match +([\d.]+) ",
     "stereo-cloud filter, median ms": r"^  stereo-cloud +filter +([\d.]+) ",
 }
-PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view")
+PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view", "stereo-status")
 
 
 def figures(path):
