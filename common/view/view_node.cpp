@@ -89,12 +89,17 @@ Rectification ShownRectification(const Rig& rig, int max_width) {
   RectifyOptions options;
   options.mode = RectificationMode::kAuto;
   options.focal_scale = std::min(1.0, double(max_width) / rig.left.image_width);
-  Rectification rect = BuildRectification(rig, options);
-  if (rect.mode != RectificationMode::kPinhole || options.focal_scale == 1.0) return rect;
-  options.mode = RectificationMode::kPinhole;  // its size is the input's unless given
-  options.size = cv::Size(int(std::lround(rig.left.image_width * options.focal_scale)),
-                          int(std::lround(rig.left.image_height * options.focal_scale)));
-  return BuildRectification(rig, options);
+  // The mode first, from the geometry alone (cheap); the maps once, at the
+  // size shown.
+  Rectification rect = RectificationGeometry(rig, options);
+  if (rect.mode == RectificationMode::kPinhole && options.focal_scale != 1.0) {
+    options.mode = RectificationMode::kPinhole;  // its size is the input's unless given
+    options.size = cv::Size(int(std::lround(rig.left.image_width * options.focal_scale)),
+                            int(std::lround(rig.left.image_height * options.focal_scale)));
+    rect = RectificationGeometry(rig, options);
+  }
+  BuildRectificationMaps(rig, &rect);
+  return rect;
 }
 
 bool ViewNode::Due(int64_t& last_us) {
