@@ -35,6 +35,7 @@
 
 #include "auth/message_auth.h"
 #include "lcm_io/decode.h"
+#include "runtime/library_log.h"
 #include "runtime/process_options.h"
 #include "runtime/stage_times.h"
 #include "runtime/text_log.h"
@@ -148,6 +149,7 @@ class Process {
 
   ProcessOptions options_;
   TextLog log_;
+  LibraryLog library_log_{log_};  // glog's messages (Ceres's) into log_
   std::optional<auth::AuthCheck> auth_;  // with --key-file
   std::string sender_;                   // "stereo-command@robot pid 4242"
   std::unique_ptr<lcm::LCM> in_;
