@@ -50,6 +50,26 @@ struct Output {
   bool in_burst;
 };
 
+// Hands a MatchNode frames of one random texture (both images the same),
+// each frame id at its 15 Hz capture time.
+class TextureFrames {
+ public:
+  TextureFrames(ws::MatchNode& node, int width, int height) : node_(node), texture_(height, width, CV_8UC1) {
+    cv::randu(texture_, 0, 256);
+  }
+  void Offer(int64_t id) {
+    widestereo::stereo_frame_t frame{};
+    frame.frame_id = id;
+    frame.utime = id * 66667;
+    frame.left = frame.right = ws::MatToImage(texture_, frame.utime);
+    node_.OnFrame(frame);
+  }
+
+ private:
+  ws::MatchNode& node_;
+  cv::Mat texture_;
+};
+
 TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
   const std::string dir = TempDir("faults-newest");
   const std::string url = UniqueUdpmUrl(17) + "&recv_buf_size=16777216";
@@ -168,26 +188,18 @@ TEST(NewestFrame, StereoMatchBuildsTheMapsWhenTheCalibrationArrivesNotAtTheFirst
               std::string::npos)
         << ReadFileText(process.log().path());
 
-    cv::Mat texture(480, 640, CV_8UC1);
-    cv::randu(texture, 0, 256);
-    widestereo::stereo_frame_t frame{};
-    auto offer = [&](int64_t id) {
-      frame.frame_id = id;
-      frame.utime = id * 66667;
-      frame.left = frame.right = ws::MatToImage(texture, frame.utime);
-      node.OnFrame(frame);
-    };
-    offer(1);
+    TextureFrames frames(node, 640, 480);
+    frames.Offer(1);
     node.Drain();
     EXPECT_EQ(process.Counters(ch::kStereoDisparity).published.load(), 1);
 
     // A recalibration, and a frame at once: matched, through either maps.
     node.SetRig(ws::RigFromMessage(IdentityCalibration(640, 480, 400, 0.1)), "the second calibration");
-    offer(2);
+    frames.Offer(2);
     node.Drain();  // the maps' build too
     EXPECT_TRUE(node.WaitForMaps(std::chrono::milliseconds(0)));
     // Once they are built, through the new ones.
-    offer(3);
+    frames.Offer(3);
     node.Drain();
     EXPECT_EQ(process.Counters(ch::kStereoDisparity).published.load(), 3);
     const auto& in = process.Counters(ch::kStereoImages);
@@ -220,19 +232,11 @@ TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
   // the frame below.
   const int width = 2560, height = 1920;
   node.SetRig(ws::RigFromMessage(IdentityCalibration(width, height, 1500, 0.1)), "the first calibration");
-  cv::Mat texture(height, width, CV_8UC1);
-  cv::randu(texture, 0, 256);
-  widestereo::stereo_frame_t frame{};
-  auto offer = [&](int64_t id) {
-    frame.frame_id = id;
-    frame.utime = id * 66667;
-    frame.left = frame.right = ws::MatToImage(texture, frame.utime);
-    node.OnFrame(frame);
-  };
-  offer(1);
+  TextureFrames frames(node, width, height);
+  frames.Offer(1);
   const bool built_before = node.WaitForMaps(std::chrono::milliseconds(0));
   ASSERT_TRUE(node.WaitForMaps(std::chrono::seconds(120)));
-  offer(2);
+  frames.Offer(2);
   node.Drain();
   const auto& in = process.Counters(ch::kStereoImages);
   if (!built_before) {
