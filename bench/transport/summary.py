@@ -24,6 +24,7 @@ FIGURES = {
     "stereo-cloud filter, median ms": r"^  stereo-cloud +filter +([\d.]+) ",
 }
 PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view", "stereo-status")
+NAMES = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]  # every figure, in table order
 
 
 def figures(path):
@@ -42,13 +43,12 @@ def figures(path):
 
 
 def round_rows(run, variants):
-    names = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]
-    print("| round | launch | " + " | ".join(n.strip() for n in names) + " |")
-    print("|---|---|" + "---|" * len(names))
+    print("| round | launch | " + " | ".join(n.strip() for n in NAMES) + " |")
+    print("|---|---|" + "---|" * len(NAMES))
     for path in sorted(glob.glob(f"{run}/round-*"), key=lambda p: int(p.rsplit("-", 1)[1])):
         for variant in variants:
             f = figures(f"{path}/{variant}/bench_transport.out")
-            cells = ["%g" % f[n] if n in f else "—" for n in names]
+            cells = ["%g" % f[n] if n in f else "—" for n in NAMES]
             print(f"| {path.rsplit('-', 1)[1]} | {variant} | " + " | ".join(cells) + " |")
 
 
@@ -61,10 +61,9 @@ def main():
     for variant in variants:
         rounds = [figures(f) for f in sorted(glob.glob(f"{run}/round-*/{variant}/bench_transport.out"))]
         per_variant[variant] = rounds
-    names = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]
     print(f"== summary over the rounds: median (lowest - highest) of {', '.join(str(len(r)) for r in per_variant.values())} rounds")
     print("  %-36s" % "figure" + "".join("%-30s" % v for v in variants))
-    for name in names:
+    for name in NAMES:
         cells = []
         for variant in variants:
             values = [r[name] for r in per_variant[variant] if name in r]
