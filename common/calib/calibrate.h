@@ -81,7 +81,7 @@ struct CameraCalibration {
   // 1-sigma projection uncertainty over the image (projection_uncertainty.h);
   // empty without covariance.
   ProjectionUncertainty uncertainty;
-  std::string init_method;                // ZhangIntrinsics' method
+  std::string init_method;                // PinholeInit::method (Zhang's, or the angle start's lens)
   BoardWarp board_warp;                   // the board the fit assumed (free: estimated)
   std::vector<double> board_warp_stddev;  // x2, y2; empty without covariance
   WarpChoice warp_choice;                 // --board-warp auto: this camera's views' decision

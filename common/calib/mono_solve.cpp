@@ -418,9 +418,8 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   const std::string what = p.name + " camera (" + ModelName(options.model) + ")";
   const int min_points = options.min_points_per_view;
 
-  // A pinhole on the central disc.
-  CameraBlock pinhole = PinholeBlock(options.model, options.spline, init.pinhole.fx, init.pinhole.fy,
-                                     init.pinhole.cx, init.pinhole.cy);
+  // The start's lens on the central disc, only fx fy cx cy free.
+  CameraBlock pinhole = StartCamera(init, p, options.model, options.spline);
   Inliers disc(p.views.size());
   bool everything = false;
   double fraction = 0.25;

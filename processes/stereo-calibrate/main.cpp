@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
                  "best")
       ->capture_default_str();
   app.add_option("--cv-folds", calib.cv_folds,
-                 "Folds of the cross-validation (held-out RMS, --knots auto); 0: none")
+                 "Folds of the cross-validation (held-out RMS, --knots auto; fewer with fewer than two views a fold); 0: none")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
   app.add_option("--smoothness", calib.spline.smoothness,

@@ -3,7 +3,7 @@
 // noise): the homography and Zhang's closed form (start/homography.h,
 // start/initialise.h), the board pose of one view with the camera fixed,
 // pinhole and fisheye past 90 degrees (start/pose_fit.h, start/ray_pose.h),
-// the equidistant fisheye start (start/equidistant_start.h),
+// the angle models' start (start/angle_start.h),
 // and the solver's problem (solver/problem.h): its shape and a solve from a
 // perturbed start back to the truth.
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 
 #include "calib/solver/camera_block.h"
 #include "calib/solver/problem.h"
-#include "calib/start/equidistant_start.h"
+#include "calib/start/angle_start.h"
 #include "calib/start/homography.h"
 #include "calib/start/initialise.h"
 #include "calib/start/pose_fit.h"
@@ -348,7 +348,7 @@ TEST(RefinePose, ReturnsTheTruePoseOfAFisheyeBoardPastNinetyDegrees) {
   EXPECT_LT((pose.t() - f.truth.t()).norm(), 1e-9);
 }
 
-TEST(EquidistantStart, FindsTheFocalLengthOfAnEquidistantFisheyeWithinItsGrid) {
+TEST(AngleStart, FindsTheFocalLengthOfAnEquidistantFisheyeWithinItsGrid) {
   const double f = 400;  // r = f theta: 90 degrees at 628 px, the image corners past 110
   const CameraBlock camera = PinholeBlock(ModelKind::kKb4, Spline(), f, f, kPinholeCx, kPinholeCy);
   const SyntheticRig rig = ExactRig(camera, 5);
@@ -356,10 +356,12 @@ TEST(EquidistantStart, FindsTheFocalLengthOfAnEquidistantFisheyeWithinItsGrid) {
   options.model = ModelKind::kKb4;
   const Prepared prepared = Prepare(rig.data.left, options);
   ASSERT_EQ(prepared.NumUsable(), 5);
-  std::vector<Pose> poses(5);
-  std::vector<bool> posed;
-  const PinholeInit init = EquidistantStart(prepared, 3, &poses, &posed);
+  const AngleStartFit start = AngleStart(prepared, 3);
+  const PinholeInit& init = start.pinhole;
+  const std::vector<Pose>& poses = start.poses;
+  const std::vector<bool>& posed = start.posed;
   // The search steps by 1 % about the best of a 10 % grid: within half a step.
+  EXPECT_EQ(start.lens, StartLens::kEquidistant);
   EXPECT_EQ(init.method, "equidistant");
   EXPECT_NEAR(init.fx, f, 0.006 * f);
   EXPECT_EQ(init.fy, init.fx);
@@ -373,6 +375,47 @@ TEST(EquidistantStart, FindsTheFocalLengthOfAnEquidistantFisheyeWithinItsGrid) {
     EXPECT_LT((poses[v].t() - rig.left_poses[v].t()).norm(), 5e-3) << "view " << v;
   }
   std::printf("equidistant start: f %.3f px (truth %.1f)\n", init.fx, f);
+}
+
+// A wide pinhole (f 500 px: 104 degrees across the 1280 px image), far
+// from any equidistant f.
+constexpr double kWideF = 500;
+
+TEST(AngleStart, ChoosesThePerspectiveLensForAWidePinhole) {
+  const CameraBlock camera =
+      PinholeBlock(ModelKind::kPoly6, Spline(), kWideF, kWideF, kPinholeCx, kPinholeCy);
+  const SyntheticRig rig = ExactRig(camera, 5);
+  CalibrationOptions options;
+  options.model = ModelKind::kKb4;
+  const AngleStartFit start = AngleStart(Prepare(rig.data.left, options), 3);
+  EXPECT_EQ(start.lens, StartLens::kPerspective);
+  EXPECT_EQ(start.pinhole.method, "perspective");
+  EXPECT_NEAR(start.pinhole.fx, kWideF, 0.006 * kWideF);
+  for (int v = 0; v < 5; ++v) EXPECT_LT(RotationError(start.poses[v], rig.left_poses[v]), 5e-3);
+}
+
+TEST(StartCamera, PutsAnAngleModelOnThePerspectiveLens) {
+  Init init;
+  init.pinhole = PinholeInit{kWideF, kWideF, kPinholeCx, kPinholeCy, "perspective"};
+  init.lens = StartLens::kPerspective;
+  Prepared prepared;
+  prepared.width = kWidth;
+  prepared.height = kHeight;
+  const double corner = std::atan(0.5 * std::hypot(kWidth, kHeight) / kWideF);
+  for (ModelKind kind : {ModelKind::kKb4, ModelKind::kBsplineTheta}) {
+    const CameraBlock camera = StartCamera(init, prepared, kind, Spline());
+    EXPECT_TRUE(camera.pinhole_only);
+    double worst = 0;  // pixels, against r = f tan(theta), out to the image's corner
+    for (double theta = 0.01; theta <= corner; theta += 0.01) {
+      const Eigen::Vector3d X(std::sin(theta), 0, std::cos(theta));
+      const auto pixel = ProjectPoint(camera, X);
+      ASSERT_TRUE(pixel) << ModelName(kind) << " theta " << theta;
+      worst = std::max(worst, std::abs(pixel->x() - kPinholeCx - kWideF * std::tan(theta)));
+    }
+    EXPECT_LT(worst, 1.0) << ModelName(kind);
+    std::printf("%s on the perspective lens: within %.3f px of f tan(theta) up to %.1f deg\n",
+                ModelName(kind).c_str(), worst, corner * 180 / M_PI);
+  }
 }
 
 // ------------------------------------------------------------------- problem

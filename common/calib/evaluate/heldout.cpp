@@ -126,7 +126,9 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
   views.erase(std::unique(views.begin(), views.end()), views.end());
   CrossValidation cv;
   const int n_cameras = int(solved.cameras.size());
-  if (folds < 2 || int(views.size()) < 2 * folds) return cv;
+  // Fewer views than two a fold: as many folds as there are pairs of views.
+  folds = std::min(folds, int(views.size()) / 2);
+  if (folds < 2) return cv;
   Problem problem = solved;
   const Linearisation lin = Linearise(problem, "cross-validation");
   const std::vector<PoseTerms> poses = PosesOf(problem, lin);

@@ -60,7 +60,9 @@ HeldOutFit FitHeldOutViews(const CameraModel& camera, const CameraData& views, i
 // a model far from the lens or not determined by its views reads higher,
 // since the step is not damped.
 struct CrossValidation {
-  int folds = 0;  // 0: not enough views (fewer than 2 per fold) or not asked
+  // The folds used: those asked for, fewer where there are fewer than two
+  // views a fold (one a pair of views); 0: fewer than 4 views, or not asked.
+  int folds = 0;
   // Per camera of the problem: the RMS of every held-out residual of every
   // fold, and each fold's own RMS (fold order; the fold-to-fold noise).
   std::vector<double> rms_px;

@@ -6,7 +6,6 @@
 
 #include "calib/solver/nonradial_prior.h"
 #include "calib/solver/smoothness_prior.h"
-#include "models/bspline_basis.h"
 
 namespace ws::calib {
 namespace {
@@ -18,24 +17,6 @@ CalibrationSetup SetupFor(const SplineOptions& spline, double r_max) {
   return CalibrationSetup{r_max, spline.knots.value() - 1, spline.degree};
 }
 
-// The estimated coefficients of the spline `to` whose D(r) is closest to
-// that of `from` (least squares at 200 radii over [0, r_max]).
-template <class Spline>
-std::vector<double> RefitSpline(const CameraBlock& from, const Spline& to, double r_max) {
-  const int samples = 200, n = to.NumCoeffs();
-  const int first = to.NumBasis() - n;  // alpha index of coeffs[0]
-  Eigen::MatrixXd A(samples, n);
-  Eigen::VectorXd b(samples);
-  for (int k = 0; k < samples; ++k) {
-    const double r = r_max * (k + 0.5) / samples;
-    const std::vector<double> basis = EvaluateBasis(to.knots(), to.degree(), r);
-    for (int j = 0; j < n; ++j) A(k, j) = basis[j + first];
-    b(k) = RadialDistortion(from, r);
-  }
-  const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
-  return std::vector<double>(x.data(), x.data() + n);
-}
-
 }  // namespace
 
 CameraBlock PinholeBlock(ModelKind kind, const SplineOptions& spline, double fx, double fy, double cx,
@@ -44,6 +25,27 @@ CameraBlock PinholeBlock(ModelKind kind, const SplineOptions& spline, double fx,
   camera.intrinsics = {fx, fy, cx, cy, 0, 0};
   camera.coeffs.assign(std::visit([](const auto& m) { return m.NumCoeffs(); }, camera.model), 0.0);
   camera.pinhole_only = true;
+  return camera;
+}
+
+CameraBlock WithRadialCurve(CameraBlock camera, const std::function<double(double)>& curve,
+                            double r_end) {
+  const int samples = 200, n = NumRadialCoeffs(camera);
+  std::fill_n(camera.coeffs.begin(), n, 0.0);
+  Eigen::MatrixXd A(samples, n);  // dD / d coeffs[j], D affine in them
+  Eigen::VectorXd b(samples);
+  for (int k = 0; k < samples; ++k) {
+    const double r = r_end * (k + 0.5) / samples;
+    const double offset = RadialDistortion(camera, r);
+    b(k) = curve(r) - offset;
+    for (int j = 0; j < n; ++j) {
+      camera.coeffs[j] = 1;
+      A(k, j) = RadialDistortion(camera, r) - offset;
+      camera.coeffs[j] = 0;
+    }
+  }
+  const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
+  std::copy_n(x.data(), n, camera.coeffs.begin());
   return camera;
 }
 
@@ -58,7 +60,11 @@ CameraBlock ForField(const CameraBlock& camera, const SplineOptions& spline, dou
         using Model = std::decay_t<decltype(model)>;
         if constexpr (kIsBspline<Model>) {
           const Model to = Model::ForCalibration(SetupFor(spline, r_max));
-          out.coeffs = RefitSpline(camera, to, r_max);
+          CameraBlock refit(to);
+          refit.coeffs.assign(to.NumCoeffs(), 0.0);
+          out.coeffs = WithRadialCurve(
+                           refit, [&](double r) { return RadialDistortion(camera, r); }, r_max)
+                           .coeffs;
           out.coeffs.insert(out.coeffs.end(), camera.coeffs.begin() + model.NumCoeffs(),
                             camera.coeffs.end());  // the field stays as it was
           out.model = to;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -41,6 +42,13 @@ struct CameraBlock {
 // std::bad_optional_access otherwise.
 CameraBlock PinholeBlock(ModelKind kind, const SplineOptions& spline, double fx, double fy, double cx,
                          double cy);
+
+// The same camera with the coefficients of its radial model whose D(r) is
+// closest to `curve` over (0, r_end] (least squares at 200 radii); its
+// field, if any, as it was. For the models whose D is affine in their
+// coefficients (the polynomials and the B-splines).
+CameraBlock WithRadialCurve(CameraBlock camera, const std::function<double(double)>& curve,
+                            double r_end);
 
 // The same camera with its model (and, for B-splines, knots) for the field
 // [0, r_max]: the distortion curve carried over by least squares (B-splines;

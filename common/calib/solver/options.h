@@ -156,8 +156,8 @@ struct CalibrationOptions {
   // final solve and the joint solve, held flat, or chosen (WarpRule).
   WarpRule board_warp = WarpRule::kAuto;
   // Folds of the cross-validation (heldout.h) after every solve and for
-  // --knots auto; 0 switches the held-out RMS off (auto then needs it: at
-  // least 2).
+  // --knots auto (fewer with fewer than two views a fold, heldout.h); 0
+  // switches the held-out RMS off (auto then needs it: at least 2).
   int cv_folds = 5;
   int max_iterations = 100;
   int grid_rows = 6, grid_cols = 8;  // the residual pattern per image region

@@ -1,10 +1,11 @@
 #include "calib/start/initialise.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "calib/solver/stage_log.h"
-#include "calib/start/equidistant_start.h"
+#include "calib/start/angle_start.h"
 #include "models/model_registry.h"
 #include "models/projection.h"
 
@@ -77,22 +78,24 @@ void RequireSpread(const Prepared& p, const std::vector<Pose>& used,
   throw CalibrationError(msg.str());
 }
 
-// An angle model's start (equidistant_start.h): every view the equidistant
-// camera can pose keeps its place.
+// An angle model's start (angle_start.h): every view its lens can pose
+// keeps its place.
 Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
+  AngleStartFit start = AngleStart(p, options.min_views);
   Init init;
-  std::vector<bool> posed;
-  init.pinhole = EquidistantStart(p, options.min_views, &init.poses, &posed);
+  init.pinhole = start.pinhole;
+  init.lens = start.lens;
+  init.poses = std::move(start.poses);
   std::vector<Pose> used;
   for (size_t v = 0; v < p.views.size(); ++v) {
     if (!p.usable[v]) continue;
-    if (!posed[v]) {
+    if (!start.posed[v]) {
       p.Skip(int(v), "no board pose fits the rays of its corners");
       continue;
     }
     used.push_back(init.poses[v]);
   }
-  Say(options, p.name + ": equidistant start from " + std::to_string(used.size()) +
+  Say(options, p.name + ": " + init.pinhole.method + " start from " + std::to_string(used.size()) +
                    " views: f " + Fixed(init.pinhole.fx, 2) + " cx " + Fixed(init.pinhole.cx, 2) +
                    " cy " + Fixed(init.pinhole.cy, 2));
   RequireViews(p, options.min_views);
@@ -143,6 +146,17 @@ Init Initialize(Prepared& p, const CalibrationOptions& options) {
   RequireViews(p, options.min_views);
   RequireSpread(p, used, options);
   return init;
+}
+
+CameraBlock StartCamera(const Init& init, const Prepared& p, ModelKind kind,
+                        const SplineOptions& spline) {
+  const PinholeInit& k = init.pinhole;
+  CameraBlock camera = PinholeBlock(kind, spline, k.fx, k.fy, k.cx, k.cy);
+  if (!Traits(kind).angle || init.lens != StartLens::kPerspective) return camera;
+  const double theta_end = std::atan(0.5 * std::hypot(p.width, p.height) / k.fx);
+  return WithRadialCurve(
+      camera, [](double theta) { return theta > 1e-9 ? std::tan(theta) / theta - 1 : 0.0; },
+      theta_end);
 }
 
 }  // namespace ws::calib
