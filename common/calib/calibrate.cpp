@@ -119,6 +119,16 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
 
 namespace {
 
+// A camera's noise level from its fit: the RMS per corner over the
+// degrees of freedom left, rms sqrt(n / (n - p)) for n coordinates and p
+// parameters (its own and its views' poses), the unbiased estimate of
+// least squares; infinite where the fit leaves none.
+double FittedNoise(const CameraCalibration& camera) {
+  const double n = 2.0 * camera.points;
+  const double p = double(camera.param_names.size()) + 6.0 * camera.views;
+  return n > p ? camera.rms_px * std::sqrt(n / (n - p)) : INFINITY;
+}
+
 // ModelCalibrations::chosen: of the models that use the most views (a held-out
 // RMS over fewer views, e.g. a pinhole model's that cannot reach past 90
 // degrees, is not comparable) and leave out no more corners as outliers than
@@ -126,11 +136,9 @@ namespace {
 // that cannot follow the lens leaves out the corners it misses, and would
 // be compared where it can), ordered by parameter count, each fold's RMS on
 // the corners they all kept (FoldRmsOnCommonCorners) pooled over the
-// cameras, ChooseWithinNoise.
+// cameras, ChooseWithinNoise. Where a model was not cross-validated (fewer
+// than 4 views), the one of the lowest FittedNoise, the cameras pooled.
 int ChooseModel(const std::vector<StereoCalibration>& solved) {
-  for (const auto& c : solved)
-    if (c.left.heldout_fold_rms_px.empty() || (!c.mono && c.right.heldout_fold_rms_px.empty()))
-      return 0;
   auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
   auto outliers = [](const StereoCalibration& c) {
     return c.left.outliers + (c.mono ? 0 : c.right.outliers);
@@ -147,6 +155,16 @@ int ChooseModel(const std::vector<StereoCalibration>& solved) {
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return solved[a].left.param_names.size() < solved[b].left.param_names.size();
   });
+  const bool cross_validated = std::all_of(solved.begin(), solved.end(), [](const auto& c) {
+    return !c.left.heldout_fold_rms_px.empty() && (c.mono || !c.right.heldout_fold_rms_px.empty());
+  });
+  if (!cross_validated) {
+    auto noise = [](const StereoCalibration& c) {
+      return c.mono ? FittedNoise(c.left) : std::hypot(FittedNoise(c.left), FittedNoise(c.right));
+    };
+    return *std::min_element(order.begin(), order.end(),
+                             [&](int a, int b) { return noise(solved[a]) < noise(solved[b]); });
+  }
   std::vector<std::vector<double>> folds;
   for (const bool right : {false, true}) {
     if (right && solved.front().mono) break;

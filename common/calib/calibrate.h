@@ -137,8 +137,10 @@ struct ModelCalibrations {
   // the most views (and leave out no more outliers than the fewest plus
   // their Poisson noise), the fewest parameters (per camera) whose held-out
   // RMS (both cameras' folds pooled, on the corners all kept) is within the
-  // fold-to-fold noise of the lowest (ChooseWithinNoise, heldout.h); the
-  // first solved when any was not cross-validated. With a non-radial field
+  // fold-to-fold noise of the lowest (ChooseWithinNoise, heldout.h). Where
+  // one was not cross-validated (fewer than 4 views), the one of the lowest
+  // RMS over the degrees of freedom left, rms sqrt(n / (n - p)), the
+  // cameras pooled. With a non-radial field
   // asked for, the models are compared without one and the chosen model is
   // then solved again with it (options.h, FieldRule).
   int chosen = 0;
