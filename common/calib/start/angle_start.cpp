@@ -5,6 +5,7 @@
 
 #include "calib/solver/quality.h"
 #include "calib/start/ray_pose.h"
+#include "models/radial_coordinate.h"
 
 namespace ws::calib {
 namespace {
@@ -15,19 +16,11 @@ struct Fit {
   std::vector<bool> posed;
 };
 
-// theta of an ideal radius x = r / f, and r / f of a ray at theta from the
-// axis (infinite where the lens has no image of it).
-double Theta(StartLens lens, double x) {
-  return lens == StartLens::kEquidistant ? x : std::atan(x);
-}
-double Height(StartLens lens, double theta) {
-  if (lens == StartLens::kEquidistant) return theta;
-  return theta < M_PI / 2 ? std::tan(theta) : std::numeric_limits<double>::infinity();
-}
-
-// Every usable view posed under the lens (f, c).
-Fit Evaluate(const Prepared& p, StartLens lens, double f, const Eigen::Vector2d& c,
-             int min_views) {
+// Every usable view posed under the lens (f, c): Coordinate's camera with
+// D = 0 (radial_coordinate.h: Theta, the equidistant fisheye; TanTheta, the
+// pinhole).
+template <class Coordinate>
+Fit EvaluateOn(const Prepared& p, double f, const Eigen::Vector2d& c, int min_views) {
   Fit fit;
   fit.poses.resize(p.views.size());
   fit.posed.assign(p.views.size(), false);
@@ -37,23 +30,24 @@ Fit Evaluate(const Prepared& p, StartLens lens, double f, const Eigen::Vector2d&
     const BoardView& view = p.views[v];
     std::vector<Eigen::Vector3d> object, rays;
     for (int i = 0; i < view.size(); ++i) {
-      const Eigen::Vector2d x = (view.image[i] - c) / f;  // (r / f) (cos phi, sin phi)
-      const double theta = Theta(lens, x.norm());
-      if (!(theta < M_PI)) continue;
-      const double scale = x.norm() > 1e-12 ? std::sin(theta) / x.norm() : 1.0;
+      const Eigen::Vector2d ideal = (view.image[i] - c) / f;
+      Eigen::Vector3d ray;
+      if (!Coordinate::Ray(ideal.data(), ray.data())) continue;
       object.push_back(view.object[i]);
-      rays.emplace_back(scale * x.x(), scale * x.y(), std::cos(theta));
+      rays.push_back(ray);
     }
     const auto pose = PoseFromRays(object, rays);
     if (!pose) continue;
     double sum = 0;
-    for (int i = 0; i < view.size(); ++i) {
+    for (int i = 0; i < view.size() && std::isfinite(sum); ++i) {
       const Eigen::Vector3d X = *pose * view.object[i];
-      const double rho = X.head<2>().norm();
-      const double scale = rho > 0 ? f * Height(lens, std::atan2(rho, X.z())) / rho : 0.0;
-      sum += (c + scale * X.head<2>() - view.image[i]).squaredNorm();
+      Eigen::Vector2d ideal;
+      if (Coordinate::Ideal(X.data(), ideal.data()))
+        sum += (c + f * ideal - view.image[i]).squaredNorm();
+      else  // a corner the lens cannot see
+        sum = std::numeric_limits<double>::infinity();
     }
-    if (!std::isfinite(sum)) continue;  // a corner the lens cannot see
+    if (!std::isfinite(sum)) continue;
     fit.poses[v] = *pose;
     fit.posed[v] = true;
     rms.push_back(std::sqrt(sum / view.size()));
@@ -61,6 +55,12 @@ Fit Evaluate(const Prepared& p, StartLens lens, double f, const Eigen::Vector2d&
   if (static_cast<int>(rms.size()) < min_views) return fit;
   fit.score = Median(rms);
   return fit;
+}
+
+Fit Evaluate(const Prepared& p, StartLens lens, double f, const Eigen::Vector2d& c,
+             int min_views) {
+  return lens == StartLens::kEquidistant ? EvaluateOn<Theta>(p, f, c, min_views)
+                                         : EvaluateOn<TanTheta>(p, f, c, min_views);
 }
 
 }  // namespace
