@@ -5,7 +5,12 @@
 #include <climits>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <map>
+#include <mutex>
+#include <optional>
+#include <opencv2/core/utility.hpp>
+#include <numeric>
 #include <stdexcept>
 
 #include "calib/camera_result.h"
@@ -82,22 +87,32 @@ OutlierRule ParseOutlierRule(const std::string& value, double* sigma) {
   return OutlierRule::kSigma;
 }
 
-CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options) {
-  CheckOptions(options);
+namespace {
+
+// The wall-clock seconds since `start`.
+double Seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One camera with the model of `plan`.
+CameraCalibration SolveCamera(const CameraData& data, const CalibrationOptions& options,
+                              const ModelPlan& plan) {
   MonoState state;
-  SolveMono(data, ExtentOf({&data}), options, &state);
+  SolveMono(data, ExtentOf({&data}), options, plan, &state);
   CameraCalibration result =
       CameraResult(state.problem, 0, state.prepared, state.outcome, state.init_method, options);
   result.knot_curve = state.knot_curve;
   result.warp_choice = state.warp_choice;
   result.field_curve = state.field_curve;
   result.field_chosen = state.field_chosen;
+  result.selections = state.selections;
   SetHeldOut(HeldOut(state, options), 0, &result);
   return result;
 }
 
-StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options) {
-  CheckOptions(options);
+// The rig (or its one camera) with the model of `plan`.
+StereoCalibration SolveModel(const StereoData& data, const CalibrationOptions& options,
+                             const ModelPlan& plan) {
   const auto start = std::chrono::steady_clock::now();
   // No right image at all (not merely no board in it): a one-camera rig.
   const bool mono = data.right.image_width == 0 &&
@@ -105,16 +120,27 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
                                 [](const BoardView& view) { return view.empty(); });
   StereoCalibration result;
   if (mono) {
-    result.model = options.model;
+    result.model = plan.model;
     result.mono = true;
-    result.left = CalibrateCamera(data.left, options);
+    result.left = SolveCamera(data.left, options, plan);
     result.rms_px = result.left.rms_px;  // the rig's RMS is its one camera's
   } else {
-    result = SolveStereo(data, options);
+    result = SolveStereo(data, options, plan);
   }
-  result.solve_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.solve_seconds = Seconds(start);
   return result;
+}
+
+}  // namespace
+
+CameraCalibration CalibrateCamera(const CameraData& data, const CalibrationOptions& options) {
+  CheckOptions(options);
+  return SolveCamera(data, options, PlanAsAsked(options));
+}
+
+StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptions& options) {
+  CheckOptions(options);
+  return SolveModel(data, options, PlanAsAsked(options));
 }
 
 namespace {
@@ -129,48 +155,37 @@ double FittedNoise(const CameraCalibration& camera) {
   return n > p ? camera.rms_px * std::sqrt(n / (n - p)) : INFINITY;
 }
 
-// ModelCalibrations::chosen: of the models that use the most views (a held-out
-// RMS over fewer views, e.g. a pinhole model's that cannot reach past 90
-// degrees, is not comparable) and leave out no more corners as outliers than
-// the fewest any of them does plus its Poisson noise (3 sqrt(n + 1): a model
-// that cannot follow the lens leaves out the corners it misses, and would
-// be compared where it can), ordered by parameter count, each fold's RMS on
-// the corners they all kept (FoldRmsOnCommonCorners) pooled over the
-// cameras, ChooseWithinNoise. Where a model was not cross-validated (fewer
-// than 4 views), the one of the lowest FittedNoise, the cameras pooled.
-int ChooseModel(const std::vector<StereoCalibration>& solved) {
+// ModelCalibrations::model_selection: the rule of selection.h over the
+// models solved, in order of their parameters per camera, each fold's RMS
+// on the held-out corners they all kept (FoldRmsOnCommonCorners: their
+// outliers are part of each fit, never a criterion) pooled over the
+// cameras. A model that uses fewer views than another is not scored: it
+// predicts nothing of the views it cannot use (a pinhole model's past 90
+// degrees), so it cannot be scored on the same corners. Where nothing was
+// cross-validated (fewer than 4 views), the lowest FittedNoise, the
+// cameras pooled. The models that failed are listed with their error.
+Selection ChooseModel(const std::vector<StereoCalibration>& solved,
+                      const std::vector<ModelFailure>& failed) {
   auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
-  auto outliers = [](const StereoCalibration& c) {
-    return c.left.outliers + (c.mono ? 0 : c.right.outliers);
-  };
   int most = 0;
   for (const auto& c : solved) most = std::max(most, views(c));
-  int fewest = INT_MAX;
-  for (const auto& c : solved)
-    if (views(c) == most) fewest = std::min(fewest, outliers(c));
-  std::vector<int> order;
-  for (size_t i = 0; i < solved.size(); ++i)
-    if (views(solved[i]) == most && outliers(solved[i]) <= fewest + 3 * std::sqrt(fewest + 1.0))
-      order.push_back(int(i));
+  std::vector<int> order(solved.size());
+  std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return solved[a].left.param_names.size() < solved[b].left.param_names.size();
   });
   const bool cross_validated = std::all_of(solved.begin(), solved.end(), [](const auto& c) {
     return !c.left.heldout_fold_rms_px.empty() && (c.mono || !c.right.heldout_fold_rms_px.empty());
   });
-  if (!cross_validated) {
-    auto noise = [](const StereoCalibration& c) {
-      return c.mono ? FittedNoise(c.left) : std::hypot(FittedNoise(c.left), FittedNoise(c.right));
-    };
-    return *std::min_element(order.begin(), order.end(),
-                             [&](int a, int b) { return noise(solved[a]) < noise(solved[b]); });
-  }
   std::vector<std::vector<double>> folds;
+  int corners = 0;
   for (const bool right : {false, true}) {
-    if (right && solved.front().mono) break;
-    std::vector<const std::vector<HeldOutCorner>*> corners;
-    for (int i : order) corners.push_back(&(right ? solved[i].right : solved[i].left).heldout_corners);
-    const auto rms = FoldRmsOnCommonCorners(corners, 0);
+    if (!cross_validated || (right && solved.front().mono)) break;
+    std::vector<const std::vector<HeldOutCorner>*> held;
+    for (int i : order) held.push_back(&(right ? solved[i].right : solved[i].left).heldout_corners);
+    int common = 0;
+    const auto rms = FoldRmsOnCommonCorners(held, 0, &common);
+    corners += common;
     if (!right) {
       folds = rms;
       continue;
@@ -179,7 +194,52 @@ int ChooseModel(const std::vector<StereoCalibration>& solved) {
       for (size_t k = 0; k < folds[i].size() && k < rms[i].size(); ++k)
         folds[i][k] = std::hypot(folds[i][k], rms[i][k]) / std::sqrt(2.0);
   }
-  return order[ChooseWithinNoise(folds)];
+  std::vector<Candidate> candidates;
+  for (size_t j = 0; j < order.size(); ++j) {
+    const StereoCalibration& c = solved[order[j]];
+    Candidate candidate;
+    candidate.name = ModelName(c.model);
+    candidate.parameters = int(c.left.param_names.size());
+    if (views(c) < most) {
+      candidate.failed = "uses " + std::to_string(views(c)) + " of the " + std::to_string(most) +
+                         " views another model uses";
+    } else if (!cross_validated) {
+      candidate.failed = "too few views to hold any out";
+    } else {
+      candidate.fold_rms_px = folds[j];
+      double sum = 0;
+      for (double f : folds[j]) sum += f * f;
+      candidate.heldout_rms_px = std::sqrt(sum / double(std::max<size_t>(folds[j].size(), 1)));
+      candidate.corners = corners;
+    }
+    candidates.push_back(candidate);
+  }
+  for (const ModelFailure& f : failed) candidates.push_back({f.model, 0, -1, {}, 0, f.error});
+  Selection selection = Select("", "model", candidates);
+  if (!cross_validated && !solved.empty()) {
+    auto noise = [](const StereoCalibration& c) {
+      return c.mono ? FittedNoise(c.left) : std::hypot(FittedNoise(c.left), FittedNoise(c.right));
+    };
+    int lowest = -1;
+    for (size_t j = 0; j < order.size(); ++j)
+      if (views(solved[order[j]]) == most &&
+          (lowest < 0 || noise(solved[order[j]]) < noise(solved[order[lowest]])))
+        lowest = int(j);
+    selection.chosen = selection.best = lowest;
+    selection.why = "fewer than 4 views, so none can be held out: the lowest RMS over the "
+                    "degrees of freedom left, rms sqrt(n / (n - p)), " +
+                    Fixed(noise(solved[order[lowest]])) + " px";
+  }
+  return selection;
+}
+
+// The index into `solved` of the model `selection` chose (solved in the
+// order of ChooseModel's candidates, by parameters).
+int SolvedIndex(const std::vector<StereoCalibration>& solved, const Selection& selection) {
+  const std::string& name = selection.candidates.at(size_t(selection.chosen)).name;
+  for (size_t i = 0; i < solved.size(); ++i)
+    if (ModelName(solved[i].model) == name) return int(i);
+  return 0;
 }
 
 }  // namespace
@@ -187,51 +247,70 @@ int ChooseModel(const std::vector<StereoCalibration>& solved) {
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
                                            const std::vector<ModelKind>& kinds) {
+  CheckOptions(options);
+  const auto start = std::chrono::steady_clock::now();
   ModelCalibrations results;
   // Several models are compared radially; the chosen one then gets its
   // non-radial field.
   const bool field_after = kinds.size() > 1 && options.nonradial != FieldRule::kNone;
-  for (const auto& kind : kinds) {
-    CalibrationOptions o = options;
-    o.model = kind;
-    if (field_after) o.nonradial = FieldRule::kNone;
-    try {
-      results.solved.push_back(CalibrateStereo(data, o));
-    } catch (const CalibrationError& e) {
-      results.failed.push_back({ModelName(kind), e.what()});
+  // The models on every core at once (a model's two cameras then run one
+  // after the other: OpenCV runs a nested parallel region in turn), each
+  // result in its place; the progress lines serialised.
+  std::vector<std::optional<StereoCalibration>> solved(kinds.size());
+  std::vector<std::string> errors(kinds.size());
+  std::exception_ptr stopped;
+  std::mutex done_mutex;
+  int done = 0;
+  cv::parallel_for_(cv::Range(0, int(kinds.size())), [&](const cv::Range& range) {
+    for (int k = range.start; k < range.end; ++k) {
+      try {
+        solved[size_t(k)] = SolveModel(
+            data, options, {kinds[size_t(k)], field_after ? FieldRule::kNone : options.nonradial});
+      } catch (const CalibrationError& e) {
+        errors[size_t(k)] = e.what();
+      } catch (...) {  // Stopped: the run ends
+        std::lock_guard<std::mutex> lock(done_mutex);
+        stopped = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(done_mutex);
+      const int finished = ++done;
+      Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
+                       " solved (" + ModelName(kinds[size_t(k)]) + "), about " +
+                       Fixed(Seconds(start) / finished * double(int(kinds.size()) - finished), 0) +
+                       " s left" + (field_after ? " before the chosen model's non-radial part" : ""));
     }
+  }, double(kinds.size()));
+  if (stopped) std::rethrow_exception(stopped);
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    if (solved[k])
+      results.solved.push_back(std::move(*solved[k]));
+    else
+      results.failed.push_back({ModelName(kinds[k]), errors[k]});
   }
-  if (results.solved.empty() && !results.failed.empty())
+  if (results.solved.empty() && results.failed.size() == 1)
     throw CalibrationError(results.failed.front().error);
-  results.chosen = ChooseModel(results.solved);
+  if (results.solved.empty() && !results.failed.empty()) {
+    std::string why = "no model could be solved:";
+    for (const ModelFailure& f : results.failed) why += " " + f.model + ": " + f.error + ";";
+    why.back() = '.';
+    throw CalibrationError(why);
+  }
+  results.model_selection = ChooseModel(results.solved, results.failed);
+  results.chosen = SolvedIndex(results.solved, results.model_selection);
   if (field_after && !results.solved.empty()) {
-    CalibrationOptions o = options;
-    o.model = results.solved[results.chosen].model;
+    const ModelKind chosen = results.solved[results.chosen].model;
     try {
-      results.solved[results.chosen] = CalibrateStereo(data, o);
+      results.solved[results.chosen] = SolveModel(data, options, {chosen, options.nonradial});
     } catch (const CalibrationError& e) {  // the radial solution stands
-      results.failed.push_back({ModelName(o.model) + " with a non-radial field", e.what()});
+      results.failed.push_back({ModelName(chosen) + " with a non-radial field", e.what()});
     }
   }
+  results.solve_seconds = Seconds(start);
   return results;
 }
 
 const StereoCalibration& Chosen(const ModelCalibrations& calibrations) {
   return calibrations.solved.at(calibrations.chosen);
-}
-
-std::string KnotChoiceLine(const CameraCalibration& camera) {
-  char buf[64];
-  std::string curve;
-  for (const KnotTrial& t : camera.knot_curve) {
-    std::snprintf(buf, sizeof buf, "%s%d: %.4f", curve.empty() ? "" : ", ", t.knots,
-                  t.heldout_rms_px);
-    curve += buf;
-  }
-  return camera.name + ": " + std::to_string(int(camera.param_names.size()) - 6) +
-         " coefficients chosen by " + std::to_string(camera.heldout_fold_rms_px.size()) +
-         "-fold cross-validation (the fewest within the fold-to-fold noise of the lowest "
-         "held-out RMS); held-out RMS per count " + curve + " px";
 }
 
 std::string OutlierLine(const CameraCalibration& camera) {
@@ -244,18 +323,6 @@ std::string OutlierLine(const CameraCalibration& camera) {
       views += (views.empty() ? "" : ", ") + std::to_string(view) + " (" + std::to_string(count) + ")";
   return camera.name + ": " + std::to_string(camera.outliers) +
          " corners left out as outliers, in views " + views;
-}
-
-std::string WarpChoiceLine(const CameraCalibration& camera) {
-  const WarpChoice& w = camera.warp_choice;
-  if (!w.made) return "";
-  auto mm = [&](int k) {
-    return Fixed(1e3 * w.estimated[k], 3) +
-           (w.stddev.size() == 2 ? " +- " + Fixed(1e3 * w.stddev[k], 3) : "") + " mm";
-  };
-  return camera.name + ": board bow " + (w.kept ? "kept" : "left out") + " (held-out RMS " +
-         Fixed(w.warped_heldout_px) + " px with it, " + Fixed(w.flat_heldout_px) +
-         " px flat), x2 " + mm(0) + ", y2 " + mm(1);
 }
 
 std::string UncertaintyLine(const CameraCalibration& camera) {

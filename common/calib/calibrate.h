@@ -24,6 +24,7 @@
 
 #include "calib/evaluate/heldout_corner.h"
 #include "calib/evaluate/projection_uncertainty.h"
+#include "calib/evaluate/selection.h"
 #include "calib/solver/board_warp.h"
 #include "calib/solver/calib_data.h"
 #include "calib/solver/options.h"
@@ -78,6 +79,7 @@ struct CameraCalibration {
   std::vector<std::string> skipped;       // why views were not used ("view 3: ...")
   std::vector<std::string> param_names;   // fx fy cx cy p1 p2, then the model's coefficients
   std::vector<double> stddev;             // same order; empty without covariance
+  std::vector<Selection> selections;      // every choice made for this camera (selection.h)
   // 1-sigma projection uncertainty over the image (projection_uncertainty.h);
   // empty without covariance.
   ProjectionUncertainty uncertainty;
@@ -105,6 +107,10 @@ struct StereoCalibration {
   // between the exposures, a misordered right image): out of R, T, each
   // camera keeps its view.
   std::vector<int> inconsistent_views;
+  // The joint solve asked for and left out (sharing the board poses
+  // worsened the cameras' fit beyond chance: pairs not exposed together):
+  // each camera from its own views, flow kPaper.
+  bool joint_left_out = false;
   // Views whose right image numbered a symmetric board's corners from the
   // other end (half_turn.h): renumbered, not fitted.
   std::vector<int> half_turned_views;
@@ -133,32 +139,24 @@ struct ModelFailure {
 struct ModelCalibrations {
   std::vector<StereoCalibration> solved;  // in the order asked
   std::vector<ModelFailure> failed;
-  // The one published and written to --out: of the solved ones that use
-  // the most views (and leave out no more outliers than the fewest plus
-  // their Poisson noise), the fewest parameters (per camera) whose held-out
-  // RMS (both cameras' folds pooled, on the corners all kept) is within the
-  // fold-to-fold noise of the lowest (ChooseWithinNoise, heldout.h). Where
-  // one was not cross-validated (fewer than 4 views), the one of the lowest
-  // RMS over the degrees of freedom left, rms sqrt(n / (n - p)), the
-  // cameras pooled. With a non-radial field
+  // The one published and written to --out, by the rule of selection.h
+  // (model_selection says how): of the models that use the most views, in
+  // order of parameters per camera, their held-out RMS both cameras' folds
+  // pooled, on the corners all kept. Where one was not cross-validated (fewer than 4 views),
+  // the one of the lowest RMS over the degrees of freedom left,
+  // rms sqrt(n / (n - p)), the cameras pooled. With a non-radial field
   // asked for, the models are compared without one and the chosen model is
   // then solved again with it (options.h, FieldRule).
   int chosen = 0;
+  Selection model_selection;
+  double solve_seconds = 0;  // wall clock of the whole, the models solved at once
+
 };
 const StereoCalibration& Chosen(const ModelCalibrations& calibrations);
-
-// "left: 16 coefficients chosen by 5-fold cross-validation; held-out RMS per
-// count 7: 0.0513, 9: 0.0434, ... px" (--knots auto).
-std::string KnotChoiceLine(const CameraCalibration& camera);
 
 // "left: 51 corners left out as outliers (Chauvenet's criterion, options.h),
 // in views 3 (2), 7 (5), ..."; "" when none were.
 std::string OutlierLine(const CameraCalibration& camera);
-
-// "left: board bow kept (held-out RMS 0.2781 px with it, 0.2803 px flat),
-// x2 0.34 +- 0.05 mm, y2 -0.99 +- 0.06 mm" (--board-warp auto); "" when no
-// choice was made.
-std::string WarpChoiceLine(const CameraCalibration& camera);
 
 // "left: projection uncertainty (1 sigma, worst direction) median 0.012 px,
 // worst 0.045 px over the 412 observed cells of 32 x 24"
@@ -171,7 +169,8 @@ double HeldOutRms(const StereoCalibration& calibration);
 
 // The same data solved with each model kind in turn (Table II and the
 // curves), and the one to publish chosen. A model that fails is reported in `failed` and the others are
-// still solved; throws the first model's CalibrationError when every one fails.
+// still solved; when every one fails, throws a CalibrationError naming each
+// model and why it failed.
 ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
                                            const CalibrationOptions& options,
                                            const std::vector<ModelKind>& kinds);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "calib/evaluate/heldout.h"
 #include "calib/solver/corner_noise.h"
@@ -79,23 +80,24 @@ void DropBadViews(const std::vector<bool>& good, Inliers* mask) {
     if (!good[v]) std::fill((*mask)[v].begin(), (*mask)[v].end(), 0);
 }
 
-SolveSettings StageSettings(const CalibrationOptions& options, const std::string& what,
-                            int max_iterations) {
-  return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
-}
-
-// The last stages on every inlier corner: the camera's final problem (and
-// the board's warp with WarpRule::kEstimated), solved with outlier
-// rejection (and standard deviations).
-void SolveAll(const CameraBlock& camera, const CalibrationOptions& options, const std::string& what,
-              MonoState* s) {
+// The last stages on every inlier corner: the camera's final problem (the
+// board's warp free or held), solved as `settings` say (outlier
+// rejection, standard deviations).
+void SolveAll(const CameraBlock& camera, const RejectionSettings& settings, bool warp_free,
+              const CalibrationOptions& options, MonoState* s) {
   s->problem = MaskedProblem(camera, s, &s->inliers, 1);
-  s->problem.warp.free = options.board_warp == WarpRule::kEstimated;
-  s->outcome = SolveWithRejection(s->problem, options, what);
+  s->problem.warp.free = warp_free;
+  s->outcome = SolveWithRejection(s->problem, settings);
   s->warp = s->problem.warp;
   if (s->warp.free)
-    Say(options, what + ": board bow x2 " + Fixed(1e3 * s->warp.data[0], 3) + " mm, y2 " +
-                     Fixed(1e3 * s->warp.data[1], 3) + " mm");
+    Say(options, settings.solve.what + ": board bow x2 " + Fixed(1e3 * s->warp.data[0], 3) +
+                     " mm, y2 " + Fixed(1e3 * s->warp.data[1], 3) + " mm");
+}
+
+// The board's bow as the options ask it held in the stages before it is
+// chosen: free only where it is always estimated.
+bool WarpAlwaysFree(const CalibrationOptions& options) {
+  return options.board_warp == WarpRule::kEstimated;
 }
 
 // A final solve of the camera and its cross-validation, kept aside while
@@ -139,35 +141,43 @@ FinalSolve SolveCandidate(const CameraBlock& camera, bool warp_free,
   return Keep(*s);
 }
 
-// Of candidates solved on the same corners, the simplest first, the one
-// ChooseWithinNoise keeps by their per-fold held-out RMS.
-int ChooseCandidate(const std::vector<FinalSolve>& candidates) {
-  std::vector<std::vector<double>> folds;
-  for (const FinalSolve& c : candidates) folds.push_back(c.heldout.fold_rms_px[0]);
-  return ChooseWithinNoise(folds);
+// A final solve as a candidate of selection.h: its parameters (the
+// camera's, and the bow's where free) and its cross-validation.
+Candidate AsCandidate(const std::string& name, const FinalSolve& solve) {
+  return Scored(name, int(ParamNames(solve.camera).size()) + (solve.warp.free ? 2 : 0),
+                solve.heldout, 0);
+}
+
+// A choice made: its lines in the progress, its record in the state.
+const Selection& Record(const CalibrationOptions& options, Selection selection, MonoState* s) {
+  for (const std::string& line : SelectionLines(selection)) Say(options, line);
+  s->selections.push_back(std::move(selection));
+  return s->selections.back();
 }
 
 // --board-warp auto (options.h, WarpRule::kAuto): the solved flat camera
 // solved again with the board's bow free on the same corners, both
-// cross-validated on the same folds; the bow is kept only where
-// ChooseWithinNoise prefers it to the flat board.
+// cross-validated on the same folds; the bow is kept where the rule of
+// selection.h prefers it to the flat board.
 void ChooseWarp(const CalibrationOptions& options, const std::string& what, MonoState* s) {
   if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
   if (!s->heldout.folds) return;  // too few views to cross-validate: the board stays flat
   const FinalSolve flat = Keep(*s);
   const FinalSolve warped = SolveCandidate(flat.camera, true, options, what + " with the bow", s);
+  const Selection& selection =
+      Record(options,
+             Select(s->prepared.name, "board bow",
+                    {AsCandidate("the board flat", flat), AsCandidate("the board bowed", warped)}),
+             s);
   WarpChoice& choice = s->warp_choice;
-  choice.made = warped.heldout.folds == flat.heldout.folds;
+  choice.made = selection.candidates[1].failed.empty();
   choice.flat_heldout_px = flat.heldout.rms_px[0];
   choice.warped_heldout_px = warped.heldout.folds ? warped.heldout.rms_px[0] : -1;
   choice.estimated = warped.warp.data;
   SolveOutcome with_stddev;
   EstimateStddev(s->problem, StageSettings(options, what, options.max_iterations), &with_stddev);
   choice.stddev = with_stddev.stddev_warp;
-  choice.kept = choice.made && ChooseCandidate({flat, warped}) == 1;
-  Say(options, what + ": board bow " + (choice.kept ? "kept" : "left out") + ", held-out RMS " +
-                   Fixed(choice.warped_heldout_px) + " px with it, " +
-                   Fixed(choice.flat_heldout_px) + " px flat");
+  choice.kept = choice.made && selection.chosen == 1;
   if (!choice.kept) Restore(flat, s);
 }
 
@@ -197,32 +207,30 @@ FieldTrial Trial(bool tilt, int cols, int rows, double lambda) {
   return t;
 }
 
-// Whether `candidate` predicts worse than `best` beyond the fold-to-fold
-// noise: the mean of the paired per-fold differences exceeds its standard
-// error (the mirror of ChooseWithinNoise's test).
+// Whether `candidate` predicts worse than `best` beyond the spread of
+// selection.h (the rule would not take it even as the simpler).
 bool WorseBeyondNoise(const FinalSolve& candidate, const FinalSolve& best) {
-  return ChooseCandidate({candidate, best}) == 1;  // not even the simpler within the noise
+  return Select("", "", {AsCandidate("", candidate), AsCandidate("", best)}).chosen == 1;
 }
 
-// --nonradial (options.h, FieldRule): a given tilt and grid; or, auto, the
-// sensor tilt solved from the radial camera and kept if it beats none
-// beyond the fold-to-fold noise (ChooseWithinNoise of the two); then,
-// where the held-out RMS exceeds the corners' own noise by more than it
-// resolves (else there is nothing for a field to take up), on top of what
-// that kept and solved from it with F = 0 on the same corners,
-// fields cross-validated in two ladders: the finest grid of kFieldLadder at
-// each smoothness weight of kFieldSmoothnessLadder, smooth to rough; then
+// --nonradial (options.h, FieldRule): a given tilt and grid; or, auto, by
+// the rule of selection.h: the sensor tilt solved from the radial camera
+// against none; then, on top of what that kept and solved from it with
+// F = 0 on the same corners, fields cross-validated in two ladders: the
+// finest grid of kFieldLadder at each smoothness weight of
+// kFieldSmoothnessLadder, smooth to rough, each from the one before; then
 // the coarser grids at the weight that predicted best. Each ladder stops
-// once two trials in a row predict worse than the best so far beyond the
-// fold-to-fold noise (the held-out RMS need not fall steadily: a grid whose
-// knots miss the pattern can do worse than a coarser one). The field of the
-// lowest held-out RMS is kept if it beats no field beyond that noise and by
-// more than the held-out RMS resolves (HeldOutResolution): hundreds of
-// weakly held coefficients are not worth a gain no fresh set of corners
-// would show (on the simulator's radially symmetric lenses a field gained
-// 0.00002 px of held-out RMS, consistently over the folds, and moved the
+// once two trials in a row predict worse than its best beyond the folds'
+// spread (the held-out RMS need not fall steadily: a grid whose knots miss
+// the pattern can do worse than a coarser one). The field of the lowest
+// held-out RMS is then weighed against none by the rule. No field is tried
+// where the held-out RMS exceeds the corners' own noise by no more than it
+// resolves (Resolution, selection.h): there is nothing for a field to take
+// up (on the simulator's radially symmetric lenses a field gained 0.00002
+// px of held-out RMS, consistently over the folds, and moved the
 // projection 0.01 px further from the truth).
-void ChooseField(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::string& what,
+                 MonoState* s) {
   const Prepared& p = s->prepared;
   const bool warp_free = s->warp.free;
   auto name = [](const FieldTrial& t) {
@@ -231,27 +239,35 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
     return t.cols == 0 ? std::string(t.tilt ? "the sensor tilt" : "none")
                        : (t.tilt ? "the sensor tilt and a " : "a ") + grid;
   };
-  auto solve = [&](const CameraBlock& from, const FieldTrial& t) {
-    return SolveCandidate(
-        WithNonRadialField(from, t.cols, t.rows, t.tilt, p.width, p.height, t.smoothness),
-        warp_free, options, what + " with " + name(t), s);
+  // The field t added to `from` (its rectangle and prior at from's
+  // parameters) and solved; with `start`, a solve of the same grid, from
+  // that solution (the same problem, a nearer start: it converges in fewer
+  // steps).
+  auto solve = [&](const CameraBlock& from, const FieldTrial& t, const CameraBlock* start) {
+    CameraBlock camera = WithNonRadialField(from, t.cols, t.rows, t.tilt, p.width, p.height, t.smoothness);
+    if (start) {
+      camera.intrinsics = start->intrinsics;
+      camera.coeffs = start->coeffs;
+    }
+    return SolveCandidate(camera, warp_free, options, what + " with " + name(t), s);
   };
   const double given = options.spline.smoothness;
-  if (options.nonradial == FieldRule::kGrid) {
+  if (rule == FieldRule::kGrid) {
     solve(s->problem.cameras[0],
-          Trial(options.field_tilt, options.field_cols, options.field_rows, given));
+          Trial(options.field_tilt, options.field_cols, options.field_rows, given), nullptr);
     return;
   }
   if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
   if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
   // A candidate solved: kept where the views hold it (every fold solved,
-  // a finite held-out RMS), with its point on the field curve.
+  // a finite held-out RMS), with its point on the field curve (the same
+  // index in both).
   std::vector<FinalSolve> candidates = {Keep(*s)};
   s->field_curve.push_back({false, 0, 0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0],
                            s->heldout.fold_rms_px[0]});
-  auto tried = [&](const CameraBlock& from, FieldTrial t) {
+  auto tried = [&](const CameraBlock& from, FieldTrial t, const CameraBlock* start = nullptr) {
     try {
-      candidates.push_back(solve(from, t));
+      candidates.push_back(solve(from, t, start));
     } catch (const CalibrationError& e) {
       Say(options, what + " with " + name(t) + ": " + e.what());
       return false;
@@ -264,14 +280,13 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
     t.heldout_rms_px = s->heldout.rms_px[0];
     t.fold_rms_px = s->heldout.fold_rms_px[0];
     s->field_curve.push_back(t);
-    Say(options, what + " with " + name(t) + ": rms " + Fixed(t.rms_px) + " px, held-out " +
-                     Fixed(t.heldout_rms_px) + " px");
     return true;
   };
-  // The tilt: kept where it predicts better than none beyond the noise.
+  auto candidate = [&](size_t i) { return AsCandidate(name(s->field_curve[i]), candidates[i]); };
+  // The tilt against none.
   size_t base = 0;
   if (tried(candidates[0].camera, Trial(true, 0, 0, 0)) &&
-      ChooseCandidate({candidates[0], candidates[1]}) == 1)
+      Record(options, Select(p.name, "sensor tilt", {candidate(0), candidate(1)}), s).chosen == 1)
     base = 1;
   const bool tilt = base == 1;
   // A field only where the lens leaves something to take up: the held-out
@@ -279,29 +294,38 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   // sigma: an upper bound where the lens bends the rows) by more than the
   // held-out RMS resolves. Else none, and no field is solved.
   // (Values, not references: the ladders below grow `candidates`.)
-  const double heldout_px = candidates[base].heldout.rms_px[0];
-  const double resolution = HeldOutResolution(candidates[base].heldout, 0);
+  const Candidate radial = candidate(base);
+  const double resolution = Resolution(radial);
   const double floor_px = std::sqrt(2.0) * UsableViewsNoise(p);
-  const double excess_px = std::sqrt(std::max(0.0, heldout_px * heldout_px - floor_px * floor_px));
+  const double excess_px = std::sqrt(std::max(
+      0.0, radial.heldout_rms_px * radial.heldout_rms_px - floor_px * floor_px));
   if (!(excess_px > resolution)) {
     s->field_chosen = int(base);
-    Say(options, what + ": non-radial part " + name(s->field_curve[base]) + " chosen, no field "
-                     "tried (held-out RMS " + Fixed(heldout_px) + " px, the corners' own noise " +
-                     Fixed(floor_px) + " px)");
+    Say(options, what + ": no field tried: the held-out RMS " + Fixed(radial.heldout_rms_px) +
+                     " px is within " + Fixed(resolution) + " px of the corners' own noise, " +
+                     Fixed(floor_px) + " px");
     Restore(candidates[base], s);
     return;
   }
   // One ladder of fields solved from the base, in order, until two in a row
-  // predict worse than the best of the ladder beyond the noise; returns the
-  // candidate of its lowest held-out RMS (0: none solved).
-  auto climb = [&](const std::vector<FieldTrial>& ladder) {
+  // predict worse than the best of the ladder beyond the spread; returns
+  // the candidate of its lowest held-out RMS (0: none solved). With
+  // `one_grid` (the weights of one grid), each from the one before.
+  int fields = 0;  // solved so far, for the progress lines
+  auto climb = [&](const std::vector<FieldTrial>& ladder, bool one_grid) {
     size_t best = 0;
     int worse_in_a_row = 0;
     for (const FieldTrial& t : ladder) {
       if (worse_in_a_row == 2) break;
-      Restore(candidates[base], s);
-      if (!tried(candidates[base].camera, t)) break;
+      const bool warm = one_grid && best != 0;
+      const FinalSolve start = candidates[warm ? candidates.size() - 1 : base];
+      Restore(start, s);
+      if (!tried(candidates[base].camera, t, warm ? &start.camera : nullptr)) break;
       const FinalSolve& newest = candidates.back();
+      Say(options, what + " with " + name(t) + ": held-out " + Fixed(newest.heldout.rms_px[0]) +
+                       " px (field " + std::to_string(++fields) + " of at most " +
+                       std::to_string(std::size(kFieldSmoothnessLadder) + std::size(kFieldLadder) - 1) +
+                       "; " + newest.outcome.message + ")");
       if (best == 0) {
         best = candidates.size() - 1;
         continue;
@@ -316,28 +340,28 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
   std::vector<FieldTrial> weights;
   for (double lambda : kFieldSmoothnessLadder)
     weights.push_back(Trial(tilt, finest, finest_rows, lambda));
-  const size_t smoothest_best = climb(weights);
+  const size_t smoothest_best = climb(weights, true);
   const double lambda = smoothest_best ? s->field_curve[smoothest_best].smoothness : given;
   std::vector<FieldTrial> grids;
   for (int cols : kFieldLadder)
     if (cols != finest)
       grids.push_back(Trial(tilt, cols, FieldRows(cols, p.width, p.height), lambda));
-  const size_t coarser_best = climb(grids);
-  // The field that predicts best, kept only if it beats none beyond the
-  // fold-to-fold noise and the held-out RMS's resolution.
-  auto lower = [&](size_t a, size_t b) {  // 0: none solved
-    return b && (!a || candidates[b].heldout.rms_px[0] < candidates[a].heldout.rms_px[0]) ? b : a;
-  };
-  const size_t best = lower(smoothest_best, coarser_best);
-  const size_t chosen = best && ChooseCandidate({candidates[base], candidates[best]}) == 1 &&
-                                heldout_px - candidates[best].heldout.rms_px[0] > resolution
-                            ? best
-                            : base;
+  climb(grids, false);
+  // The field's shape (grid and smoothness) is the one of the lowest
+  // held-out RMS of the ladders (a penalised spline's smoothness chosen by
+  // cross-validation: Eilers and Marx); whether the lens has a field at
+  // all is the choice of the rule, that field against none.
+  size_t shape = 0;
+  for (size_t i = 2; i < candidates.size(); ++i)
+    if (i != base && (shape == 0 || candidates[i].heldout.rms_px[0] < candidates[shape].heldout.rms_px[0]))
+      shape = i;
+  const size_t chosen =
+      shape == 0 ? base
+                 : (Record(options, Select(p.name, "field", {candidate(base), candidate(shape)}), s)
+                            .chosen == 1
+                        ? shape
+                        : base);
   s->field_chosen = int(chosen);
-  Say(options, what + ": non-radial part " + name(s->field_curve[chosen]) +
-                   " chosen (the tilt if it beats none beyond the fold-to-fold noise, the field "
-                   "of the lowest held-out RMS if it beats no field beyond that noise and by more "
-                   "than the held-out RMS resolves, " + Fixed(resolution) + " px)");
   Restore(candidates[chosen], s);
 }
 
@@ -345,21 +369,20 @@ void ChooseField(const CalibrationOptions& options, const std::string& what, Mon
 // inlier corner from the solved curve (ForField over the same field, no
 // outlier rejection, to kRankingTolerance) and cross-validated, until two
 // counts in a row do no better than the best held-out RMS while fitting
-// about as well as the best fit (kMissedFit); then the count
-// ChooseWithinNoise keeps solved as any count is (SolveAll).
+// about as well as the best fit (kMissedFit); then the count the rule of
+// selection.h keeps solved as any count is (SolveAll).
 void ChooseKnots(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+  const SplineOptions& asked = options.spline;
   const CameraBlock solved = s->problem.cameras[0];
   const double r_max = FieldEnd(solved);
   const std::vector<Pose> poses = s->poses;
   std::vector<CameraBlock> solves;
-  std::vector<std::vector<double>> folds;
   std::vector<CrossValidation> cvs;
   size_t best = 0;
   double best_fit = INFINITY;  // the lowest fitted RMS so far
   int saturated = 0;           // counts in a row that fit about as well as the best fit
   for (int knots : kKnotLadder) {
-    SplineOptions spline = options.spline;
-    spline.knots = knots;
+    const SplineOptions spline{knots, asked.degree, asked.smoothness};
     s->poses = poses;
     const std::string trial = what + " with " + std::to_string(knots) + " knots";
     s->problem = MaskedProblem(ForField(solved, spline, r_max), s, &s->inliers, 1);
@@ -373,53 +396,50 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
     Say(options, trial + ": rms " + Fixed(s->knot_curve.back().rms_px) + " px, held-out " +
                      Fixed(cv.rms_px[0]) + " px");
     solves.push_back(s->problem.cameras[0]);
-    folds.push_back(cv.fold_rms_px[0]);
     cvs.push_back(cv);
     if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;
     best_fit = std::min(best_fit, s->knot_curve.back().rms_px);
     saturated = s->knot_curve.back().rms_px <= kMissedFit * best_fit ? saturated + 1 : 0;
     if (solves.size() >= best + 3 && saturated >= 2) break;
   }
-  const int chosen = ChooseWithinNoise(folds);
+  std::vector<Candidate> counts;
+  for (size_t i = 0; i < solves.size(); ++i)
+    counts.push_back(Scored(std::to_string(s->knot_curve[i].knots) + " knots",
+                            int(ParamNames(solves[i]).size()), cvs[i], 0));
+  const int chosen = Record(options, Select(s->prepared.name, "knots", counts), s).chosen;
   s->poses = poses;
-  SolveAll(solves[chosen], options, what, s);
+  SolveAll(solves[chosen], OnTheCorners(options, what), WarpAlwaysFree(options), options, s);
   s->heldout = cvs[chosen];
-  Say(options, what + ": " + std::to_string(s->knot_curve[chosen].knots) +
-                   " knots chosen (the fewest within the fold-to-fold noise of the best held-out "
-                   "RMS, " + Fixed(s->knot_curve[best].heldout_rms_px) + " px at " +
-                   std::to_string(s->knot_curve[best].knots) + ")");
 }
 
 }  // namespace
 
-void SolveMono(const CameraData& data, const BoardExtent& board,
-               const CalibrationOptions& requested, MonoState* s) {
+void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
+               const ModelPlan& plan, MonoState* s) {
   // The model (knots, the board's bow, the field) is chosen with no
-  // standard deviations on the corners the radial model keeps (a board
-  // misdetected or bent far beyond a bow would otherwise decide every
-  // held-out RMS); the final solve decides every corner anew with the
+  // standard deviations on the corners the radial model keeps (OnTheCorners:
+  // a board misdetected or bent far beyond a bow would otherwise decide
+  // every held-out RMS); the final solve decides every corner anew with the
   // chosen model, so a corner only a richer one fits comes back.
-  CalibrationOptions choosing = requested;
-  choosing.outliers = OutlierRule::kOff;
-  choosing.covariance = false;
-  // --knots auto: the continuation runs on the ladder's first count.
-  CalibrationOptions options = choosing;
+  // --knots auto: the continuation runs on kContinuationKnots.
   const bool auto_knots = !options.spline.knots;
-  if (auto_knots) options.spline.knots = kContinuationKnots;
+  const SplineOptions spline =
+      auto_knots ? SplineOptions{kContinuationKnots, options.spline.degree, options.spline.smoothness}
+                 : options.spline;
   s->prepared = Prepare(data, options);
   s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
   RequireViews(p, options.min_views);
-  const Init init = Initialize(p, options);
+  const Init init = Initialize(p, options, plan.model);
   s->poses = init.poses;
   s->inliers.assign(p.views.size(), {});
   for (size_t v = 0; v < p.views.size(); ++v) s->inliers[v].assign(p.views[v].size(), 1);
   s->init_method = init.pinhole.method;
-  const std::string what = p.name + " camera (" + ModelName(options.model) + ")";
+  const std::string what = p.name + " camera (" + ModelName(plan.model) + ")";
   const int min_points = options.min_points_per_view;
 
   // The start's lens on the central disc, only fx fy cx cy free.
-  CameraBlock pinhole = StartCamera(init, p, options.model, options.spline);
+  CameraBlock pinhole = StartCamera(init, p, plan.model, spline);
   Inliers disc(p.views.size());
   bool everything = false;
   double fraction = 0.25;
@@ -447,12 +467,12 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   // coefficients are global, and the high orders fitted to a small disc
   // explode outside it: one more of them is freed with each disc.
   double r_max = ImageCornerRadius(pinhole, p.width, p.height, 1.0) * options.r_max_margin;
-  CameraBlock camera = ForField(pinhole, options.spline, r_max);
+  CameraBlock camera = ForField(pinhole, spline, r_max);
   auto cover = [&](const Inliers& mask) {
     const double needed = FieldRadius(camera, p, mask, s->poses, options);
     if (!(needed > 1.05 * r_max)) return;
     r_max = needed;
-    camera = ForField(camera, options.spline, r_max);
+    camera = ForField(camera, spline, r_max);
   };
   const bool global_coeffs = !Traits(KindOf(camera.model)).spline;
   for (int stage = 1; !everything; ++stage) {
@@ -479,7 +499,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
     if (!good[v]) p.Skip(int(v), "no board pose fits its corners (a mirrored or partial view?)");
   RequireViews(p, options.min_views);
   cover(s->inliers);
-  SolveAll(camera, options, what, s);
+  SolveAll(camera, OnTheCorners(options, what), WarpAlwaysFree(options), options, s);
   Say(options, what + ": r_max " + Fixed(r_max, 3) + ", rms " +
                    Fixed(Rms(Residuals(s->problem, 0))) + " px (" + s->outcome.message + ")");
 
@@ -488,23 +508,20 @@ void SolveMono(const CameraData& data, const BoardExtent& board,
   const CameraBlock& solved = s->problem.cameras[0];
   const double needed = FieldRadius(solved, p, s->inliers, s->poses, options);
   if (std::abs(needed - r_max) > 0.05 * r_max) {
-    SolveAll(ForField(solved, options.spline, needed), options, what, s);
+    SolveAll(ForField(solved, spline, needed), OnTheCorners(options, what), WarpAlwaysFree(options),
+             options, s);
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
-  if (requested.outliers != OutlierRule::kOff) {  // the radial model's outliers
-    CalibrationOptions rejecting = choosing;
-    rejecting.outliers = requested.outliers;
-    SolveAll(s->problem.cameras[0], rejecting, what + " (gross outliers)", s);
-  }
-  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(choosing, what, s);
-  if (requested.board_warp == WarpRule::kAuto) ChooseWarp(choosing, what, s);
-  if (requested.nonradial != FieldRule::kNone) ChooseField(choosing, what, s);
+  if (options.outliers != OutlierRule::kOff)  // the radial model's outliers
+    SolveAll(s->problem.cameras[0], RejectingOutliers(options, what + " (gross outliers)"),
+             WarpAlwaysFree(options), options, s);
+  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(options, what, s);
+  if (options.board_warp == WarpRule::kAuto) ChooseWarp(options, what, s);
+  if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, s);
   // The final solve: the chosen model, its outliers left out.
-  CalibrationOptions final_solve = requested;
-  final_solve.board_warp = s->warp.free ? WarpRule::kEstimated : WarpRule::kFlat;
-  SolveAll(s->problem.cameras[0], final_solve, what, s);
-  s->heldout = CrossValidate(s->problem, requested.cv_folds);
+  SolveAll(s->problem.cameras[0], AsAsked(options, what), s->warp.free, options, s);
+  s->heldout = CrossValidate(s->problem, options.cv_folds);
 }
 
 CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options) {

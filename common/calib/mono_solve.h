@@ -19,6 +19,7 @@
 
 #include "calib/calibrate.h"
 #include "calib/evaluate/heldout.h"
+#include "calib/evaluate/selection.h"
 #include "calib/solver/options.h"
 #include "calib/solver/problem.h"
 #include "calib/start/initialise.h"
@@ -40,13 +41,15 @@ struct MonoState {
   WarpChoice warp_choice;             // --board-warp auto
   std::vector<FieldTrial> field_curve;  // --nonradial auto: "none", the tilt, then every field tried
   int field_chosen = 0;                 // its index in field_curve
+  std::vector<Selection> selections;    // every choice made (selection.h), in order
 };
 
-// Calibrates the camera of `data` into *state; `board` is the extent of the
-// board (board_warp.h), the warp estimated in the final solve or chosen by
-// the held-out RMS as options.board_warp says. Throws CalibrationError.
+// Calibrates the camera of `data` with the model of `plan` into *state;
+// `board` is the extent of the board (board_warp.h), the warp estimated in
+// the final solve or chosen by the held-out RMS as options.board_warp says.
+// Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               MonoState* state);
+               const ModelPlan& plan, MonoState* state);
 
 // The cross-validation of the state's last solve: the one --knots auto made,
 // else made now (options.cv_folds).

@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <exception>
-#include <mutex>
 #include <opencv2/core/utility.hpp>
 
 #include "calib/camera_result.h"
@@ -40,24 +39,17 @@ Pose AverageExtrinsic(const std::vector<Pose>& left, const std::vector<Pose>& ri
   return Pose::FromRt(U * svd.matrixV().transpose(), T);
 }
 
-// Each camera's own solve, the two at once on OpenCV's pool. The
-// progress lines of the two are serialised; an error is the left camera's
-// when both fail, as when they ran one after the other.
+// Each camera's own solve, the two at once on OpenCV's pool (in turn
+// where the models run at once). An error is the left camera's when both
+// fail, as when they ran one after the other.
 void SolveBothMono(const StereoData& data, const BoardExtent& board,
-                   const CalibrationOptions& options, MonoState mono[2]) {
-  std::mutex progress_mutex;
-  CalibrationOptions each = options;
-  if (options.progress)
-    each.progress = [&](const std::string& line) {
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      options.progress(line);
-    };
+                   const CalibrationOptions& options, const ModelPlan& plan, MonoState mono[2]) {
   std::exception_ptr error[2];
   cv::parallel_for_(
       cv::Range(0, 2),
       [&](const cv::Range& range) {
         for (int c = range.start; c < range.end; ++c) try {
-            SolveMono(c == 0 ? data.left : data.right, board, each, &mono[c]);
+            SolveMono(c == 0 ? data.left : data.right, board, options, plan, &mono[c]);
           } catch (...) {
             error[c] = std::current_exception();
           }
@@ -69,18 +61,19 @@ void SolveBothMono(const StereoData& data, const BoardExtent& board,
 
 }  // namespace
 
-StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options) {
+StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options,
+                              const ModelPlan& plan) {
   if (data.left.views.size() != data.right.views.size())
     throw CalibrationError("the left and right cameras have different numbers of views");
   MonoState mono[2];
   const BoardExtent board = ExtentOf({&data.left, &data.right});
-  SolveBothMono(data, board, options, mono);
+  SolveBothMono(data, board, options, plan, mono);
   const int n = data.size();
   std::vector<bool> is_stereo(n, false);
   for (int v = 0; v < n; ++v)
     is_stereo[v] = mono[0].prepared.usable[v] && mono[1].prepared.usable[v];
   StereoCalibration out;
-  out.model = options.model;
+  out.model = plan.model;
   out.flow = options.flow;
   out.half_turned_views = MakeHalfTurnsConsistent(board, is_stereo, mono[0], &mono[1]);
   for (int v : out.half_turned_views)
@@ -134,9 +127,6 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   // cameras were not exposed together would otherwise lose its corners to
   // the shared board pose one by one instead of being found (CheckPairs).
   // The standard deviations only of the solve that is kept (below).
-  CalibrationOptions extrinsic_options = options;
-  extrinsic_options.outliers = OutlierRule::kOff;
-  extrinsic_options.covariance = false;
   // R, T with both cameras held at their own solutions: the paper's
   // extrinsic step, and the start of the joint solve.
   auto solve_extrinsics = [&] {
@@ -148,14 +138,14 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     }
     problem.warp = mean_warp;
     observe(false);
-    return SolveWithRejection(problem, extrinsic_options, "stereo extrinsics");
+    return SolveWithRejection(problem, OnTheCorners(options, "stereo extrinsics"));
   };
   auto solve_joint = [&] {
     for (auto& camera : problem.cameras) camera.fixed = false;
     problem.warp.free = options.board_warp == WarpRule::kEstimated ||
                         mono[0].warp_choice.kept || mono[1].warp_choice.kept;
     observe(true);
-    return SolveWithRejection(problem, extrinsic_options, "joint stereo solve");
+    return SolveWithRejection(problem, OnTheCorners(options, "joint stereo solve"));
   };
   const bool joint = options.flow == StereoFlow::kJoint;
   SolveOutcome outcome = solve_extrinsics();
@@ -187,13 +177,12 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
   if (joint && !keep_joint) {
     outcome = solve_extrinsics();
     out.flow = StereoFlow::kPaper;
+    out.joint_left_out = true;
     Say(options, "joint solve left out: sharing the board poses worsens the cameras' fit beyond "
                  "chance (pairs not exposed together?); each camera from its own views");
   }
   if (options.covariance)
-    EstimateStddev(problem,
-                   {"stereo standard deviations", options.max_iterations, options.robust_loss,
-                    options.robust_scale_px},
+    EstimateStddev(problem, StageSettings(options, "stereo standard deviations", options.max_iterations),
                    &outcome);
   if (keep_joint) {
     Say(options, "joint solve: baseline " + Fixed(problem.extrinsic.t().norm(), 5) + " m (" +
@@ -212,6 +201,7 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     camera.warp_choice = mono[c].warp_choice;
     camera.field_curve = mono[c].field_curve;
     camera.field_chosen = mono[c].field_chosen;
+    camera.selections = mono[c].selections;
     if (keep_joint)
       SetHeldOut(joint_cv, c, &camera);
     else

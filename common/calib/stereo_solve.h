@@ -9,6 +9,8 @@
 
 namespace ws::calib {
 
-StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options);
+// The rig with the model of `plan`.
+StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& options,
+                              const ModelPlan& plan);
 
 }  // namespace ws::calib

@@ -61,15 +61,14 @@ int main(int argc, char** argv) {
   app.add_option("--model", model,
                  "bspline, poly6, poly12 (pinhole radius), kb4, bspline_theta (incidence angle, "
                  "fisheye lenses beyond 180 degrees) or all: every model solved (Table II), the "
-                 "one with the lowest held-out RMS (the fewest parameters within the fold-to-fold "
-                 "noise of it) written to --out and published; a model that cannot follow the lens "
-                 "is reported (docs/calibration.md)")
+                 "simplest, unless a richer one predicts held-out views better beyond the folds' "
+                 "spread, written to --out and published (the one rule of every choice, "
+                 "docs/calibration.md); a model that cannot follow the lens is reported")
       ->check(CLI::IsMember(models))
       ->capture_default_str();
   app.add_option("--knots", knots,
                  "Estimated B-spline coefficients (distinct knots), 2 to 64, or auto: per camera "
-                 "the fewest whose cross-validated RMS is within the fold-to-fold noise of the "
-                 "best")
+                 "more only where they predict held-out views better beyond the folds' spread")
       ->capture_default_str();
   app.add_option("--cv-folds", calib.cv_folds,
                  "Folds of the cross-validation (held-out RMS, --knots auto; fewer with fewer than two views a fold); 0: none")
@@ -96,19 +95,19 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--board-warp", warp,
                  "The board's bow (mrcal's calobject_warp paraboloid; reported in mm): auto "
-                 "(estimated, kept where it lowers the held-out RMS beyond the fold-to-fold "
-                 "noise), on or off")
+                 "(estimated, kept where it lowers the held-out RMS beyond the folds' spread), "
+                 "on or off")
       ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   app.add_option("--nonradial", nonradial,
                  "The lens model's non-radial part, a sensor tilt (OpenCV's tauX, tauY) and a "
                  "smooth 2-D field over the image: auto (the tilt kept where it lowers the "
-                 "held-out RMS beyond the fold-to-fold noise; where the held-out RMS exceeds "
-                 "the corners' own noise by more than it resolves, fields of 16 control points "
+                 "held-out RMS beyond the folds' spread; where the held-out RMS exceeds the "
+                 "corners' own noise by more than it resolves, fields of 16 control points "
                  "across at smoothness weights from 10 down to 0.01 and grids of 4 to 11 across "
-                 "tried; the one of the lowest held-out RMS kept where it beats none beyond that "
-                 "noise and by more than the held-out RMS resolves), none, tilt, COLSxROWS or "
-                 "tilt+COLSxROWS (at --smoothness)")
+                 "tried; a richer one kept only where it predicts better beyond the spread), none, "
+                 "tilt, COLSxROWS "
+                 "or tilt+COLSxROWS (at --smoothness)")
       ->capture_default_str();
   app.add_option("--min-views", calib.min_views, "Views each camera needs")
       ->check(CLI::Range(3, 1000))

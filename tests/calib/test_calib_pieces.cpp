@@ -217,7 +217,7 @@ TEST(Initialize, GivesTheTrueIntrinsicsAndPosesOfExactPinholeViews) {
   options.model = ModelKind::kPoly6;
   Prepared prepared = Prepare(rig.data.left, options);
   ASSERT_EQ(prepared.NumUsable(), 5);
-  const Init init = Initialize(prepared, options);
+  const Init init = Initialize(prepared, options, options.model);
   EXPECT_NEAR(init.pinhole.fx, kPinholeFx, 1e-6 * kPinholeFx);
   EXPECT_NEAR(init.pinhole.fy, kPinholeFy, 1e-6 * kPinholeFy);
   EXPECT_NEAR(init.pinhole.cx, kPinholeCx, 1e-9);

@@ -6,12 +6,15 @@
 // non-radial field.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include "../models/test_cameras.h"
+#include "calib/solver/field_blocks.h"
 #include "calib/solver/residuals.h"
 
 namespace ws::calib {
@@ -36,7 +39,10 @@ ViewPoints Board() {
 void CheckJacobians(const AnyDistortionModel& model, const NonRadialField& field,
                     std::vector<std::vector<double>> blocks, bool via_extrinsic,
                     const std::string& where) {
-  std::unique_ptr<ceres::CostFunction> cost(MakeCost(model, field, Board(), via_extrinsic));
+  std::vector<int> every_segment(size_t(FieldBlocks(field).count()));
+  std::iota(every_segment.begin(), every_segment.end(), 0);
+  std::unique_ptr<ceres::CostFunction> cost(
+      MakeCost(model, field, Board(), via_extrinsic, every_segment));
   const int rows = cost->num_residuals();
   ASSERT_EQ(cost->parameter_block_sizes().size(), blocks.size()) << where;
   std::vector<double*> parameters;
@@ -71,15 +77,27 @@ void CheckJacobians(const AnyDistortionModel& model, const NonRadialField& field
   }
 }
 
+// coeffs: the radial model's, then the field's, then the tilt's, split
+// into the cost's blocks (residuals.h) after the rig's.
 void CheckBothWays(const AnyDistortionModel& model, const std::vector<double>& intrinsics,
                    const std::vector<double>& coeffs, const std::string& name,
                    const NonRadialField& field = NonRadialField()) {
   const std::vector<double> warp{2e-3, -1e-3}, pose{0.25, -0.35, 0.1, 0.02, -0.01, 0.3},
       extrinsic{0.01, 0.02, -0.015, -0.12, 0.002, 0.004};
-  CheckJacobians(model, field, {intrinsics, coeffs, warp, pose}, false,
-                 name + ", board in its frame");
-  CheckJacobians(model, field, {intrinsics, coeffs, warp, pose, extrinsic}, true,
-                 name + ", board via the extrinsic");
+  const int n = std::visit([](const auto& m) { return m.NumCoeffs(); }, model);
+  const std::vector<double> radial(coeffs.begin(), coeffs.begin() + n);
+  std::vector<std::vector<double>> parts;
+  if (field.tilt()) parts.emplace_back(coeffs.end() - 2, coeffs.end());
+  const FieldBlocks blocks(field);
+  for (int s = 0; s < blocks.count(); ++s)
+    parts.emplace_back(coeffs.begin() + n + blocks.Offset(s),
+                       coeffs.begin() + n + blocks.Offset(s) + blocks.Size(s));
+  for (const bool via : {false, true}) {
+    std::vector<std::vector<double>> all = {intrinsics, radial, warp, pose};
+    if (via) all.push_back(extrinsic);
+    all.insert(all.end(), parts.begin(), parts.end());
+    CheckJacobians(model, field, all, via, name + (via ? ", board via the extrinsic" : ", board in its frame"));
+  }
 }
 
 class ViewCostJacobians : public ::testing::TestWithParam<TestCamera> {};
@@ -126,6 +144,60 @@ TEST_P(ViewCostJacobians, WithANonRadialPartMatchCentralDifferences) {
                   test.name + (field.grid() ? " with a field" : "") + (field.tilt() ? " with a tilt" : ""),
                   field);
   }
+}
+
+// A view reads a few segments of a fine field (field_blocks.h): the solver
+// is given those, and a corner that reads a control point of a segment the
+// view was not given fails the evaluation rather than reading a wrong one.
+TEST(ViewCostJacobians, AViewIsGivenTheSegmentsItsCornersRead) {
+  const AnyDistortionModel model = MakeCalibrationModel(ModelKind::kBspline, CalibrationSetup{1.6, 12, 3});
+  const NonRadialField field(16, 12, {-1.6, 1.6, -1.2, 1.2});
+  const std::vector<double> intrinsics{350.2, 344.9, 652.3, 471.8, 4e-4, -3e-4};
+  std::vector<double> radial(12);
+  for (size_t i = 0; i < radial.size(); ++i) radial[i] = 0.01 * std::sin(0.7 * i);
+  // The board seen from 1.5 m: a part of the image.
+  const std::vector<double> warp{0, 0}, pose{0.25, -0.35, 0.1, 0.02, -0.01, 1.5};
+  // The board's corners where the camera sees them (no field).
+  ViewPoints board;
+  const ViewPoints flat = Board();
+  const Eigen::Vector3d omega(pose[0], pose[1], pose[2]);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(omega.norm(), omega.normalized()).toRotationMatrix();
+  for (int i = 0; i < flat.size(); ++i) {
+    const Eigen::Vector3d X(flat.object[3 * i], flat.object[3 * i + 1], flat.object[3 * i + 2]);
+    const Eigen::Vector3d Xc = R * X + Eigen::Vector3d(pose[3], pose[4], pose[5]);
+    double pixel[2];
+    ASSERT_TRUE(std::visit([&](const auto& m) {
+      return Project(m, NonRadialField(), intrinsics.data(), radial.data(), Xc.data(), pixel);
+    }, model));
+    board.Add(X, Eigen::Vector2d(pixel[0], pixel[1]), Eigen::Vector2d::Zero());
+  }
+  const std::vector<int> support = FieldSupport(field, intrinsics.data(), board.image);
+  const FieldBlocks blocks(field);
+  ASSERT_FALSE(support.empty());
+  EXPECT_LT(support.size(), size_t(blocks.count()) / 2) << "a small board reads a small part";
+  auto evaluate = [&](const std::vector<int>& segments) {
+    std::unique_ptr<ceres::CostFunction> cost(MakeCost(model, field, board, false, segments));
+    std::vector<std::vector<double>> values = {intrinsics, radial, warp, pose};
+    for (int s : segments) values.emplace_back(size_t(blocks.Size(s)), 1e-3);
+    std::vector<const double*> parameters;
+    for (const auto& v : values) parameters.push_back(v.data());
+    std::vector<double> residuals(size_t(cost->num_residuals()));
+    return cost->Evaluate(parameters.data(), residuals.data(), nullptr);
+  };
+  EXPECT_TRUE(evaluate(support));
+  // Without the segments the corners read (the support's inner part: all
+  // but its margin), the evaluation fails.
+  std::vector<int> outer;
+  std::vector<char> read(size_t(blocks.count()), 0);
+  for (size_t i = 0; i + 1 < board.image.size(); i += 2) {
+    double s = (board.image[i] - intrinsics[kCx]) / intrinsics[kFx];
+    double t = (board.image[i + 1] - intrinsics[kCy]) / intrinsics[kFy];
+    const NonRadialField::Local local = field.LocalBasis(s, t);
+    for (int k = 0; k < NonRadialField::kLocal; ++k) read[size_t(blocks.SegmentOf(0, local.index[k]))] = 1;
+  }
+  for (int s : support)
+    if (!read[size_t(s)]) outer.push_back(s);
+  EXPECT_FALSE(evaluate(outer));
 }
 
 }  // namespace

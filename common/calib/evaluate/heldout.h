@@ -5,9 +5,11 @@
 // K-fold over its views.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "calib/evaluate/heldout_corner.h"
+#include "calib/evaluate/selection.h"
 #include "calib/solver/board_warp.h"
 #include "calib/solver/calib_data.h"
 #include "calib/solver/camera_block.h"
@@ -73,27 +75,17 @@ struct CrossValidation {
 // Throws CalibrationError if the solved problem cannot be evaluated.
 CrossValidation CrossValidate(const Problem& solved, int folds);
 
-// Candidates that left out different outliers (other models, the board
-// bowed or flat, a field or none) compared on the same corners: per
-// candidate, camera `camera`'s per-fold RMS over the held-out corners that
-// every candidate kept. Folds as the first candidate dealt them.
+// Candidates that left out different outliers (other models) compared on
+// the same corners: per candidate, camera `camera`'s per-fold RMS over the
+// held-out corners that every candidate kept (*corners: how many). Folds as
+// the first candidate dealt them.
 std::vector<std::vector<double>> FoldRmsOnCommonCorners(
-    const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera);
+    const std::vector<const std::vector<HeldOutCorner>*>& candidates, int camera,
+    int* corners = nullptr);
 
-// How finely camera `camera`'s held-out RMS r over n held-out corners
-// resolves a model's error: its standard error as an estimate of the
-// noise, r / (2 sqrt n) (|e|^2 of a corner of Gaussian noise sigma per
-// coordinate has mean 2 sigma^2 and standard deviation 2 sigma^2). A gain
-// below it is consistent across the folds at best, and could not be seen
-// on a fresh set of as many corners. 0 without held-out corners.
-double HeldOutResolution(const CrossValidation& cv, int camera);
-
-// Of candidates in order of complexity, each with its per-fold held-out RMS
-// (the same folds for all), the least complex whose excess over the best
-// (the lowest mean) is within the fold-to-fold noise: mean_k(e_k - best_k)
-// <= its standard error, sd_k(e_k - best_k) / sqrt(K). The paired
-// difference cancels what the folds share (which views, how noisy).
-// Returns an index into `fold_rms`; -1 when it is empty.
-int ChooseWithinNoise(const std::vector<std::vector<double>>& fold_rms);
+// A candidate of selection.h scored by camera `camera`'s part of a
+// cross-validation: its pooled and per-fold held-out RMS and its corners;
+// failed where it has none.
+Candidate Scored(std::string name, int parameters, const CrossValidation& cv, int camera);
 
 }  // namespace ws::calib

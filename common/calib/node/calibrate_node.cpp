@@ -52,7 +52,19 @@ std::vector<ModelKind> ParseModelList(const std::string& spec) {
 }
 
 CalibrateNode::CalibrateNode(Process& process, NodeOptions options)
-    : process_(process), options_(std::move(options)), session_(options_.session), commands_(Commands()) {}
+    : process_(process), options_(std::move(options)), session_(options_.session), commands_(Commands()) {
+  // Every stage of a solve in the log file; on the terminal as the progress
+  // line, at most one a second (the solver passes one line at a time).
+  options_.calibration.progress = [this, shown = std::chrono::steady_clock::time_point()](
+                                      const std::string& solver_line) mutable {
+    const std::string line = NameViews(solver_line, solving_frames_);
+    process_.log().Detail(line);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - shown < std::chrono::seconds(1)) return;
+    shown = now;
+    process_.log().Progress("solving: " + line);
+  };
+}
 
 CalibrateNode::~CalibrateNode() {
   if (worker_.joinable()) worker_.join();
@@ -262,18 +274,32 @@ std::string CalibrateNode::ViewName(int view, const std::vector<int64_t>& frames
          (name != options_.frame_names.end() ? name->second : "frame " + std::to_string(frame)) + ")";
 }
 
-void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::vector<int64_t>& frames) {
+void CalibrateNode::ReportChoices(const ModelCalibrations& results) {
+  const StereoCalibration& primary = Chosen(results);
+  if (results.solved.size() + results.failed.size() > 1)
+    for (const std::string& line : SelectionLines(results.model_selection)) process_.log().Info(line);
+  for (const CameraCalibration* camera : {&primary.left, &primary.right}) {
+    if (camera == &primary.right && primary.mono) break;
+    for (const Selection& selection : camera->selections)
+      for (const std::string& line : SelectionLines(selection))
+        process_.log().Info(ModelName(primary.model) + " " + line);
+  }
+}
+
+std::string CalibrateNode::NameViews(const std::string& text, const std::vector<int64_t>& frames) const {
   static const std::regex kView("view ([0-9]+)");
-  auto named = [&](const std::string& text) {  // every "view N" of a solver's message, named
-    std::string out;
-    auto at = text.cbegin();
-    for (std::sregex_iterator it(text.begin(), text.end(), kView), end; it != end; ++it) {
-      out.append(at, (*it)[0].first);
-      out += ViewName(std::stoi((*it)[1].str()), frames);
-      at = (*it)[0].second;
-    }
-    return out.append(at, text.cend());
-  };
+  std::string out;
+  auto at = text.cbegin();
+  for (std::sregex_iterator it(text.begin(), text.end(), kView), end; it != end; ++it) {
+    out.append(at, (*it)[0].first);
+    out += ViewName(std::stoi((*it)[1].str()), frames);
+    at = (*it)[0].second;
+  }
+  return out.append(at, text.cend());
+}
+
+void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::vector<int64_t>& frames) {
+  auto named = [&](const std::string& text) { return NameViews(text, frames); };
   for (const CameraCalibration* camera : {&result.left, &result.right}) {
     if (camera == &result.right && result.mono) break;
     for (const auto& skipped : camera->skipped) process_.ReportError("warning: " + camera->name + " camera: " + named(skipped));
@@ -290,6 +316,13 @@ void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::ve
     process_.ReportError("warning: " + ViewName(view, frames) +
                          ": the pair does not fit one rig (the board moved between the two exposures, or "
                          "the images are not a pair): left out of R, T");
+  if (result.joint_left_out) {
+    std::string pairs;
+    for (int view : result.inconsistent_views) pairs += (pairs.empty() ? "" : ", ") + ViewName(view, frames);
+    process_.ReportError("warning: the joint solve was left out: sharing the board poses worsens the cameras' "
+                         "fit beyond chance (pairs not exposed together: " + pairs +
+                         "); each camera is solved from its own views");
+  }
   for (int view : result.half_turned_views)
     process_.log().Info(ViewName(view, frames) +
                         ": the right image numbered the symmetric board from the other end: renumbered");
@@ -298,6 +331,7 @@ void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::ve
 bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
                              const std::vector<ModelKind>& models, const CalibrationOptions& options) {
   solving_ = true;
+  solving_frames_ = frames;
   SetState("solving", -1);
   PublishStatus();
   std::string names;
@@ -306,20 +340,10 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
   bool ok = false;
   double rms = -1, heldout = -1;
   try {
-    // Every stage in the log file; on the terminal as the progress line, at
-    // most one a second.
-    CalibrationOptions logged = options;
-    logged.progress = [this, shown = std::chrono::steady_clock::time_point()](const std::string& line) mutable {
-      process_.log().Detail(line);
-      const auto now = std::chrono::steady_clock::now();
-      if (now - shown < std::chrono::seconds(1)) return;
-      shown = now;
-      process_.log().Progress("solving: " + line);
-    };
-    const ModelCalibrations results = CalibrateStereoAllModels(data, logged, models);
+    const ModelCalibrations results = CalibrateStereoAllModels(data, options, models);
     const StereoCalibration& primary = Chosen(results);
     for (const auto& failure : results.failed)
-      process_.ReportError(failure.model + " failed: " + failure.error);
+      process_.ReportError(failure.model + " failed: " + NameViews(failure.error, frames));
     for (const auto& r : results.solved) {
       std::ostringstream line;
       line << r.model << ": left rms " << r.left.rms_px << " px (" << r.left.views << " views, "
@@ -331,9 +355,8 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
              << " views), baseline " << r.T.norm() << " m";
       process_.log().Info(line.str());
       for (const auto* camera : {&r.left, &r.right}) {
-        if (!camera->knot_curve.empty()) process_.log().Info(ModelName(r.model) + " " + KnotChoiceLine(*camera));
-        for (const std::string& line : {OutlierLine(*camera), WarpChoiceLine(*camera)})
-          if (!line.empty()) process_.log().Info(ModelName(r.model) + " " + line);
+        if (const std::string line = OutlierLine(*camera); !line.empty())
+          process_.log().Info(ModelName(r.model) + " " + line);
         if (camera->uncertainty.median_px >= 0)
           process_.log().Info(ModelName(r.model) + " " + UncertaintyLine(*camera));
       }
@@ -343,6 +366,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
     }
     std::istringstream table(FormatTableII(TableRows(results.solved, results.chosen)));
     for (std::string line; std::getline(table, line);) process_.log().Info(line);
+    ReportChoices(results);
     ReportLeftOut(primary, frames);
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -378,7 +402,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
   } catch (const Stopped&) {
     process_.log().Info("solve stopped on request: nothing written or published");
   } catch (const std::exception& e) {
-    process_.ReportError(std::string("solve failed: ") + e.what());
+    process_.ReportError("solve failed: " + NameViews(e.what(), frames));
   }
   // Done before the status says so: a reset sent on seeing "solved" is obeyed.
   solving_ = false;

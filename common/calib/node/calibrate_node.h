@@ -87,8 +87,15 @@ class CalibrateNode {
                 const std::vector<ModelKind>& models, const CalibrationOptions& options);
   // "view 3 (left04.jpg + right04.jpg)", or "view 3 (frame 7)" without names.
   std::string ViewName(int view, const std::vector<int64_t>& frames) const;
+  // `text` with every "view N" named as ViewName does: one numbering in
+  // every message.
+  std::string NameViews(const std::string& text, const std::vector<int64_t>& frames) const;
+  // Every choice the published calibration rests on (the model, then each
+  // camera's), its candidates and why the winner won (selection.h).
+  void ReportChoices(const ModelCalibrations& results);
   // The warnings of the published calibration that change the result: views
-  // left out (of a camera, of R, T), outliers, renumbered boards.
+  // left out (of a camera, of R, T), outliers, renumbered boards, the joint
+  // solve left out.
   void ReportLeftOut(const StereoCalibration& result, const std::vector<int64_t>& frames);
   // The calibration file and report of `results`; throws when one cannot be written.
   void WriteFiles(const ModelCalibrations& results, const std::string& yaml,
@@ -105,6 +112,7 @@ class CalibrateNode {
   double heldout_rms_ = -1;
   ModelCalibrations last_;
   std::atomic<bool> solving_{false};
+  std::vector<int64_t> solving_frames_;  // the running solve's views' frames (NameViews)
   std::thread worker_;
 };
 

@@ -51,6 +51,27 @@ Json ImageGridJson(const ImageGrid& grid, const std::string& key,
   return out;
 }
 
+Json SelectionReport(const Selection& s) {
+  Json j;
+  j["choice"] = s.choice;
+  j["camera"] = s.camera.empty() ? Json() : Json(s.camera);
+  Json candidates = Json::array();
+  for (const Candidate& c : s.candidates)
+    candidates.push_back({{"name", c.name},
+                          {"parameters", c.parameters},
+                          {"heldout_rms_px", c.failed.empty() ? Json(c.heldout_rms_px) : Json()},
+                          {"fold_rms_px", Numbers(c.fold_rms_px)},
+                          {"corners", c.corners},
+                          {"excess_px", c.excess_px},
+                          {"spread_px", c.spread_px},
+                          {"failed", c.failed.empty() ? Json() : Json(c.failed)}});
+  j["candidates"] = candidates;
+  j["best"] = s.best < 0 ? Json() : Json(s.best);
+  j["chosen"] = s.chosen < 0 ? Json() : Json(s.chosen);
+  j["why"] = s.why;
+  return j;
+}
+
 Json CameraReport(const CameraCalibration& c) {
   const CameraModel& m = c.model;
   Json j;
@@ -143,6 +164,9 @@ Json CameraReport(const CameraCalibration& c) {
                      {"heldout_rms_px", t.heldout_rms_px},
                      {"fold_rms_px", Numbers(t.fold_rms_px)}});
   j["knot_curve"] = curve;
+  Json choices = Json::array();
+  for (const Selection& selection : c.selections) choices.push_back(SelectionReport(selection));
+  j["choices"] = choices;
   return j;
 }
 
@@ -179,11 +203,7 @@ Json StereoReport(const StereoCalibration& s) {
 Json ModelsReport(const ModelCalibrations& calibrations) {
   Json j;
   j["models"] = Json::array();
-  double seconds = 0;
-  for (const auto& c : calibrations.solved) {
-    j["models"].push_back(StereoReport(c));
-    seconds += c.solve_seconds;
-  }
+  for (const auto& c : calibrations.solved) j["models"].push_back(StereoReport(c));
   for (const auto& failure : calibrations.failed)
     j["models"].push_back({{"model", failure.model}, {"error", failure.error}});
   Json table = Json::array();
@@ -198,7 +218,8 @@ Json ModelsReport(const ModelCalibrations& calibrations) {
                      {"chosen", row.chosen}});
   j["table_ii"] = table;
   j["chosen"] = calibrations.solved.empty() ? Json() : Json(ModelName(Chosen(calibrations).model));
-  j["solve_seconds"] = seconds;
+  j["model_choice"] = SelectionReport(calibrations.model_selection);
+  j["solve_seconds"] = calibrations.solve_seconds;
   return j;
 }
 

@@ -30,10 +30,13 @@
 // every field tried, {"tilt", "cols", "rows", "smoothness", "rms_px",
 // "heldout_rms_px", "fold_rms_px"};
 // empty otherwise) and "field_chosen" (its index).
+// Each camera has "choices": every choice made for it by the rule of
+// selection.h (docs/calibration.md), in order, as SelectionReport.
 // With several models: {"models": [one object as above per model],
 // "table_ii": [{"model", "left_rms_px", "right_rms_px", "stereo_rms_px",
 // "left_heldout_rms_px", "right_heldout_rms_px", "coeffs", "chosen"}],
-// "chosen": the model published, "solve_seconds": total}.
+// "chosen": the model published, "model_choice": how (SelectionReport),
+// "solve_seconds": the wall clock of the whole}.
 // Every number is written so that it reads back bit-identical; only
 // "solve_seconds" differs between runs on the same input.
 #pragma once
@@ -56,6 +59,11 @@ Json CameraReport(const CameraCalibration& camera);
 Json ImageGridJson(const ImageGrid& grid, const std::string& key,
                    const std::vector<double>& values);
 Json StereoReport(const StereoCalibration& calibration);
+// One choice: {"choice", "camera" (null for the rig), "candidates": [{"name",
+// "parameters", "heldout_rms_px" (null: not scored), "fold_rms_px",
+// "corners", "excess_px", "spread_px", "failed" (null: scored)}], "best",
+// "chosen" (indices, null: none scored), "why"}.
+Json SelectionReport(const Selection& selection);
 // Every model under "models": a solved one as StereoReport, a failed one as
 // {"model": NAME, "error": "..."}; Table II of the solved ones.
 Json ModelsReport(const ModelCalibrations& calibrations);

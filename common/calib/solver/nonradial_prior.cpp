@@ -1,9 +1,12 @@
 #include "calib/solver/nonradial_prior.h"
 
+#include "calib/solver/field_blocks.h"
+
 #include <ceres/cost_function.h>
 #include <ceres/jet.h>
 
 #include <Eigen/QR>
+#include <cstdint>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <vector>
@@ -68,29 +71,30 @@ std::vector<Eigen::Vector2d> GaugePatterns(const Model& model, const CameraBlock
   return patterns;
 }
 
-// e = M c on the field's part of the coefficient block.
+// e = M c, c the field's coefficients in its segments' blocks (in order,
+// `sizes` of them).
 class LinearPrior final : public ceres::CostFunction {
  public:
-  LinearPrior(Eigen::MatrixXd M, int offset, int block_size) : M_(std::move(M)), offset_(offset) {
+  LinearPrior(Eigen::MatrixXd M, const std::vector<int>& sizes) : M_(std::move(M)) {
     set_num_residuals(int(M_.rows()));
-    mutable_parameter_block_sizes()->push_back(block_size);
+    for (int size : sizes) mutable_parameter_block_sizes()->push_back(size);
   }
   bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
-    const int n = int(M_.cols()), block = parameter_block_sizes()[0];
-    Eigen::Map<Eigen::VectorXd>(residuals, M_.rows()) =
-        M_ * Eigen::Map<const Eigen::VectorXd>(p[0] + offset_, n);
-    if (jacobians && jacobians[0]) {
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
-          jacobians[0], M_.rows(), block);
-      J.setZero();
-      J.middleCols(offset_, n) = M_;
-    }
+    const std::vector<int32_t>& sizes = parameter_block_sizes();
+    Eigen::VectorXd c(M_.cols());
+    for (size_t b = 0, at = 0; b < sizes.size(); at += size_t(sizes[b]), ++b)
+      c.segment(Eigen::Index(at), sizes[b]) = Eigen::Map<const Eigen::VectorXd>(p[b], sizes[b]);
+    Eigen::Map<Eigen::VectorXd>(residuals, M_.rows()) = M_ * c;
+    if (jacobians == nullptr) return true;
+    for (size_t b = 0, at = 0; b < sizes.size(); at += size_t(sizes[b]), ++b)
+      if (jacobians[b])
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            jacobians[b], M_.rows(), sizes[b]) = M_.middleCols(Eigen::Index(at), sizes[b]);
     return true;
   }
 
  private:
   Eigen::MatrixXd M_;
-  int offset_;
 };
 
 }  // namespace
@@ -156,12 +160,14 @@ Eigen::MatrixXd NonRadialPrior(const CameraBlock& camera, double lambda) {
   return qr.matrixQR().topRows(kept).triangularView<Eigen::Upper>();
 }
 
-void AddNonRadialPrior(ceres::Problem& problem, const CameraBlock& camera, double* coeffs) {
+void AddNonRadialPrior(ceres::Problem& problem, const CameraBlock& camera,
+                       const std::vector<double*>& field) {
   if (!camera.field.grid() || camera.field_prior.rows() == 0) return;
-  const int block = int(camera.coeffs.size());
-  problem.AddResidualBlock(
-      new LinearPrior(camera.field_prior, block - camera.field.NumCoeffs(), block), nullptr,
-      coeffs);
+  const FieldBlocks blocks(camera.field);
+  std::vector<int> sizes;
+  for (int s = 0; s < blocks.count(); ++s) sizes.push_back(blocks.Size(s));
+  const std::vector<double*> segments(field.begin(), field.begin() + blocks.count());
+  problem.AddResidualBlock(new LinearPrior(camera.field_prior, sizes), nullptr, segments);
 }
 
 }  // namespace ws::calib

@@ -27,6 +27,7 @@
 #include <ceres/problem.h>
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "calib/solver/camera_block.h"
 
@@ -40,8 +41,10 @@ inline constexpr double kGaugeWeight = 10.0;
 // |R c|^2 = |M c|^2 in a third of the rows.
 Eigen::MatrixXd NonRadialPrior(const CameraBlock& camera, double lambda);
 
-// Adds e = camera.field_prior c on the field's part of `coeffs` (the block
-// of camera.coeffs) when the camera has a field.
-void AddNonRadialPrior(ceres::Problem& problem, const CameraBlock& camera, double* coeffs);
+// Adds e = camera.field_prior c when the camera has a field, c in the
+// blocks `field`: its segments (field_blocks.h) in order, every one, then
+// (ignored) the tilt's.
+void AddNonRadialPrior(ceres::Problem& problem, const CameraBlock& camera,
+                       const std::vector<double*>& field);
 
 }  // namespace ws::calib

@@ -47,9 +47,9 @@ enum class OutlierRule {
 enum class WarpRule {
   kFlat,       // the board held flat
   // The default: each camera's final solve is repeated with the bow free,
-  // and the bow kept only where its held-out RMS is lower beyond the
-  // fold-to-fold noise (ChooseWithinNoise, heldout.h: the flat board is the
-  // simpler candidate); reported with its standard deviation either way.
+  // and the bow kept where the rule of selection.h prefers it to the flat
+  // board (the simpler candidate); reported with its standard deviation
+  // either way.
   kAuto,
   kEstimated,  // always estimated
 };
@@ -58,10 +58,10 @@ enum class WarpRule {
 // number of estimated B-spline coefficients is chosen per camera from the
 // data, by K-fold cross-validation (heldout.h): the counts of kKnotLadder are
 // tried in turn, each solved from the last solution's curve, until two in a
-// row are no better than the best so far; the least of them whose held-out
-// RMS is within the fold-to-fold noise of the best is kept
-// (ChooseWithinNoise). A lens with a sharp knee needs more coefficients than
-// a gentle one; the held-out error, not the fitted one, shows where more
+// row are no better than the best so far; the count the rule of
+// selection.h keeps is solved (more coefficients only where they predict
+// better beyond the folds' spread). A lens with a
+// sharp knee needs more coefficients than a gentle one; the held-out error, not the fitted one, shows where more
 // stop paying (they only add variance where corners are few).
 // The counts tried, about 25 % apart, each from the curve of one solve with
 // kContinuationKnots: the radial continuation (mono_solve.h) needs a curve
@@ -87,21 +87,18 @@ inline constexpr double kDefaultSmoothness = 0.01;
 enum class FieldRule {
   kNone,  // radial only
   // The default: per camera, after the radial model, its knots and the
-  // board's bow are settled, first the sensor tilt: solved and
-  // cross-validated on the same corners, kept where it beats no tilt beyond
-  // the fold-to-fold noise (ChooseWithinNoise of the two). Then, where the
-  // held-out RMS exceeds the corners' own noise by more than it resolves,
-  // on top of what that kept, fields are solved and cross-validated in two
-  // ladders:
-  // the finest grid of kFieldLadder (rows in proportion to the image) at
-  // each weight of kFieldSmoothnessLadder, smooth to rough; then the
-  // coarser grids at the weight that predicted best (a coarse one may miss
-  // what a finer one finds); each until two in a row predict worse than
-  // its best beyond the fold-to-fold noise (over-fitting). The field of
-  // the lowest held-out RMS is kept where it beats no field beyond the
-  // fold-to-fold noise. Whether the lens has a non-radial part is a
-  // test, how fine a grid it needs the best prediction. A radially
-  // symmetric lens comes out as none. With several models, the non-radial
+  // board's bow are settled, by the rule of selection.h: first the sensor
+  // tilt against none, solved and cross-validated on the same corners.
+  // Then, where the held-out RMS exceeds the corners' own noise by more
+  // than it resolves, on top of what that kept, fields are solved and
+  // cross-validated in two ladders: the finest grid of kFieldLadder (rows
+  // in proportion to the image) at each weight of kFieldSmoothnessLadder,
+  // smooth to rough; then the coarser grids at the weight that predicted
+  // best (a coarse one may miss what a finer one finds); each until two in
+  // a row predict worse than its best beyond the spread (over-fitting).
+  // The field of the lowest held-out RMS (its grid and smoothness tuned by
+  // cross-validation) is then weighed against none. A radially symmetric
+  // lens comes out as none. With several models, the non-radial
   // part is chosen for the model the radial comparison chose (calibrate.h).
   kAuto,
   kGrid,  // given: field_tilt, and field_cols x field_rows control points (0 x 0: no field)
@@ -162,9 +159,22 @@ struct CalibrationOptions {
   int max_iterations = 100;
   int grid_rows = 6, grid_cols = 8;  // the residual pattern per image region
   // Receives one line per stage (initialisation, each solve, r_max), for
-  // logs; empty for none.
+  // logs; empty for none. Called one line at a time (stage_log.h), from
+  // whichever of the solver's threads.
   std::function<void(const std::string&)> progress;
 };
+
+// What one model's solve does, fixed once by its caller from the options:
+// the model and whether the solve chooses a non-radial part (none while
+// several models are compared: calibrate.h, CalibrateStereoAllModels).
+struct ModelPlan {
+  ModelKind model = ModelKind::kBspline;
+  FieldRule nonradial = FieldRule::kAuto;
+};
+// The plan of the options' own model and non-radial rule.
+inline ModelPlan PlanAsAsked(const CalibrationOptions& options) {
+  return {options.model, options.nonradial};
+}
 
 // Throws CalibrationError for options no calibration can use (knots out of
 // range, min_views below 3).

@@ -30,7 +30,7 @@ double DetectionNoise(const Problem& problem, int camera) {
 // Decides anew which of camera `camera`'s corners are outliers (their
 // inlier flag cleared) and which are not (options.h, OutlierRule); returns
 // how many flags changed.
-int RejectOutliers(Problem& problem, int camera, const CalibrationOptions& options) {
+int RejectOutliers(Problem& problem, int camera, const RejectionSettings& options) {
   std::vector<CornerResidual> residuals = Residuals(problem, camera);
   double threshold = 0;
   if (options.outliers == OutlierRule::kSigma) {
@@ -54,20 +54,36 @@ int RejectOutliers(Problem& problem, int camera, const CalibrationOptions& optio
 
 }  // namespace
 
-SolveOutcome SolveWithRejection(Problem& problem, const CalibrationOptions& options,
-                                const std::string& what) {
-  const SolveSettings settings{what, options.max_iterations, options.robust_loss,
-                               options.robust_scale_px};
-  SolveOutcome outcome = Solve(problem, settings);
-  const bool reject = options.outliers != OutlierRule::kOff;
+SolveSettings StageSettings(const CalibrationOptions& options, const std::string& what,
+                            int max_iterations) {
+  return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
+}
+
+RejectionSettings AsAsked(const CalibrationOptions& options, const std::string& what) {
+  return {StageSettings(options, what, options.max_iterations), options.outliers,
+          options.outlier_sigma, options.outlier_min_px, options.covariance};
+}
+
+RejectionSettings RejectingOutliers(const CalibrationOptions& options, const std::string& what) {
+  return {StageSettings(options, what, options.max_iterations), options.outliers,
+          options.outlier_sigma, options.outlier_min_px};
+}
+
+RejectionSettings OnTheCorners(const CalibrationOptions& options, const std::string& what) {
+  return {StageSettings(options, what, options.max_iterations)};
+}
+
+SolveOutcome SolveWithRejection(Problem& problem, const RejectionSettings& settings) {
+  SolveOutcome outcome = Solve(problem, settings.solve);
+  const bool reject = settings.outliers != OutlierRule::kOff;
   for (int round = 0; reject && round < kMaxRounds; ++round) {
     int changed = 0;
     for (size_t c = 0; c < problem.cameras.size(); ++c)
-      if (!problem.cameras[c].fixed) changed += RejectOutliers(problem, int(c), options);
+      if (!problem.cameras[c].fixed) changed += RejectOutliers(problem, int(c), settings);
     if (changed == 0) break;
-    outcome = Solve(problem, settings);
+    outcome = Solve(problem, settings.solve);
   }
-  if (options.covariance) EstimateStddev(problem, settings, &outcome);
+  if (settings.covariance) EstimateStddev(problem, settings.solve, &outcome);
   return outcome;
 }
 

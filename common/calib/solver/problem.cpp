@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "calib/solver/covariance.h"
+#include "calib/solver/field_blocks.h"
 #include "calib/solver/nonradial_prior.h"
 #include "calib/solver/residuals.h"
 #include "calib/solver/smoothness_prior.h"
@@ -28,6 +29,20 @@ ceres::LossFunction* MakeLoss(const SolveSettings& settings) {
   return nullptr;
 }
 
+// The parameter blocks of a camera's coefficients (residuals.h): the radial
+// model's, the field's segments (field_blocks.h), the tilt's; in the
+// coefficients' order, so that the free blocks list the camera's
+// parameters as ParamNames does. Pointers into camera.coeffs.
+std::vector<std::pair<double*, int>> CoeffBlocks(CameraBlock& camera) {
+  const int n = NumRadialCoeffs(camera);
+  double* c = camera.coeffs.data();
+  std::vector<std::pair<double*, int>> blocks = {{c, n}};
+  const FieldBlocks field(camera.field);
+  for (int s = 0; s < field.count(); ++s) blocks.emplace_back(c + n + field.Offset(s), field.Size(s));
+  if (camera.field.tilt()) blocks.emplace_back(c + n + camera.field.GridCoeffs(), 2);
+  return blocks;
+}
+
 // Every parameter block of a solve copied into one buffer in a fixed order
 // (cameras, extrinsic, poses in the order of the observations). Ceres orders
 // blocks by their address in places (the Schur elimination groups), so
@@ -44,7 +59,7 @@ class ParameterArena {
     };
     for (CameraBlock& camera : problem.cameras) {
       add(camera.intrinsics.data(), kNumIntrinsics);
-      add(camera.coeffs.data(), static_cast<int>(camera.coeffs.size()));
+      for (const auto& [block, size] : CoeffBlocks(camera)) add(block, size);
     }
     add(problem.extrinsic.data.data(), 6);
     add(problem.warp.data.data(), 2);
@@ -80,11 +95,22 @@ struct Built {
   std::vector<std::vector<int>> held;  // per free block: entries a manifold holds constant
 };
 
-// The inlier corners of an observation as cost functions: one for the view,
-// or one per corner with a robust loss (Ceres applies a loss per block).
+// The field's segments an observation's inlier corners read (FieldSupport).
+std::vector<int> ObservationSegments(const Problem& problem, const Observation& o) {
+  const CameraBlock& camera = problem.cameras[o.camera];
+  std::vector<double> pixels;
+  for (int i = 0; i < o.corners->size(); ++i)
+    if ((*o.inliers)[i]) pixels.insert(pixels.end(), {o.corners->image[i].x(), o.corners->image[i].y()});
+  return FieldSupport(camera.field, camera.intrinsics.data(), pixels);
+}
+
+// The inlier corners of an observation as cost functions over the field's
+// `segments`: one for the view, or one per corner with a robust loss (Ceres
+// applies a loss per block).
 std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem& problem,
                                                                    const Observation& o,
-                                                                   bool per_corner) {
+                                                                   bool per_corner,
+                                                                   const std::vector<int>& segments) {
   const CameraBlock& camera = problem.cameras[o.camera];
   std::vector<ViewPoints> groups(1);
   for (int i = 0; i < o.corners->size(); ++i) {
@@ -97,7 +123,7 @@ std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem
   if (groups.front().size() == 0) return costs;
   for (ViewPoints& points : groups) {
     points.max_radius = camera.max_radius;
-    costs.emplace_back(MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic));
+    costs.emplace_back(MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic, segments));
   }
   return costs;
 }
@@ -113,7 +139,11 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
     std::vector<double*> blocks{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
                                 arena[problem.warp.data.data()], arena[o.pose->data.data()]};
     if (o.via_extrinsic) blocks.push_back(arena[problem.extrinsic.data.data()]);
-    auto costs = ObservationCosts(problem, o, per_corner);
+    const std::vector<std::pair<double*, int>> coeff_blocks = CoeffBlocks(camera);
+    if (camera.field.tilt()) blocks.push_back(arena[coeff_blocks.back().first]);
+    const std::vector<int> segments = ObservationSegments(problem, o);
+    for (int segment : segments) blocks.push_back(arena[coeff_blocks[size_t(1 + segment)].first]);
+    auto costs = ObservationCosts(problem, o, per_corner, segments);
     bool valid = true;
     for (const auto& cost : costs) {
       std::vector<double> residuals(cost->num_residuals());
@@ -142,13 +172,28 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   for (size_t c = 0; c < problem.cameras.size(); ++c) {
     CameraBlock& camera = problem.cameras[c];
     double* intrinsics = arena[camera.intrinsics.data()];
-    double* coeffs = arena[camera.coeffs.data()];
     if (!cp.HasParameterBlock(intrinsics)) continue;
+    // The coefficient blocks: the radial one first, then the field's
+    // segments and the tilt (a segment no view reads is in the problem
+    // only through the field's prior).
+    std::vector<double*> coeffs;
+    for (const auto& [block, size] : CoeffBlocks(camera)) coeffs.push_back(arena[block]);
+    double* radial = coeffs.front();
+    const std::vector<double*> all_field(coeffs.begin() + 1, coeffs.end());
+    auto in_problem = [&](const std::vector<double*>& blocks) {
+      std::vector<double*> out;
+      for (double* block : blocks)
+        if (cp.HasParameterBlock(block)) out.push_back(block);
+      return out;
+    };
+    auto hold = [&](const std::vector<double*>& blocks) {
+      for (double* block : in_problem(blocks)) cp.SetParameterBlockConstant(block);
+    };
     if (camera.fixed) {
       cp.SetParameterBlockConstant(intrinsics);
-      cp.SetParameterBlockConstant(coeffs);
+      hold(coeffs);
     } else if (camera.pinhole_only) {
-      cp.SetParameterBlockConstant(coeffs);
+      hold(coeffs);
       cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, {kP1, kP2}));
     } else {
       std::vector<int> held_intrinsics, held_coeffs;
@@ -156,20 +201,29 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built) {
         held_intrinsics = {kP1, kP2};
         cp.SetManifold(intrinsics, new ceres::SubsetManifold(kNumIntrinsics, held_intrinsics));
       }
-      const int n = static_cast<int>(camera.coeffs.size());
-      AddSmoothnessPrior(cp, camera.model, coeffs, n, camera.prior_weight);
-      AddNonRadialPrior(cp, camera, coeffs);
+      const int n = NumRadialCoeffs(camera);
+      AddSmoothnessPrior(cp, camera.model, radial, n, camera.prior_weight);
+      AddNonRadialPrior(cp, camera, all_field);
+      const std::vector<double*> field = in_problem(all_field);
       if (camera.free_coeffs == 0) {
-        cp.SetParameterBlockConstant(coeffs);
+        cp.SetParameterBlockConstant(radial);
       } else if (camera.free_coeffs > 0 && camera.free_coeffs < n) {
         for (int k = camera.free_coeffs; k < n; ++k) held_coeffs.push_back(k);
-        cp.SetManifold(coeffs, new ceres::SubsetManifold(n, held_coeffs));
+        cp.SetManifold(radial, new ceres::SubsetManifold(n, held_coeffs));
       }
-      for (auto [block, held] : {std::pair{intrinsics, held_intrinsics}, {coeffs, held_coeffs}}) {
-        built->free_blocks.push_back(block);
-        built->owner.push_back(int(c));
-        built->held.push_back(held);
+      built->free_blocks.push_back(intrinsics);
+      built->held.push_back(held_intrinsics);
+      built->free_blocks.push_back(radial);
+      built->held.push_back(held_coeffs);
+      if (camera.free_coeffs >= 0) {
+        hold(field);  // only the radial model's first coefficients free
+      } else {
+        for (double* block : field) {
+          built->free_blocks.push_back(block);
+          built->held.emplace_back();
+        }
       }
+      built->owner.resize(built->free_blocks.size(), int(c));
     }
   }
   double* extrinsic = arena[problem.extrinsic.data.data()];

@@ -6,13 +6,15 @@
 // blocks instead of thousands; with a robust loss each corner is its own
 // block, since Ceres applies a loss to a whole block.
 //
-// Parameter blocks (all double arrays owned by the caller):
+// Parameter blocks (all double arrays owned by the caller), in this order:
 //   intrinsics[6]  {fx, fy, cx, cy, p1, p2}         (models/projection.h)
-//   coeffs[N]      the model's estimated coefficients, then the non-radial
-//                  part's (F's, then tau_x, tau_y; N = model.NumCoeffs() + field.NumCoeffs())
+//   radial[N]      the model's estimated coefficients (N = model.NumCoeffs())
+//   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
 //   pose[6]        board -> camera (pose.h)
 //   extrinsic[6]   left camera -> right camera, X_right = R X_left + T (stereo)
-//   warp[2]        the board's deflection {x2, y2} (board_warp.h), usually held at 0
+//   tilt[2]        tau_x, tau_y, where the non-radial part has a sensor tilt
+//   segments       the non-radial field's segments the view's corners read
+//                  (field_blocks.h), in order
 //
 // The derivatives are automatic (Ceres Jets) and exact, but a corner is not
 // differentiated by every coefficient: its residual reads only the model's
@@ -39,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+#include "calib/solver/field_blocks.h"
 #include "models/model_registry.h"
 #include "models/projection.h"
 #include "models/scalar_part.h"
@@ -63,13 +66,15 @@ struct ViewPoints {
   }
 };
 
-// One view's corners as a cost over (intrinsics, coeffs, warp, pose) or,
-// with kViaExtrinsic, (intrinsics, coeffs, warp, pose, extrinsic): a board
+// One view's corners as a cost over (intrinsics, radial, warp, pose) or,
+// with kViaExtrinsic, (intrinsics, radial, warp, pose, extrinsic): a board
 // posed in the left camera's frame seen by the right camera,
-// X_right = R_e (R_b X + t_b) + T_e. L >= model.NumLocalCoeffs() is the
-// Jet's room for the local coefficients. Evaluate fails if a corner has no
-// projection (a pinhole model: behind the camera) or its ideal radius
-// (radial_coordinate.h) exceeds points.max_radius.
+// X_right = R_e (R_b X + t_b) + T_e; then the tilt and the field's segments
+// `segments` (above). L >= model.NumLocalCoeffs() is the Jet's room for the
+// local coefficients. Evaluate fails if a corner has no projection (a
+// pinhole model: behind the camera), its ideal radius (radial_coordinate.h)
+// exceeds points.max_radius, or it reads a control point of a segment the
+// view was not given.
 //
 // The chain rule is split at the ideal point (x, y): the rig's blocks (warp,
 // pose, extrinsic) reach the pixel only through it, so one Jet carries them
@@ -79,26 +84,38 @@ template <class Model, bool kViaExtrinsic, int L>
 class ViewCost final : public ceres::CostFunction {
  public:
   // Keeps pointers to `model` and `field`.
-  ViewCost(const Model& model, const NonRadialField& field, ViewPoints points)
-      : model_(&model), field_(&field), points_(std::move(points)) {
+  ViewCost(const Model& model, const NonRadialField& field, ViewPoints points,
+           std::vector<int> segments)
+      : model_(&model), field_(&field), blocks_(field), points_(std::move(points)),
+        segments_(std::move(segments)) {
     set_num_residuals(2 * points_.size());
-    for (int size : {int(kNumIntrinsics), model.NumCoeffs() + field.NumCoeffs(), 2, 6})
-      AddBlock(size);
+    for (int size : {int(kNumIntrinsics), model.NumCoeffs(), 2, 6}) AddBlock(size);
     if (kViaExtrinsic) AddBlock(6);
+    tilt_at_ = field.tilt() ? AddBlock(2) : -1;
+    slot_.assign(size_t(blocks_.count()), -1);
+    for (int segment : segments_) slot_[size_t(segment)] = AddBlock(blocks_.Size(segment));
   }
 
   bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
+    const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
+    std::vector<double> all;
+    Gather(p, &all);
     if (jacobians == nullptr) {
       double R[9], t[3], ideal[2];
       BoardToCamera(p[3], kViaExtrinsic ? p[4] : nullptr, R, t);
       for (int i = 0; i < points_.size(); ++i) {
         if (!Ideal(i, p[2], R, t, ideal)) return false;
-        ProjectIdeal(*model_, *field_, p[0], p[1], ideal, residuals + 2 * i);
+        ProjectIdeal(*model_, *field_, p[0], all.data(), ideal, residuals + 2 * i);
         residuals[2 * i] -= points_.image[2 * i];
         residuals[2 * i + 1] -= points_.image[2 * i + 1];
+        if (!std::isfinite(residuals[2 * i]) || !std::isfinite(residuals[2 * i + 1])) return false;
       }
       return true;
     }
+    const int rows = num_residuals();
+    for (size_t b = 1; b < parameter_block_sizes().size(); ++b)
+      if (jacobians[b] && int(b) != 2 && int(b) != 3 && !(kViaExtrinsic && b == 4))
+        std::fill(jacobians[b], jacobians[b] + rows * parameter_block_sizes()[b], 0.0);
     RigJet warp[2], pose[6], extrinsic[6], R[9], t[3];
     Seed(p[2], 2, kWarpAt, warp);
     Seed(p[3], 6, kPoseAt, pose);
@@ -106,12 +123,11 @@ class ViewCost final : public ceres::CostFunction {
     BoardToCamera(pose, kViaExtrinsic ? extrinsic : nullptr, R, t);
     LensJet intrinsics[kNumIntrinsics];
     Seed(p[0], kNumIntrinsics, kIntrinsicsAt, intrinsics);
-    const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
-    const int all = n + field_->NumCoeffs(), half = field_->GridCoeffs() / 2;
-    const double* field = p[1] + n;
+    const int half = field_->GridCoeffs() / 2;
+    const double* field = all.data() + n;
     std::vector<LensJet> coeffs(p[1], p[1] + n);  // constants but for a corner's local ones
     LensJet tau[2];
-    if (field_->tilt()) Seed(field + field_->GridCoeffs(), 2, kTiltAt, tau);
+    if (tilt_at_ >= 0) Seed(p[tilt_at_], 2, kTiltAt, tau);
     for (int i = 0; i < points_.size(); ++i) {
       RigJet ideal[2];
       if (!Ideal(i, warp, R, t, ideal)) return false;
@@ -124,7 +140,7 @@ class ViewCost final : public ceres::CostFunction {
       DistortIdeal(*model_, intrinsics, coeffs.data(), lens_ideal, undistorted);
       for (int j = 0; j < local; ++j)
         if (in_range(j)) coeffs[first + j].v[kLocalAt + j] = 0.0;
-      if (field_->tilt()) {  // the tilted point, tau_x, tau_y in the Jet
+      if (tilt_at_ >= 0) {  // the tilted point, tau_x, tau_y in the Jet
         TiltPoint(tau, undistorted, distorted);
       } else {
         distorted[0] = undistorted[0];
@@ -141,6 +157,7 @@ class ViewCost final : public ceres::CostFunction {
             by_s[c] += coeff * basis.by_s[k];
             by_t[c] += coeff * basis.by_t[k];
           }
+        if (!std::isfinite(f[0]) || !std::isfinite(f[1])) return false;  // a segment not given
         const LensJet d[2] = {distorted[0], distorted[1]};
         for (int c = 0; c < 2; ++c)
           distorted[c] = d[c] + by_s[c] * (d[0] - d[0].a) + by_t[c] * (d[1] - d[1].a) + f[c];
@@ -151,15 +168,17 @@ class ViewCost final : public ceres::CostFunction {
         const LensJet& q = pixel[k];
         residuals[row] = q.a - points_.image[row];
         if (double* J = jacobians[0]) std::copy_n(&q.v[kIntrinsicsAt], kNumIntrinsics, J + row * kNumIntrinsics);
-        if (double* J = jacobians[1] ? jacobians[1] + row * all : nullptr) {
-          std::fill(J, J + all, 0.0);
+        if (double* J = jacobians[1])
           for (int j = 0; j < local; ++j)
-            if (in_range(j)) J[first + j] = q.v[kLocalAt + j];
-          // d pixel_k / d c^k_ij = f_k N_i M_j (fx or fy).
-          for (int j = 0; j < NonRadialField::kLocal && field_->grid(); ++j)
-            J[n + k * half + basis.index[j]] = intrinsics[k == 0 ? kFx : kFy].a * basis.weight[j];
-          if (field_->tilt()) std::copy_n(&q.v[kTiltAt], 2, J + n + 2 * half);
+            if (in_range(j)) J[row * n + first + j] = q.v[kLocalAt + j];
+        // d pixel_k / d c^k_ij = f_k N_i M_j (fx or fy).
+        for (int j = 0; j < NonRadialField::kLocal && field_->grid(); ++j) {
+          const int segment = blocks_.SegmentOf(k, basis.index[j]);
+          if (double* J = jacobians[slot_[size_t(segment)]])
+            J[row * blocks_.Size(segment) + blocks_.PositionOf(basis.index[j])] =
+                intrinsics[k == 0 ? kFx : kFy].a * basis.weight[j];
         }
+        if (tilt_at_ >= 0 && jacobians[tilt_at_]) std::copy_n(&q.v[kTiltAt], 2, jacobians[tilt_at_] + row * 2);
         const RigJet by_rig = q.v[kXAt] * ideal[0] + q.v[kXAt + 1] * ideal[1];
         Scatter(by_rig, kWarpAt, 2, row, jacobians[2]);
         Scatter(by_rig, kPoseAt, 6, row, jacobians[3]);
@@ -178,7 +197,25 @@ class ViewCost final : public ceres::CostFunction {
   static constexpr int kTiltAt = kLocalAt + L;  // tau_x, tau_y (a sensor tilt)
   using LensJet = ceres::Jet<double, kTiltAt + 2>;
 
-  void AddBlock(int size) { mutable_parameter_block_sizes()->push_back(size); }
+  // Adds a parameter block; returns its index.
+  int AddBlock(int size) {
+    mutable_parameter_block_sizes()->push_back(size);
+    return int(parameter_block_sizes().size()) - 1;
+  }
+
+  // The model's and the field's coefficients in one array, as ProjectIdeal
+  // reads them: the radial block, the view's segments, the tilt; the
+  // control points of segments the view was not given are NaN, so a corner
+  // that reads one fails the evaluation.
+  void Gather(double const* const* p, std::vector<double>* all) const {
+    const int n = model_->NumCoeffs();
+    all->assign(size_t(n + field_->NumCoeffs()), NAN);
+    std::copy_n(p[1], n, all->begin());
+    for (int segment : segments_)
+      std::copy_n(p[slot_[size_t(segment)]], blocks_.Size(segment),
+                  all->begin() + n + blocks_.Offset(segment));
+    if (tilt_at_ >= 0) std::copy_n(p[tilt_at_], 2, all->begin() + n + field_->GridCoeffs());
+  }
 
   template <class Jet>
   static void Seed(const double* values, int size, int at, Jet* out) {
@@ -222,23 +259,29 @@ class ViewCost final : public ceres::CostFunction {
 
   const Model* model_;
   const NonRadialField* field_;
+  FieldBlocks blocks_;
   ViewPoints points_;
+  std::vector<int> segments_;
+  int tilt_at_ = -1;        // the tilt's block, -1: none
+  std::vector<int> slot_;   // per segment of the field: its block, -1: not this view's
 };
 
 // The cost of one view's corners for any model with its non-radial field
-// (ViewCost; via_extrinsic: the board pose is the left camera's). The Jet is
-// sized for a cubic spline's 4 local coefficients, or the model's bound for
-// any other.
+// (ViewCost; via_extrinsic: the board pose is the left camera's; segments:
+// the field's the view reads, FieldSupport). The Jet is sized for a cubic
+// spline's 4 local coefficients, or the model's bound for any other.
 inline ceres::CostFunction* MakeCost(const AnyDistortionModel& model, const NonRadialField& field,
-                                     ViewPoints points, bool via_extrinsic) {
+                                     ViewPoints points, bool via_extrinsic,
+                                     std::vector<int> segments) {
   return std::visit(
       [&](const auto& m) -> ceres::CostFunction* {
         using Model = std::decay_t<decltype(m)>;
         constexpr int kCubic = 4, kMax = Model::kMaxLocalCoeffs;
         auto make = [&](auto width) -> ceres::CostFunction* {
           constexpr int kWidth = decltype(width)::value;
-          if (via_extrinsic) return new ViewCost<Model, true, kWidth>(m, field, std::move(points));
-          return new ViewCost<Model, false, kWidth>(m, field, std::move(points));
+          if (via_extrinsic)
+            return new ViewCost<Model, true, kWidth>(m, field, std::move(points), std::move(segments));
+          return new ViewCost<Model, false, kWidth>(m, field, std::move(points), std::move(segments));
         };
         if constexpr (kMax > kCubic)
           if (m.NumLocalCoeffs() <= kCubic) return make(std::integral_constant<int, kCubic>());

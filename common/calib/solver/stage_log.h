@@ -2,6 +2,7 @@
 // appear in them and in error messages.
 #pragma once
 
+#include <mutex>
 #include <sstream>
 #include <string>
 
@@ -9,8 +10,13 @@
 
 namespace ws::calib {
 
+// One progress line; the lines of solves running at once (each camera of a
+// rig, several models) are passed on one at a time.
 inline void Say(const CalibrationOptions& options, const std::string& line) {
-  if (options.progress) options.progress(line);
+  static std::mutex mutex;
+  if (!options.progress) return;
+  std::lock_guard<std::mutex> lock(mutex);
+  options.progress(line);
 }
 
 inline std::string Fixed(double value, int digits = 4) {

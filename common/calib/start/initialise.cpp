@@ -105,10 +105,10 @@ Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
 
 }  // namespace
 
-Init Initialize(Prepared& p, const CalibrationOptions& options) {
+Init Initialize(Prepared& p, const CalibrationOptions& options, ModelKind kind) {
   if (p.width <= 0 || p.height <= 0)
     throw CalibrationError(p.name + " camera: no image size in the corners");
-  if (Traits(options.model).angle)
+  if (Traits(kind).angle)
     return InitializeAngle(p, options);
   const int n = static_cast<int>(p.views.size());
   Init init;

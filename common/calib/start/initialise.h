@@ -47,11 +47,11 @@ struct Init {
 
 // Homographies, Zhang's intrinsics and each view's pose; views whose
 // homography fails or whose pose puts the board behind the camera are
-// skipped. For an angle model (kb4, bspline_theta) the start of
+// skipped. For an angle model `kind` (kb4, bspline_theta) the start of
 // angle_start.h instead, with no homographies. Throws CalibrationError when
 // too few views remain or when the board planes are all within
 // options.min_view_angle_deg of parallel.
-Init Initialize(Prepared& prepared, const CalibrationOptions& options);
+Init Initialize(Prepared& prepared, const CalibrationOptions& options, ModelKind kind);
 
 // The camera of the start: the model of `kind` with only fx fy cx cy free
 // (PinholeBlock) on the start's lens: D = 0 (a pinhole for the
