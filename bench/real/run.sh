@@ -10,13 +10,17 @@
 #   - cv::fisheye::calibrate on OpenCV's detections;
 #   - mrcal-calibrate-cameras (its defaults: outlier rejection, board warp)
 #     on the same corners.vnl, LENSMODEL_SPLINED_STEREOGRAPHIC and
-#     LENSMODEL_OPENCV8, each camera alone and as one stereo solve.
+#     LENSMODEL_OPENCV8, each camera alone and as one stereo solve of the
+#     pairs (--pairs).
 # Per camera: views, outliers and their share, fitted RMS per corner (mrcal
 # prints it per coordinate; bench/mrcal/mrcal_rms.py gives it per corner),
 # held-out RMS by BabelCalib's protocol (cameras fixed, each test pose
 # fitted; trained on the even views and tested on the odd ones, babelcalib
 # on its own split), and each solve's wall-clock seconds.
 #   bench/real/run.sh [ros] [babelcalib]     (default: both)
+# OTHER_TREE=DIR also runs another checkout's stereo-calibrate (built in
+# DIR/build) on the same corners, its rows labelled "baseline": a before and
+# after in the same run.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BIN=build/bin
@@ -36,22 +40,35 @@ fi
 # The seconds since START (date +%s.%N).
 since() { awk -v end="$(date +%s.%N)" -v start="$1" 'BEGIN { printf "%.1f", end - start }'; }
 
-# stereo-calibrate with the defaults on LOG into PREFIX.{yaml,json}; prints
-# the report's rows under LABEL and the seconds: LABEL LOG PREFIX
+# stereo-calibrate (BIN's) with the defaults on LOG into PREFIX.{yaml,json};
+# prints the report's rows under LABEL and the seconds: LABEL LOG PREFIX [BIN]
 ws_solve() {
-  local start
+  local start bin=${4:-$BIN}
   start=$(date +%s.%N)
-  $BIN/stereo-calibrate --once "${DEFAULTS[@]}" --in-url "$(url "$2" speed=0)" --out "$3.yaml" \
+  "$bin/stereo-calibrate" --once "${DEFAULTS[@]}" --in-url "$(url "$2" speed=0)" --out "$3.yaml" \
     --report "$3.json" --out-url "$(url "$3.lcmlog" mode=w)" --log-dir "$(dirname "$3")" --quiet 2> "$3.err" ||
     { cat "$3.err"; return 1; }
   /usr/bin/python3 bench/real/report_rows.py "$3.json" "$1"
   echo "$1 solve $(since "$start") s"
 }
 
-# widestereo trained on TRAIN and held out on TEST: LABEL TRAIN TEST PREFIX
+# widestereo trained on TRAIN and held out on TEST: LABEL TRAIN TEST PREFIX [BIN]
 ws_heldout() {
-  ws_solve "$1 (train)" "$2" "$4" > /dev/null
+  ws_solve "$1 (train)" "$2" "$4" "${5:-}" > /dev/null
   $BENCH/heldout --test "$3" --calib "$4.yaml" --report "$4.json" | sed "s/^/$1 /"
+}
+
+# ws_solve, then with OTHER_TREE the other checkout's on the same corners
+# (PREFIX-baseline): LABEL LOG PREFIX
+ws_solve_both() {
+  ws_solve "$@"
+  [ -z "${OTHER_TREE:-}" ] || ws_solve "baseline $1" "$2" "$3-baseline" "$OTHER_TREE/build/bin"
+}
+
+# The same for ws_heldout: LABEL TRAIN TEST PREFIX
+ws_heldout_both() {
+  ws_heldout "$@"
+  [ -z "${OTHER_TREE:-}" ] || ws_heldout "baseline $1" "$2" "$3" "$4-baseline" "$OTHER_TREE/build/bin"
 }
 
 # A corners.vnl of a stereo set as a STEREO_CORNERS log, paired by frame:
@@ -84,10 +101,10 @@ mrcal_rows() {
       /usr/bin/python3 bench/mrcal/mrcal_heldout.py "$out-train/camera-0.cameramodel" "$out-test.vnl" \
         "${GRID_SIZE%x*}" "${GRID_SIZE#*x}" "$GRID_SPACING" "$camera" | sed "s/^mrcal/mrcal $name/"
   done
-  if (($# > 1)); then
+  if (($# > 1)); then  # one stereo solve of the pairs (--pairs)
     out=$dir/mrcal-$name-stereo
-    mrcal_solve "$vnl" "$out" "$width" "$height" "$focal" "$model" "${@/%/-*.png}" &&
-      /usr/bin/python3 bench/mrcal/mrcal_rms.py "$out/camera-0.cameramodel" "$@" | sed "s/^mrcal/mrcal stereo/" &&
+    mrcal_solve "$vnl" "$out" "$width" "$height" "$focal" "$model" --pairs "${@/%/-*.png}" &&
+      /usr/bin/python3 bench/mrcal/mrcal_rms.py "$out/camera0-0.cameramodel" "$@" | sed "s/^mrcal/mrcal stereo/" &&
       echo "mrcal $name stereo solve $(cat "$out/seconds") s"
   fi
   return 0
@@ -110,10 +127,11 @@ stereo_set() {
     every_other "$dir/$detector/corners.vnl" 1 > "$dir/$detector/test.vnl"
     for part in corners train test; do import_pairs "$dir/$detector/$part.vnl" "$dir/$detector/$part-imported.lcmlog" "$size"; done
   done
-  ws_solve "widestereo (own corners)" "$dir/own/corners.lcmlog" "$dir/own/ws"
-  ws_heldout "widestereo (own corners)" "$dir/own/train-imported.lcmlog" "$dir/own/test-imported.lcmlog" "$dir/own/ws-train"
-  ws_solve "widestereo (OpenCV's corners)" "$dir/opencv/corners-imported.lcmlog" "$dir/opencv/ws"
-  ws_heldout "widestereo (OpenCV's corners)" "$dir/opencv/train-imported.lcmlog" "$dir/opencv/test-imported.lcmlog" \
+  ws_solve_both "widestereo (own corners)" "$dir/own/corners.lcmlog" "$dir/own/ws"
+  ws_heldout_both "widestereo (own corners)" "$dir/own/train-imported.lcmlog" "$dir/own/test-imported.lcmlog" \
+    "$dir/own/ws-train"
+  ws_solve_both "widestereo (OpenCV's corners)" "$dir/opencv/corners-imported.lcmlog" "$dir/opencv/ws"
+  ws_heldout_both "widestereo (OpenCV's corners)" "$dir/opencv/train-imported.lcmlog" "$dir/opencv/test-imported.lcmlog" \
     "$dir/opencv/ws-train"
   $BENCH/heldout --opencv-fisheye "$dir/opencv/corners-imported.lcmlog" --test "$dir/opencv/corners-imported.lcmlog" |
     grep "cv::fisheye RMS" || true
@@ -142,9 +160,11 @@ babelcalib_set() {
     --in-url "$(url "$dir/images.lcmlog" speed=0)" --out-url "$(url "$dir/opencv-corners.lcmlog" mode=w)"
   echo "OpenCV's detector: $(grep -o 'boards left [0-9]*' "$dir/stereo-detect.log" | tail -1) of 25 images" \
     "(the tags in the board's squares break its quads): every tool gets BabelCalib's corners"
-  ws_solve "widestereo (BabelCalib's corners)" "$dir/train/corners.lcmlog" "$dir/ws"
-  $BENCH/heldout --test "$dir/test/corners.lcmlog" --calib "$dir/ws.yaml" --report "$dir/ws.json" |
-    sed "s/^/widestereo (BabelCalib's corners) /"
+  ws_solve_both "widestereo (BabelCalib's corners)" "$dir/train/corners.lcmlog" "$dir/ws"
+  for prefix in ws ${OTHER_TREE:+ws-baseline}; do
+    $BENCH/heldout --test "$dir/test/corners.lcmlog" --calib "$dir/$prefix.yaml" --report "$dir/$prefix.json" |
+      sed "s/^/$([ $prefix = ws ] || echo 'baseline ')widestereo (BabelCalib's corners) /"
+  done
   $BENCH/heldout --opencv-fisheye "$dir/train/corners.lcmlog" --test "$dir/test/corners.lcmlog" | sed "s/^/cv::fisheye /"
   for model in "$(splined 200)" LENSMODEL_OPENCV8; do
     mrcal_rows "$dir" "$dir/train/corners.vnl" "$dir/train/corners.vnl" "$dir/test/corners.vnl" 1280 800 300 "$model" left
