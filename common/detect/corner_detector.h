@@ -16,6 +16,8 @@ namespace ws {
 struct BoardCorners {
   std::vector<int> ids;              // board corner ids (board_spec.h)
   std::vector<cv::Point2f> points;   // sub-pixel image positions, pixel centres at integers
+  int unrefined = 0;                 // corners found but dropped: their refinement failed
+                                     // (corner_refinement.h)
   bool empty() const { return ids.empty(); }
 };
 
