@@ -73,12 +73,16 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 // larger than 1.4 times its far ones) or lit unevenly does not give; the
 // 800-pixel copy loses boards whose far squares are only a few pixels.
 // Step 4 costs nothing on a frame steps 1-3 find a board in; on a frame
-// without a board it is most of the time spent (measured on OpenCV 4.6, one
-// core, bench/detect/README.md): 0.1 s on the opencv-doc left.jpg
-// (640 x 480), 1.9 s on its aloeL.jpg (1282 x 1110), 14 s on a dark 800 x
-// 503 frame of sensor noise (the normalisation stretches the noise into
-// countless small quads), where steps 1-3 take 0.02, 0.8-1 and 0.26 s.
-// Live, stereo-detect drops the frames that arrive meanwhile (corner_stage.h).
+// without a whole board it is most of the time spent. Measured
+// (bench/detect/README.md, OpenCV 4.6, 2 shared cores), step 4 against
+// steps 1-3 with the refinement: 0.24 against 0.06 s on the opencv-doc
+// left.jpg (612 x 459), 2.2 against 1.9 s on its aloeL.jpg (1282 x 1110),
+// 19 against 0.7 s on a dark 800 x 503 frame of sensor noise (the
+// normalisation stretches the noise into countless small quads), 73
+// against 8 s on a 1280 x 960 render of a board half outside the image;
+// the simulator's fisheye log (34 frames, 1280 x 960) took 72 s instead of
+// 9. Live, stereo-detect drops the frames that arrive meanwhile
+// (corner_stage.h).
 bool FindBoard(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
   constexpr int kSearchSide = 800;
   return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||

@@ -37,11 +37,11 @@
 // saddle fits found no good saddle, and cv::cornerSubPix returned its start
 // unchanged, as it does where its system is singular (a window inside one
 // square) or its point leaves the window, and the detectors' starts are
-// often whole pixels (a quad's vertices). Every fit moves a point by
-// floating-point arithmetic, so a refined point is never exactly whole. Such
-// a corner can be pixels off (one was 5.85 px off, inside a black square),
-// and both refinements have already been tried from the detector's point:
-// there is nothing left to redo it with.
+// often whole pixels (a quad's vertices). On a real image (its noise breaks
+// any exact symmetry) a fit that moves a point never lands it on whole
+// pixels. Such a corner can be pixels off (one was 5.85 px off, inside a
+// black square), and both refinements have already been tried from the
+// detector's point: there is nothing left to redo it with.
 #pragma once
 
 #include <vector>
