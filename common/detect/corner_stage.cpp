@@ -55,7 +55,7 @@ void CornerStage::Deliver(const widestereo::stereo_corners_t& corners, int unref
   if (unrefined > 0) {
     unrefined_ += unrefined;
     process_.log().Detail("frame " + std::to_string(corners.frame_id) + ": " + std::to_string(unrefined) +
-                        " corners dropped, their refinement failed (left at whole pixels)");
+                          " corners dropped, their refinement failed (left at whole pixels)");
   }
   if (corners.left.n > 0) left_boards_++;
   if (corners.right.n > 0) right_boards_++;
