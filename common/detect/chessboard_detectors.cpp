@@ -80,8 +80,9 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 // 19 against 0.7 s on a dark 800 x 503 frame of sensor noise (the
 // normalisation stretches the noise into countless small quads), 73
 // against 8 s on a 1280 x 960 render of a board half outside the image;
-// the simulator's fisheye log (34 frames, 1280 x 960) took 72 s instead of
-// 9. Live, stereo-detect drops the frames that arrive meanwhile
+// on two workers the simulator's default log (35 frames of 1280 x 960, 8
+// without a whole board) took 804 s instead of 42, its fisheye log 72 s
+// instead of 9. Live, stereo-detect drops the frames that arrive meanwhile
 // (corner_stage.h).
 bool FindBoard(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
   constexpr int kSearchSide = 800;
