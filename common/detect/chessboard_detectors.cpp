@@ -63,9 +63,10 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 //      pixels a side;
 //   3. the SB detector at full resolution: it finds boards the quads of 1
 //      and 2 miss (blurred, small or strongly curved squares);
-//   4. before giving up, OpenCV's own call with its default flags (adaptive
-//      threshold and normalisation, no FAST_CHECK) at full resolution, so
-//      that every board cv::findChessboardCorners finds is found.
+//   4. with BoardSearch::kEveryBoard only, before giving up, OpenCV's own
+//      call with its default flags (adaptive threshold and normalisation,
+//      no FAST_CHECK) at full resolution, so that every board
+//      cv::findChessboardCorners finds is found.
 // FAST_CHECK rejects boards the full search finds: it looks for at least
 // COLS x ROWS / 2 black and white squares whose sizes lie within a factor
 // 1.4 of each other, under one global threshold (OpenCV 4.6,
@@ -82,14 +83,17 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 // against 8 s on a 1280 x 960 render of a board half outside the image;
 // on two workers the simulator's default log (35 frames of 1280 x 960, 8
 // without a whole board) took 804 s instead of 42, its fisheye log 72 s
-// instead of 9. Live, stereo-detect drops the frames that arrive meanwhile
-// (corner_stage.h).
-bool FindBoard(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
+// instead of 9. Live, stereo-detect would drop the frames that arrive
+// meanwhile (corner_stage.h), so it keeps steps 1-3 (kFast): a board they
+// miss is seen again in the next frames. A folder of images for
+// calibration (stereo-calibrate --images) has no next frame, so it runs
+// step 4 too.
+bool FindBoard(const cv::Mat& gray, cv::Size pattern, BoardSearch search, std::vector<cv::Point2f>* points) {
   constexpr int kSearchSide = 800;
   return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
          AdaptiveSearch(gray, pattern, kSearchSide, points) ||
          cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
-         cv::findChessboardCorners(gray, pattern, *points);
+         (search == BoardSearch::kEveryBoard && cv::findChessboardCorners(gray, pattern, *points));
 }
 
 // The detector's corners to their saddle points (corner_refinement.h), each
@@ -115,7 +119,7 @@ BoardCorners SbChessboardDetector::Detect(const cv::Mat& gray) const {
 
 BoardCorners ClassicChessboardDetector::Detect(const cv::Mat& gray) const {
   std::vector<cv::Point2f> points;
-  if (!FindBoard(gray, pattern_, &points)) return {};
+  if (!FindBoard(gray, pattern_, search_, &points)) return {};
   return RefinedGrid(gray, pattern_, std::move(points));
 }
 

@@ -44,9 +44,10 @@ bool ShowsBoard(cv::Size image, const BoardSpec& board) {
 
 }  // namespace
 
-StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method, int64_t max_image_pixels)
+StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method, BoardSearch search,
+                                       int64_t max_image_pixels)
     : board_(std::move(board)),
-      detector_(MakeCornerDetector(board_, method)),
+      detector_(MakeCornerDetector(board_, method, search)),
       max_image_pixels_(max_image_pixels) {}
 
 widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_frame_t& frame,

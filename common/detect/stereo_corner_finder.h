@@ -14,8 +14,9 @@ namespace ws {
 
 class StereoCornerFinder {
  public:
-  // Images of more than max_image_pixels are refused before they are decoded.
-  StereoCornerFinder(BoardSpec board, ChessboardMethod method,
+  // Images of more than max_image_pixels are refused before they are decoded;
+  // `search` is MakeCornerDetector's (corner_detector.h).
+  StereoCornerFinder(BoardSpec board, ChessboardMethod method, BoardSearch search = BoardSearch::kFast,
                      int64_t max_image_pixels = kDefaultMaxImagePixels);
 
   // The corners of both images, with the frame's utime and frame_id. A camera
