@@ -60,6 +60,7 @@ BoardCorners CharucoDetector::Detect(const cv::Mat& gray) const {
     corners.ids.push_back(ids[i]);
     corners.points.push_back(points[i]);
   }
+  corners.unrefined = DropUnrefined(corners.ids, corners.points);
   return corners;
 }
 

@@ -59,28 +59,54 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 
 // Where the board is, by the cheapest search that finds it:
 //   1. one global threshold (the fast path), at full resolution;
-//   2. the adaptive threshold on a copy of at most 800 pixels a side;
-//   3. the SB detector at full resolution: it finds boards the quads of
-//      1 and 2 miss (blurred, small or strongly curved squares).
-// A frame without a board goes through all three (about 0.1, 1 and 0.2 s at
-// 1280 x 960). The adaptive threshold at full resolution is left out: on a
-// 1280 x 960 simulator frame holding part of a board it took 8 s (against
-// 1 s for step 2), and on the real sets of bench/real/README.md steps 1-3
-// find every board it finds.
-bool FindBoard(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>* points) {
+//   2. the adaptive threshold with FAST_CHECK on a copy of at most 800
+//      pixels a side;
+//   3. the SB detector at full resolution: it finds boards the quads of 1
+//      and 2 miss (blurred, small or strongly curved squares);
+//   4. with BoardSearch::kEveryBoard only, before giving up, OpenCV's own
+//      call with its default flags (adaptive threshold and normalisation,
+//      no FAST_CHECK) at full resolution, so that every board
+//      cv::findChessboardCorners finds is found.
+// FAST_CHECK rejects boards the full search finds: it looks for at least
+// COLS x ROWS / 2 black and white squares whose sizes lie within a factor
+// 1.4 of each other, under one global threshold (OpenCV 4.6,
+// checkchessboard.cpp), which a board seen steeply (its near squares
+// larger than 1.4 times its far ones) or lit unevenly does not give; the
+// 800-pixel copy loses boards whose far squares are only a few pixels.
+// Step 4 costs nothing on a frame steps 1-3 find a board in; on a frame
+// without a whole board it is most of the time spent. Measured
+// (bench/detect/README.md, OpenCV 4.6, 2 shared cores), step 4 against
+// steps 1-3 with the refinement: 0.24 against 0.06 s on the opencv-doc
+// left.jpg (612 x 459), 2.2 against 1.9 s on its aloeL.jpg (1282 x 1110),
+// 19 against 0.7 s on a dark 800 x 503 frame of sensor noise (the
+// normalisation stretches the noise into countless small quads), 73
+// against 8 s on a 1280 x 960 render of a board half outside the image;
+// on two workers the simulator's default log (35 frames of 1280 x 960, 8
+// without a whole board) took 804 s instead of 42, its fisheye log 72 s
+// instead of 9. Live, stereo-detect would drop the frames that arrive
+// meanwhile (corner_stage.h), so it keeps steps 1-3 (kFast): a board they
+// miss is seen again in the next frames. A folder of images for
+// calibration (stereo-calibrate --images) has no next frame, so it runs
+// step 4 too.
+bool FindBoard(const cv::Mat& gray, cv::Size pattern, BoardSearch search, std::vector<cv::Point2f>* points) {
   constexpr int kSearchSide = 800;
   return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
          AdaptiveSearch(gray, pattern, kSearchSide, points) ||
-         cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE);
+         cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
+         (search == BoardSearch::kEveryBoard && cv::findChessboardCorners(gray, pattern, *points));
 }
 
 // The detector's corners to their saddle points (corner_refinement.h), each
-// fit starting there; cornerSubPix's corners where no fit is good.
-void RefineFromDetection(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f>& points) {
+// fit starting there, cornerSubPix's corners where no fit is good; in grid
+// order, without the corners whose refinement failed.
+BoardCorners RefinedGrid(const cv::Mat& gray, cv::Size pattern, std::vector<cv::Point2f> points) {
   const std::vector<double> spacing = NearestSpacing(points, pattern);
   std::vector<cv::Point2f> subpix = points;
   CornerSubPix(gray, subpix, spacing);
   RefineCorners(gray, points, spacing, subpix);
+  BoardCorners corners = CompleteGrid(gray, pattern, std::move(points));
+  corners.unrefined = DropUnrefined(corners.ids, corners.points);
+  return corners;
 }
 
 }  // namespace
@@ -88,15 +114,13 @@ void RefineFromDetection(const cv::Mat& gray, cv::Size pattern, std::vector<cv::
 BoardCorners SbChessboardDetector::Detect(const cv::Mat& gray) const {
   std::vector<cv::Point2f> points;
   if (!cv::findChessboardCornersSB(gray, pattern_, points, cv::CALIB_CB_NORMALIZE_IMAGE)) return {};
-  RefineFromDetection(gray, pattern_, points);
-  return CompleteGrid(gray, pattern_, std::move(points));
+  return RefinedGrid(gray, pattern_, std::move(points));
 }
 
 BoardCorners ClassicChessboardDetector::Detect(const cv::Mat& gray) const {
   std::vector<cv::Point2f> points;
-  if (!FindBoard(gray, pattern_, &points)) return {};
-  RefineFromDetection(gray, pattern_, points);
-  return CompleteGrid(gray, pattern_, std::move(points));
+  if (!FindBoard(gray, pattern_, search_, &points)) return {};
+  return RefinedGrid(gray, pattern_, std::move(points));
 }
 
 BoardCorners OpenCvChessboardDetector::Detect(const cv::Mat& gray) const {

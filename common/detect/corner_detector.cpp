@@ -23,11 +23,12 @@ const char* ChessboardMethodName(ChessboardMethod method) {
   return "?";
 }
 
-std::unique_ptr<CornerDetector> MakeCornerDetector(const BoardSpec& board, ChessboardMethod method) {
+std::unique_ptr<CornerDetector> MakeCornerDetector(const BoardSpec& board, ChessboardMethod method,
+                                                   BoardSearch search) {
   if (board.type == BoardType::charuco) return std::make_unique<CharucoDetector>(board);
   if (method == ChessboardMethod::sb) return std::make_unique<SbChessboardDetector>(board);
   if (method == ChessboardMethod::opencv) return std::make_unique<OpenCvChessboardDetector>(board);
-  return std::make_unique<ClassicChessboardDetector>(board);
+  return std::make_unique<ClassicChessboardDetector>(board, search);
 }
 
 }  // namespace ws

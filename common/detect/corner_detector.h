@@ -16,6 +16,8 @@ namespace ws {
 struct BoardCorners {
   std::vector<int> ids;              // board corner ids (board_spec.h)
   std::vector<cv::Point2f> points;   // sub-pixel image positions, pixel centres at integers
+  int unrefined = 0;                 // corners found but dropped: their refinement failed
+                                     // (corner_refinement.h)
   bool empty() const { return ids.empty(); }
 };
 
@@ -43,9 +45,21 @@ inline constexpr ChessboardMethod kDefaultChessboardMethod = ChessboardMethod::c
 ChessboardMethod ParseChessboardMethod(const std::string& name);
 const char* ChessboardMethodName(ChessboardMethod method);
 
+// How far the classic detector searches before it gives up on an image
+// (chessboard_detectors.cpp). The last search finds the boards the others
+// miss but costs seconds on every image without a whole board, over a
+// minute at 1280 x 960 (bench/detect/README.md): worth it where every image
+// counts, not on a live stream, where the next frame replaces a missed one.
+enum class BoardSearch {
+  kFast,        // the three fast searches: live and replayed logs (stereo-detect)
+  kEveryBoard,  // and then OpenCV's own call: a folder of images (stereo-calibrate --images)
+};
+
 // A detector for `board`; `method` chooses the chessboard detector (ChArUco
-// boards have one).
+// boards have one), `search` how far the classic one searches (the others
+// ignore it).
 std::unique_ptr<CornerDetector> MakeCornerDetector(const BoardSpec& board,
-                                                   ChessboardMethod method = kDefaultChessboardMethod);
+                                                   ChessboardMethod method = kDefaultChessboardMethod,
+                                                   BoardSearch search = BoardSearch::kFast);
 
 }  // namespace ws

@@ -97,4 +97,20 @@ int RefineCorners(const cv::Mat& gray, std::vector<cv::Point2f>& points, const s
   return fell_back;
 }
 
+bool Unrefined(cv::Point2f point) { return point.x == std::floor(point.x) && point.y == std::floor(point.y); }
+
+int DropUnrefined(std::vector<int>& ids, std::vector<cv::Point2f>& points) {
+  CV_Assert(ids.size() == points.size());
+  size_t kept = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (Unrefined(points[i])) continue;
+    ids[kept] = ids[i];
+    points[kept++] = points[i];
+  }
+  const int dropped = int(points.size() - kept);
+  ids.resize(kept);
+  points.resize(kept);
+  return dropped;
+}
+
 }  // namespace ws

@@ -31,6 +31,17 @@
 // (Immerkaer, "Fast noise variance estimation", CVIU 1996, with the median
 // of the absolute response for robustness to the board's edges), together
 // with the 8-bit rounding's 1/12 grey level squared.
+//
+// A corner that ends at whole-pixel coordinates (x and y both integers) has
+// failed its refinement, and the detectors drop it (DropUnrefined): the
+// saddle fits found no good saddle, and cv::cornerSubPix returned its start
+// unchanged, as it does where its system is singular (a window inside one
+// square) or its point leaves the window, and the detectors' starts are
+// often whole pixels (a quad's vertices). On a real image (its noise breaks
+// any exact symmetry) a fit that moves a point never lands it on whole
+// pixels. Such a corner can be pixels off (one was 5.85 px off, inside a
+// black square), and both refinements have already been tried from the
+// detector's point: there is nothing left to redo it with.
 #pragma once
 
 #include <vector>
@@ -54,5 +65,12 @@ double ImageNoise(const cv::Mat& gray, cv::Rect region);
 // nearest other corner of the board. Returns how many fell back.
 int RefineCorners(const cv::Mat& gray, std::vector<cv::Point2f>& points, const std::vector<double>& spacing,
                   const std::vector<cv::Point2f>& fallback);
+
+// Whether refinement left `point` at whole-pixel coordinates (above).
+bool Unrefined(cv::Point2f point);
+
+// Removes the unrefined corners from `points` and their ids from `ids` (of
+// the same length); returns how many.
+int DropUnrefined(std::vector<int>& ids, std::vector<cv::Point2f>& points);
 
 }  // namespace ws

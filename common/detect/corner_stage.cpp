@@ -31,7 +31,8 @@ CornerStage::~CornerStage() {
 std::string CornerStage::Progress() const {
   return "boards left " + std::to_string(left_boards_) + " right " + std::to_string(right_boards_) +
          " of " + std::to_string(frames_) + " frames | in flight " +
-         std::to_string(pipeline_.in_flight()) + " (peak " + std::to_string(pipeline_.peak_in_flight()) + ")";
+         std::to_string(pipeline_.in_flight()) + " (peak " + std::to_string(pipeline_.peak_in_flight()) + ")" +
+         (unrefined_ > 0 ? " | unrefined corners dropped " + std::to_string(unrefined_) : "");
 }
 
 void CornerStage::OnFrame(const widestereo::stereo_frame_t& frame) {
@@ -41,15 +42,21 @@ void CornerStage::OnFrame(const widestereo::stereo_frame_t& frame) {
 
 OrderedPipeline::Delivery CornerStage::Detect(const widestereo::stereo_frame_t& frame) {
   try {
-    auto corners = std::make_shared<const widestereo::stereo_corners_t>(finder_.Find(frame));
-    return [this, corners] { Deliver(*corners); };
+    int unrefined = 0;
+    auto corners = std::make_shared<const widestereo::stereo_corners_t>(finder_.Find(frame, &unrefined));
+    return [this, corners, unrefined] { Deliver(*corners, unrefined); };
   } catch (const std::exception& e) {
     return [this, id = frame.frame_id, why = std::string(e.what())] { Reject(id, why); };
   }
 }
 
-void CornerStage::Deliver(const widestereo::stereo_corners_t& corners) {
+void CornerStage::Deliver(const widestereo::stereo_corners_t& corners, int unrefined) {
   frames_++;
+  if (unrefined > 0) {
+    unrefined_ += unrefined;
+    process_.log().Detail("frame " + std::to_string(corners.frame_id) + ": " + std::to_string(unrefined) +
+                          " corners dropped, their refinement failed (left at whole pixels)");
+  }
   if (corners.left.n > 0) left_boards_++;
   if (corners.right.n > 0) right_boards_++;
   process_.Publish(channel::kStereoCorners, corners);

@@ -10,6 +10,9 @@
 // - Live, a frame that arrives while max_in_flight frames are in flight is
 //   dropped (counted as dropped on STEREO_IMAGES). Replaying a log, the input
 //   waits instead: nothing is dropped and the output is the same every time.
+// - A frame with corners dropped because their refinement failed
+//   (corner_refinement.h) is logged with how many, and the progress line
+//   counts them.
 #pragma once
 
 #include <atomic>
@@ -30,21 +33,22 @@ class CornerStage {
   // Publishes every frame still in flight.
   ~CornerStage();
 
-  // "boards left L right R of N frames | in flight K (peak P)", for the progress line.
+  // "boards left L right R of N frames | in flight K (peak P)", then
+  // "| unrefined corners dropped D" once there are any, for the progress line.
   std::string Progress() const;
 
  private:
   void OnFrame(const widestereo::stereo_frame_t& frame);
   // Runs on a worker: the finder's result, as the step that publishes it.
   OrderedPipeline::Delivery Detect(const widestereo::stereo_frame_t& frame);
-  void Deliver(const widestereo::stereo_corners_t& corners);
+  void Deliver(const widestereo::stereo_corners_t& corners, int unrefined);
   void Reject(int64_t frame_id, const std::string& why);
 
   Process& process_;
   const StereoCornerFinder& finder_;
   ChannelCounters& images_;
   OrderedPipeline pipeline_;
-  std::atomic<int64_t> frames_{0}, left_boards_{0}, right_boards_{0};
+  std::atomic<int64_t> frames_{0}, left_boards_{0}, right_boards_{0}, unrefined_{0};
 };
 
 }  // namespace ws

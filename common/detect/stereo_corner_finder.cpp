@@ -44,33 +44,39 @@ bool ShowsBoard(cv::Size image, const BoardSpec& board) {
 
 }  // namespace
 
-StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method, int64_t max_image_pixels)
+StereoCornerFinder::StereoCornerFinder(BoardSpec board, ChessboardMethod method, BoardSearch search,
+                                       int64_t max_image_pixels)
     : board_(std::move(board)),
-      detector_(MakeCornerDetector(board_, method)),
+      detector_(MakeCornerDetector(board_, method, search)),
       max_image_pixels_(max_image_pixels) {}
 
-widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_frame_t& frame) const {
+widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_frame_t& frame,
+                                                      int* unrefined) const {
   widestereo::stereo_corners_t corners{};
   corners.utime = frame.utime;
   corners.frame_id = frame.frame_id;
-  corners.left = FindInImage(frame.left);
+  int left_unrefined = 0, right_unrefined = 0;
+  corners.left = FindInImage(frame.left, &left_unrefined);
   // A one-camera rig's frame has no right image: no corners and no size.
   if (IsNoImage(frame.right)) {
     corners.right.board_id = board_.id;
     corners.right.image_width = corners.right.image_height = corners.right.n = 0;
   } else {
-    corners.right = FindInImage(frame.right);
+    corners.right = FindInImage(frame.right, &right_unrefined);
   }
+  if (unrefined) *unrefined = left_unrefined + right_unrefined;
   return corners;
 }
 
-widestereo::camera_corners_t StereoCornerFinder::FindInImage(const widestereo::image_t& image) const {
+widestereo::camera_corners_t StereoCornerFinder::FindInImage(const widestereo::image_t& image,
+                                                              int* unrefined) const {
   RequireCompleteJpeg(image);
   const cv::Mat gray = ToGray8(ImageToMat(image, max_image_pixels_));
   if (!ShowsBoard(gray.size(), board_))
     throw DecodeError("a " + std::to_string(gray.cols) + "x" + std::to_string(gray.rows) +
                       " image is too small to show board " + board_.id);
   const BoardCorners found = detector_->Detect(gray);
+  if (unrefined) *unrefined = found.unrefined;
   widestereo::camera_corners_t out;
   out.board_id = board_.id;
   out.image_width = gray.cols;

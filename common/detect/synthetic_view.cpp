@@ -80,7 +80,7 @@ SyntheticView RenderBoard(const BoardSpec& board, const cv::Matx33d& board_to_im
                                 cv::Vec3d(x - 0.5 + (sx + 0.5) / n, y - 0.5 + (sy + 0.5) / n, 1);
             sum += surface.At(p[0] / p[2], p[1] / p[2]);
           }
-        grey.at<float>(y, x) = float(sum / (n * n));
+        grey.at<float>(y, x) = float(sum / (n * n) * std::pow(settings.light_falloff, -double(x) / grey.cols));
       }
   });
   if (settings.blur_sigma > 0) cv::GaussianBlur(grey, grey, cv::Size(), settings.blur_sigma);

@@ -4,8 +4,8 @@
 //
 // Rendering: every pixel averages supersample x supersample points of the
 // board plane, mapped through the board-to-image homography (so edges are
-// anti-aliased by area); then Gaussian blur (the lens) and Gaussian noise (the
-// sensor), rounded to 8 bits. Pixel centres are at integer coordinates, as in
+// anti-aliased by area), lit unevenly if asked; then Gaussian blur (the
+// lens) and Gaussian noise (the sensor), rounded to 8 bits. Pixel centres are at integer coordinates, as in
 // OpenCV. Around the board is a white margin one square wide, then grey.
 #pragma once
 
@@ -35,6 +35,9 @@ struct RenderSettings {
   int supersample = 4;
   double blur_sigma = 0.7;   // pixels; 0: none
   double noise_sigma = 2.0;  // grey levels; 0: none
+  // The light falls exponentially from the left edge of the image to the
+  // right, where it is 1 / light_falloff as bright; 1: even light.
+  double light_falloff = 1;
   uint64_t seed = 1;
 };
 

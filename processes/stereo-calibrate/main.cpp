@@ -187,7 +187,8 @@ int main(int argc, char** argv) {
     const std::optional<ws::StereoCornerFinder> finder =
         images.empty() ? std::nullopt
                        : std::optional<ws::StereoCornerFinder>(std::in_place, ws::ParseBoardSpec(board),
-                                                               ws::kDefaultChessboardMethod);
+                                                               ws::kDefaultChessboardMethod,
+                                                               ws::BoardSearch::kEveryBoard);
 
     ws::Process process(options);
     if (finder) {

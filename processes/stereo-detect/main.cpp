@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
 
   try {
     const ws::StereoCornerFinder finder(ws::ParseBoardSpec(board),
-                                        ws::ParseChessboardMethod(chessboard_detector), max_image_pixels);
+                                        ws::ParseChessboardMethod(chessboard_detector), ws::BoardSearch::kFast,
+                                        max_image_pixels);
     ws::Process process(cli.options());
     process.log().Info("board " + board + ", chessboard detector " + chessboard_detector + ", " +
                        std::to_string(workers) + " workers, at most " + std::to_string(max_in_flight) +

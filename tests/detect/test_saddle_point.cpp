@@ -142,4 +142,27 @@ TEST(RefineCorners, NoisyCornersGainFromLargerScalesAndBadOnesFallBack) {
   EXPECT_EQ(points[0], cv::Point2f(99, 74));
 }
 
+// A corner whose window holds no junction (here: flat grey, as inside a
+// square) is not refined: no saddle fits, and cornerSubPix returns its
+// whole-pixel start as it was. It is dropped with its id and counted; the
+// junction's corner, refined, stays.
+TEST(DropUnrefined, ACornerLeftAtWholePixelsIsDroppedAndCounted) {
+  cv::Mat gray = XJunction({200, 150}, {60.375, 75.625}, 80, 0.7, 1);
+  gray.colRange(120, 200).setTo(40);
+  std::vector<cv::Point2f> points{cv::Point2f(61, 75), cv::Point2f(160, 75)};
+  const std::vector<double> spacing{40.0, 40.0};
+  std::vector<cv::Point2f> fallback = points;
+  ws::CornerSubPix(gray, fallback, spacing);
+  EXPECT_EQ(fallback[1], points[1]) << "cornerSubPix refuses a flat window";
+  EXPECT_EQ(ws::RefineCorners(gray, points, spacing, fallback), 1);
+  EXPECT_FALSE(ws::Unrefined(points[0])) << points[0];
+  EXPECT_TRUE(ws::Unrefined(points[1]));
+
+  std::vector<int> ids{7, 8};
+  EXPECT_EQ(ws::DropUnrefined(ids, points), 1);
+  EXPECT_EQ(ids, std::vector<int>{7});
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_LT(cv::norm(cv::Point2d(points[0]) - cv::Point2d(60.375, 75.625)), 0.05);
+}
+
 }  // namespace
