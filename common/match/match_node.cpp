@@ -18,10 +18,14 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source, StageTimes* times) {
   RequireFrameSize(frame, rect->input_size, calibration_source);
+  std::optional<StageTimer> decode;
+  if (times) decode.emplace(*times, "decode");
+  // Views of the frame's payloads (it outlives the remap): no copy of a raw
+  // image, a decode of a compressed one.
+  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
+  decode.reset();
   std::optional<StageTimer> rectify;
   if (times) rectify.emplace(*times, "rectify");
-  // Views of the frame's payloads (it outlives the remap): no copy.
-  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
@@ -94,7 +98,9 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
              [this](widestereo::stereo_frame_t& frame) { Match(frame); },
-             [this](const widestereo::stereo_frame_t&) { process_.Counters(channel::kStereoImages).skipped++; }) {
+             [this](const widestereo::stereo_frame_t&) {
+               process_.CountSkipped(channel::kStereoImages, "a newer pair came while matching");
+             }) {
   process_.SetState("waiting for calibration");
   process_.AtExit([this] { Drain(); });
 }
@@ -200,7 +206,7 @@ void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
     return;
   }
   if (!servable) {  // live, the first maps for this size being built: it would be stale once they are
-    process_.Counters(channel::kStereoImages).skipped++;
+    process_.CountSkipped(channel::kStereoImages, "came while the first maps were built");
     return;
   }
   match_.Offer(std::move(frame));

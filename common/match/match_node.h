@@ -45,7 +45,8 @@ struct MatchedFrame {
 // Rectifies and matches one frame. Throws std::invalid_argument when the
 // frame's size is not the calibration's (before decoding it); the message
 // names the calibration by `calibration_source` (e.g. its file). With
-// `times`, the two stages are timed there as "rectify" and "match".
+// `times`, its stages are timed there as "decode" (the payloads: a view of a
+// raw image, a decode of a compressed one), "rectify" and "match".
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source = "the calibration",
