@@ -218,7 +218,13 @@ void MatchNode::Drain() {
   maps_.Drain();
 }
 
+void MatchNode::OnCloudStats(const widestereo::cloud_stats_t& stats) {
+  if (!process_.file_input()) downstream_.Acknowledge(stats.frame_id, DownstreamGate::Clock::now());
+}
+
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
+  if (!process_.file_input() && !downstream_.TryCommit(frame.frame_id, DownstreamGate::Clock::now()))
+    return process_.CountSkipped(channel::kStereoImages, "the cloud filter had clouds in hand");
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);

@@ -17,8 +17,10 @@ int main(int argc, char** argv) {
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
                      "built, and skips the pairs that come while the first maps for their image size are "
-                     "built (they would be stale once they are); the pairs it skips are counted in "
-                     "PROCESS_STATUS. With "
+                     "built (they would be stale once they are), and, while stereo-cloud has as many clouds in "
+                     "hand as the pipeline holds (its CLOUD_STATS acknowledge them), skips a pair before "
+                     "matching it rather than have stereo-cloud skip its cloud; the pairs it skips are "
+                     "counted in PROCESS_STATUS, and with their reasons in its log. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
   ws::MatchConfig config;
@@ -96,6 +98,8 @@ int main(int argc, char** argv) {
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(
         ws::channel::kStereoImages, [&](auto& msg) { node.OnFrame(msg); }, 2);
+    process.Subscribe<widestereo::cloud_stats_t>(
+        ws::channel::kCloudStats, [&](const auto& msg) { node.OnCloudStats(msg); });
     return process.Run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-match: %s\n", e.what());

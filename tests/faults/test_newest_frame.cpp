@@ -238,4 +238,50 @@ TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
   EXPECT_GE(process.Counters(ch::kStereoDisparity).published.load(), 1) << "the frame after the build";
 }
 
+// Live, while the cloud filter has two of its clouds in hand (one filtered,
+// one matched: CLOUD_STATS acknowledges them), a pair is skipped whole before
+// it is matched, with its reason, instead of matched for a cloud the filter
+// would replace unfiltered; an acknowledgement lets the next one through.
+// Without any acknowledgement (no filter downstream) nothing is held.
+TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasCloudsInHand) {
+  const std::string dir = TempDir("faults-downstream");
+  ws::Process process(LiveInFileOut("stereo-match", dir));
+  ws::MatchConfig config;
+  config.matcher.num_disparities = 16;
+  ws::MatchNode node(process, config);
+  node.SetRig(ws::RigFromMessage(IdentityCalibration(320, 240, 250, 0.1)), "the calibration");
+  ASSERT_TRUE(node.WaitForMaps(std::chrono::seconds(60)));
+  TextureFrames frames(node, 320, 240);
+  const auto& published = process.Counters(ch::kStereoDisparity).published;
+  const auto& in = process.Counters(ch::kStereoImages);
+  auto offer = [&](int64_t id) {
+    frames.Offer(id);
+    node.Drain();
+  };
+  auto acknowledge = [&](int64_t id) {
+    widestereo::cloud_stats_t stats{};
+    stats.frame_id = id;
+    node.OnCloudStats(stats);
+  };
+
+  offer(1);
+  offer(2);
+  offer(3);
+  EXPECT_EQ(published.load(), 3) << "no filter has acknowledged a cloud: nothing held";
+  acknowledge(3);
+  offer(4);
+  offer(5);
+  offer(6);
+  EXPECT_EQ(published.load(), 5);
+  EXPECT_EQ(in.skipped.load(), 1) << "pair 6, while 4 and 5 were in hand";
+  acknowledge(4);
+  offer(7);
+  EXPECT_EQ(published.load(), 6);
+  EXPECT_EQ(in.skipped.load(), 1);
+  EXPECT_EQ(in.dropped.load() + in.rejected.load(), 0);
+  process.Finish();
+  const std::string log = ReadFileText(process.log().path());
+  EXPECT_NE(log.find("skipped 1 (the cloud filter had clouds in hand 1)"), std::string::npos) << log;
+}
+
 }  // namespace
