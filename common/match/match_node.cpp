@@ -33,7 +33,7 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   std::optional<StageTimer> match;
   if (times) match.emplace(*times, "match");
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
-  matcher.Compute(matched.left_rect(region), matched.right_rect(region))
+  matcher.Compute(matched.left_rect(region), matched.right_rect(region), ContextColumns(*rect, region))
       .copyTo(matched.disparity(region));
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
