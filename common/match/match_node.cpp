@@ -33,8 +33,9 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   std::optional<StageTimer> match;
   if (times) match.emplace(*times, "match");
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
-  matcher.Compute(matched.left_rect(region), matched.right_rect(region), ContextColumns(*rect, region))
-      .copyTo(matched.disparity(region));
+  cv::Mat in_region = matched.disparity(region);  // matched straight into the whole image's
+  matcher.ComputeInto(matched.left_rect(region), matched.right_rect(region), &in_region,
+                      ContextColumns(*rect, region));
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
   matched.disparity.setTo(-std::numeric_limits<float>::infinity(), rect->no_image);

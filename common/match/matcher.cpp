@@ -99,14 +99,19 @@ void DisparityMatcher::Match(const cv::Mat& left, const cv::Mat& right, double s
 }
 
 cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right, int context_columns) {
+  cv::Mat disparity;
+  ComputeInto(left, right, &disparity, context_columns);
+  return disparity;
+}
+
+void DisparityMatcher::ComputeInto(const cv::Mat& left, const cv::Mat& right, cv::Mat* out, int context_columns) {
   Require(left.size() == right.size(), "left and right images differ in size");
   Require(context_columns >= 0, "context_columns must be >= 0");
-  cv::Mat disparity;
+  Require(out->empty() || (out->size() == left.size() && out->type() == CV_32FC1),
+          "the disparity to write into must be empty or CV_32FC1 of the images' size");
+  cv::Mat& disparity = *out;
   const int n = config_.downscale;
-  if (n == 1) {
-    Match(Gray8(left), Gray8(right), 1.0, std::max(0, margin_ - context_columns), &disparity);
-    return disparity;
-  }
+  if (n == 1) return Match(Gray8(left), Gray8(right), 1.0, std::max(0, margin_ - context_columns), out);
   const cv::Size small((left.cols + n - 1) / n, (left.rows + n - 1) / n);
   cv::resize(Gray8(left), small_left_, small, 0, 0, cv::INTER_AREA);
   cv::resize(Gray8(right), small_right_, small, 0, 0, cv::INTER_AREA);
@@ -115,7 +120,6 @@ cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right, int
   cv::resize(small_disparity_, disparity, left.size(), 0, 0, cv::INTER_NEAREST);
   const float missing = float(config_.min_disparity - 1);
   disparity.setTo(missing, disparity < float(config_.min_disparity));
-  return disparity;
 }
 
 }  // namespace ws

@@ -58,6 +58,9 @@ class DisparityMatcher {
   // that no column is matched for nothing. Their disparities are not to be
   // used.
   cv::Mat Compute(const cv::Mat& left, const cv::Mat& right, int context_columns = 0);
+  // As Compute, into *disparity: a Mat of left's size and CV_32FC1 (a view
+  // into a larger image, say) is written in place, not reallocated.
+  void ComputeInto(const cv::Mat& left, const cv::Mat& right, cv::Mat* disparity, int context_columns = 0);
 
   const MatcherConfig& config() const { return config_; }
 

@@ -34,6 +34,14 @@ TEST(MatcherMargin, ColumnsWithoutImageServeAsTheMarginAndTheFieldKeepsItsDispar
   EXPECT_GE(cv::countNonZero(same), 0.99 * field.area());
   const cv::Mat at_shift = cv::abs(in_place(field) - shift) < 0.5;
   EXPECT_GE(cv::countNonZero(at_shift), 0.9 * field.area());
+
+  // Into a view of a larger image: written there, the rest untouched.
+  cv::Mat whole(height + 2, width + 4, CV_32FC1, cv::Scalar(-7));
+  cv::Mat view = whole(cv::Rect(3, 1, width, height));
+  matcher.ComputeInto(left, right, &view, context);
+  EXPECT_EQ(view.data, whole.ptr(1) + 3 * sizeof(float)) << "reallocated";
+  EXPECT_EQ(cv::countNonZero(view != in_place), 0);
+  EXPECT_EQ(cv::countNonZero(whole.row(0) != -7), 0);
 }
 
 }  // namespace
