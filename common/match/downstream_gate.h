@@ -8,15 +8,15 @@
 // acknowledgement also settles every earlier cloud (filtered, replaced or
 // lost on the way).
 //
-// A pair may be matched while fewer than kInHand pairs are committed (their
-// matching has started) and not acknowledged: one being filtered and one
-// being matched, the pipeline's depth. The gate stays open until the first
-// acknowledgement (no filter is known to be there: stereo-match alone, or
-// read by stereo-view only). A commitment not acknowledged within the
-// patience is forgotten (the filter stopped, or its acknowledgement was
-// lost): 4 times the slowest of the last kDelays acknowledgements, so that
-// it follows the machine's speed, and never less than kMinPatience, two of
-// the filter's heartbeat periods.
+// The gate closes while kInHand clouds sent are not acknowledged: one being
+// filtered and one waiting, so that the cloud of a pair matched now would
+// replace the waiting one unless the filter finished first. It stays open
+// until the first acknowledgement (no filter is known to be there:
+// stereo-match alone, or read by stereo-view only). A cloud not acknowledged
+// within the patience is given up on (the filter stopped, or its
+// acknowledgement was lost): 4 times the slowest of the last kDelays
+// acknowledgements, so that it follows the machine's speed, and never less
+// than kMinPatience, two of the filter's heartbeat periods.
 #pragma once
 
 #include <chrono>
@@ -34,22 +34,24 @@ class DownstreamGate {
   static constexpr int kDelays = 16;
   static constexpr std::chrono::milliseconds kMinPatience{2000};
 
-  // True when the pair may be matched now; it is then committed. A frame id
-  // below one committed (the capture restarted) forgets the commitments.
-  bool TryCommit(int64_t frame_id, Clock::time_point now);
-  // The filter's CLOUD_STATS for `frame_id`: it and every pair before it are
-  // settled.
+  // True when a pair may be matched now.
+  bool Open(Clock::time_point now);
+  // A cloud sent to the filter. A frame id below one in hand (the capture
+  // restarted) forgets those.
+  void Sent(int64_t frame_id, Clock::time_point now);
+  // The filter's CLOUD_STATS for `frame_id`: it and every cloud before it
+  // are settled.
   void Acknowledge(int64_t frame_id, Clock::time_point now);
-  // Committed and not acknowledged, as of the last call.
+  // Sent and not acknowledged, as of the last call.
   int in_hand() const;
 
  private:
   Clock::duration Patience() const;
 
   mutable std::mutex mutex_;
-  std::map<int64_t, Clock::time_point> committed_;  // frame id -> when
-  std::deque<Clock::duration> delays_;              // the last acknowledgements'
-  bool acknowledged_ = false;                       // a filter is there
+  std::map<int64_t, Clock::time_point> sent_;  // frame id -> when
+  std::deque<Clock::duration> delays_;         // the last acknowledgements'
+  bool acknowledged_ = false;                  // a filter is there
 };
 
 }  // namespace ws

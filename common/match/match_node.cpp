@@ -224,8 +224,8 @@ void MatchNode::OnCloudStats(const widestereo::cloud_stats_t& stats) {
 }
 
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
-  if (!process_.file_input() && !downstream_.TryCommit(frame.frame_id, DownstreamGate::Clock::now()))
-    return process_.CountSkipped(channel::kStereoImages, "the cloud filter had clouds in hand");
+  if (!process_.file_input() && !downstream_.Open(DownstreamGate::Clock::now()))
+    return process_.CountSkipped(channel::kStereoImages, "the cloud filter had a cloud waiting");
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
@@ -243,6 +243,7 @@ void MatchNode::Publish(MatchedFrame& matched) {
     cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);
+    if (!process_.file_input()) downstream_.Sent(result.cloud.frame_id, DownstreamGate::Clock::now());
     disparity = std::move(result.disparity);
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());

@@ -239,11 +239,12 @@ TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
 }
 
 // Live, while the cloud filter has two of its clouds in hand (one filtered,
-// one matched: CLOUD_STATS acknowledges them), a pair is skipped whole before
-// it is matched, with its reason, instead of matched for a cloud the filter
-// would replace unfiltered; an acknowledgement lets the next one through.
-// Without any acknowledgement (no filter downstream) nothing is held.
-TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasCloudsInHand) {
+// one waiting: CLOUD_STATS acknowledges them), a pair is skipped whole before
+// it is matched, with its reason, instead of matched for a cloud that would
+// replace the waiting one unfiltered; an acknowledgement lets the next one
+// through. Without any acknowledgement (no filter downstream) nothing is
+// held.
+TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasACloudWaiting) {
   const std::string dir = TempDir("faults-downstream");
   ws::Process process(LiveInFileOut("stereo-match", dir));
   ws::MatchConfig config;
@@ -281,7 +282,7 @@ TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasClo
   EXPECT_EQ(in.dropped.load() + in.rejected.load(), 0);
   process.Finish();
   const std::string log = ReadFileText(process.log().path());
-  EXPECT_NE(log.find("skipped 1 (the cloud filter had clouds in hand 1)"), std::string::npos) << log;
+  EXPECT_NE(log.find("skipped 1 (the cloud filter had a cloud waiting 1)"), std::string::npos) << log;
 }
 
 }  // namespace
