@@ -62,6 +62,20 @@ class TextureFrames {
   cv::Mat texture_;
 };
 
+// stereo-match's node in this process, live (not from a log), its output
+// to dir/out.lcmlog, searching 16 disparities.
+struct LiveMatchNode {
+  static ws::MatchConfig SmallSearch() {
+    ws::MatchConfig config;
+    config.matcher.num_disparities = 16;
+    return config;
+  }
+  explicit LiveMatchNode(const std::string& dir)
+      : process(LiveInFileOut("stereo-match", dir)), node(process, SmallSearch()) {}
+  ws::Process process;
+  ws::MatchNode node;
+};
+
 TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
   const std::string dir = TempDir("faults-newest");
   const std::string url = UniqueUdpmUrl(17) + "&recv_buf_size=16777216";
@@ -214,11 +228,9 @@ TEST(NewestFrame, StereoMatchBuildsTheMapsWhenTheCalibrationArrivesNotAtTheFirst
 // time late (issue 30: 0.5 s at the start of a run, and the 5 pairs behind
 // it skipped). The first frame after the build is matched.
 TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
-  const std::string dir = TempDir("faults-maps-skip");
-  ws::Process process(LiveInFileOut("stereo-match", dir));
-  ws::MatchConfig config;
-  config.matcher.num_disparities = 16;
-  ws::MatchNode node(process, config);
+  LiveMatchNode live(TempDir("faults-maps-skip"));
+  ws::Process& process = live.process;
+  ws::MatchNode& node = live.node;
   // Large enough that its maps take far longer to build than handing over
   // the frame below.
   const int width = 2560, height = 1920;
@@ -245,11 +257,9 @@ TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
 // through. Without any acknowledgement (no filter downstream) nothing is
 // held.
 TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasACloudWaiting) {
-  const std::string dir = TempDir("faults-downstream");
-  ws::Process process(LiveInFileOut("stereo-match", dir));
-  ws::MatchConfig config;
-  config.matcher.num_disparities = 16;
-  ws::MatchNode node(process, config);
+  LiveMatchNode live(TempDir("faults-downstream"));
+  ws::Process& process = live.process;
+  ws::MatchNode& node = live.node;
   node.SetRig(ws::RigFromMessage(IdentityCalibration(320, 240, 250, 0.1)), "the calibration");
   ASSERT_TRUE(node.WaitForMaps(std::chrono::seconds(60)));
   TextureFrames frames(node, 320, 240);
