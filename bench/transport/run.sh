@@ -17,7 +17,9 @@
 # runs the variants N times in turn (A B A B ...: a machine whose speed
 # drifts over minutes slows them alike) and ends with each figure's median
 # and range over the rounds, per variant (summary.py). BOTH=1 with
-# OTHER_TREE runs each launch in both trees in turn.
+# OTHER_TREE runs each launch in both trees in turn. SETTINGS="PROCESS.OPTION=VALUE ..."
+# changes the processes' settings (scripts/launch --set), say a filter
+# slower than the matcher: SETTINGS=stereo-cloud.voxel-leaf=0.02.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 DURATION=${1:-60}
@@ -56,6 +58,7 @@ for p in launch["processes"]:
 yaml.safe_dump(launch, open(out, "w"), sort_keys=False)
 PY
   extra=()
+  for setting in ${SETTINGS:-}; do extra+=(--set "$setting"); done
   case $variant in
     transport-view) extra=(--append "stereo-view=--port=$PORT" --append "browser=http://127.0.0.1:$PORT/") ;;
     transport-view-remote) extra=(--append "stereo-view=--port=$PORT" --append "page_reader=http://127.0.0.1:$PORT/") ;;

@@ -8,9 +8,11 @@
 // acknowledgement also settles every earlier cloud (filtered, replaced or
 // lost on the way).
 //
-// The gate closes while kInHand clouds sent are not acknowledged: one being
-// filtered and one waiting, so that the cloud of a pair matched now would
-// replace the waiting one unless the filter finished first. It stays open
+// The gate closes while kInHand clouds sent (or matched and on their way:
+// stereo-match's publishing stage runs beside its matching) are not
+// acknowledged: one being filtered and one waiting, so that the cloud of a
+// pair matched now would replace the waiting one unless the filter
+// finished first. It stays open
 // until the first acknowledgement (no filter is known to be there:
 // stereo-match alone, or read by stereo-view only). A cloud not acknowledged
 // within the patience is given up on (the filter stopped, or its
@@ -36,8 +38,8 @@ class DownstreamGate {
 
   // True when a pair may be matched now.
   bool Open(Clock::time_point now);
-  // A cloud sent to the filter. A frame id below one in hand (the capture
-  // restarted) forgets those.
+  // A cloud sent to the filter, or matched and to be sent. A frame id below
+  // one in hand (the capture restarted) forgets those.
   void Sent(int64_t frame_id, Clock::time_point now);
   // The filter's CLOUD_STATS for `frame_id`: it and every cloud before it
   // are settled.

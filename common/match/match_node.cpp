@@ -229,7 +229,11 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
-    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()));
+    MatchedFrame matched = RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times());
+    // On its way to the filter from now: the next pair's matching may start
+    // before the publishing stage has sent this one's cloud.
+    if (!process_.file_input()) downstream_.Sent(matched.frame_id, DownstreamGate::Clock::now());
+    publish_.Offer(std::move(matched));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
@@ -243,7 +247,6 @@ void MatchNode::Publish(MatchedFrame& matched) {
     cloud.Stop();
     process_.Publish(channel::kStereoDisparity, result.disparity);
     process_.Publish(channel::kStereoCloud, result.cloud);
-    if (!process_.file_input()) downstream_.Sent(result.cloud.frame_id, DownstreamGate::Clock::now());
     disparity = std::move(result.disparity);
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
