@@ -8,17 +8,18 @@
 // acknowledgement also settles every earlier cloud (filtered, replaced or
 // lost on the way).
 //
-// The gate closes while kInHand clouds sent (or matched and on their way:
-// stereo-match's publishing stage runs beside its matching) are not
-// acknowledged: one being filtered and one waiting, so that the cloud of a
-// pair matched now would replace the waiting one unless the filter
-// finished first. It stays open
-// until the first acknowledgement (no filter is known to be there:
-// stereo-match alone, or read by stereo-view only). A cloud not acknowledged
-// within the patience is given up on (the filter stopped, or its
-// acknowledgement was lost): 4 times the slowest of the last kDelays
-// acknowledgements, so that it follows the machine's speed, and never less
-// than kMinPatience, two of the filter's heartbeat periods.
+// A pair is skipped when, by the time its cloud would be sent, the filter
+// would still hold kInHand clouds (one being filtered, one waiting): a cloud
+// sent (or matched and on its way: stereo-match's publishing stage runs
+// beside its matching) counts as held until the slowest of the last kDelays
+// acknowledgements has passed since it was sent, and the pair's cloud would
+// be sent the median of the last kDelays matchings (Open to Sent) from now.
+// So a matcher slower than the filter is never held back, and one faster
+// is held to the filter's pace. The gate stays open until the first
+// acknowledgement (no filter is known to be there: stereo-match alone, or
+// read by stereo-view only). A cloud never acknowledged (the filter stopped,
+// or lost it) is forgotten after 4 times the slowest acknowledgement, at
+// least kMinPatience, two of the filter's heartbeat periods.
 #pragma once
 
 #include <chrono>
@@ -26,6 +27,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <optional>
 
 namespace ws {
 
@@ -36,23 +38,25 @@ class DownstreamGate {
   static constexpr int kDelays = 16;
   static constexpr std::chrono::milliseconds kMinPatience{2000};
 
-  // True when a pair may be matched now.
+  // True when a pair may be matched now (its matching starts).
   bool Open(Clock::time_point now);
-  // A cloud sent to the filter, or matched and to be sent. A frame id below
+  // The cloud of a pair matched, to be sent to the filter. A frame id below
   // one in hand (the capture restarted) forgets those.
   void Sent(int64_t frame_id, Clock::time_point now);
   // The filter's CLOUD_STATS for `frame_id`: it and every cloud before it
   // are settled.
   void Acknowledge(int64_t frame_id, Clock::time_point now);
-  // Sent and not acknowledged, as of the last call.
+  // Sent and neither acknowledged nor forgotten, as of the last call.
   int in_hand() const;
 
  private:
-  Clock::duration Patience() const;
+  Clock::duration Slowest() const;
 
   mutable std::mutex mutex_;
   std::map<int64_t, Clock::time_point> sent_;  // frame id -> when
-  std::deque<Clock::duration> delays_;         // the last acknowledgements'
+  std::deque<Clock::duration> delays_;         // the last acknowledgements' (Sent to Acknowledge)
+  std::deque<Clock::duration> matchings_;      // the last matchings' (Open to Sent)
+  std::optional<Clock::time_point> opened_;    // the matching under way's start
   bool acknowledged_ = false;                  // a filter is there
 };
 

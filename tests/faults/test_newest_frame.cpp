@@ -251,11 +251,11 @@ TEST(NewestFrame, StereoMatchSkipsAFrameThatComesWhileTheFirstMapsAreBuilt) {
 }
 
 // Live, while the cloud filter has two of its clouds in hand (one filtered,
-// one waiting: CLOUD_STATS acknowledges them), a pair is skipped whole before
-// it is matched, with its reason, instead of matched for a cloud that would
-// replace the waiting one unfiltered; an acknowledgement lets the next one
-// through. Without any acknowledgement (no filter downstream) nothing is
-// held.
+// one waiting: CLOUD_STATS acknowledges them, here far slower than the
+// matcher), a pair is skipped whole before it is matched, with its reason,
+// instead of matched for a cloud that would replace the waiting one
+// unfiltered; an acknowledgement of them lets the next one through. Without
+// any acknowledgement (no filter downstream) nothing is held.
 TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasACloudWaiting) {
   LiveMatchNode live(TempDir("faults-downstream"));
   ws::Process& process = live.process;
@@ -275,17 +275,15 @@ TEST(NewestFrame, StereoMatchSkipsAPairBeforeMatchingItWhileTheCloudFilterHasACl
     node.OnCloudStats(stats);
   };
 
-  offer(1);
-  offer(2);
-  offer(3);
-  EXPECT_EQ(published.load(), 3) << "no filter has acknowledged a cloud: nothing held";
-  acknowledge(3);
-  offer(4);
-  offer(5);
+  for (int64_t id = 1; id <= 5; ++id) offer(id);
+  EXPECT_EQ(published.load(), 5) << "no filter has acknowledged a cloud: nothing held";
+  // Cloud 1 acknowledged four matchings after it was sent: a filter four
+  // times slower than the matcher, with clouds 2 to 5 in hand.
+  acknowledge(1);
   offer(6);
   EXPECT_EQ(published.load(), 5);
-  EXPECT_EQ(in.skipped.load(), 1) << "pair 6, while 4 and 5 were in hand";
-  acknowledge(4);
+  EXPECT_EQ(in.skipped.load(), 1) << "pair 6, while the filter held clouds 2 to 5";
+  acknowledge(5);
   offer(7);
   EXPECT_EQ(published.load(), 6);
   EXPECT_EQ(in.skipped.load(), 1);
