@@ -90,10 +90,11 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // matching takes the newest frame waiting (a frame replaced before it was
 // taken is counted as skipped on STEREO_IMAGES), while the cloud of the frame
 // before is built and published. At most one frame waits for each stage.
-// Live, a pair is also skipped, whole and before it is matched, while the
-// cloud filter downstream has one cloud being filtered and another waiting
-// (match/downstream_gate.h: its CLOUD_STATS acknowledge them), instead of
-// being matched for a cloud that would replace the waiting one unfiltered.
+// Live, a pair is also skipped, whole and before it is matched, when the
+// cloud filter downstream would still have one cloud being filtered and
+// another waiting by the time its cloud came (match/downstream_gate.h: its
+// CLOUD_STATS acknowledge them), instead of being matched for a cloud that
+// would replace the waiting one unfiltered.
 // Every frame from the first received is thus published, counted as skipped
 // (each skip with its reason: Process::CountSkipped), dropped (a frame-id
 // gap), or rejected. From a log, both stages run in line: nothing is dropped

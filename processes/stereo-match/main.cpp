@@ -17,9 +17,10 @@ int main(int argc, char** argv) {
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
                      "built, and skips the pairs that come while the first maps for their image size are "
-                     "built (they would be stale once they are), and, while stereo-cloud filters one of its clouds "
-                     "and has another waiting (its CLOUD_STATS acknowledge them), skips a pair before "
-                     "matching it rather than have stereo-cloud skip its cloud; the pairs it skips are "
+                     "built (they would be stale once they are), and, when stereo-cloud would still be filtering "
+                     "one of its clouds with another waiting by the time the pair's cloud came (its "
+                     "CLOUD_STATS acknowledge them), skips the pair before matching it rather than have "
+                     "stereo-cloud skip its cloud; the pairs it skips are "
                      "counted in PROCESS_STATUS, and with their reasons in its log. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
