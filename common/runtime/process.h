@@ -53,6 +53,12 @@ struct ChannelCounters {
 
 class Process {
  public:
+  // Whether a subscription counts the frame ids missing between its
+  // messages as dropped: not on a channel that by design carries only some
+  // frames (CLOUD_STATS read by stereo-match: the clouds of the pairs it
+  // matched, not those it skipped).
+  enum class FrameGaps { count, ignore };
+
   // Opens the text log, the rig key (if any) and both LCM URLs; throws
   // std::runtime_error with the reason when one cannot be opened.
   explicit Process(const ProcessOptions& options);
@@ -67,7 +73,7 @@ class Process {
   // default); LCM drops the oldest beyond that, which shows as a frame_id gap.
   template <class Msg>
   void Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
-                 int queue_capacity = 0);
+                 int queue_capacity = 0, FrameGaps gaps = FrameGaps::count);
   // As Subscribe, for a consumer that samples the stream (stereo-view shows a
   // few of the image pairs that arrive): a message that comes while `due()`
   // is false is counted as skipped and not handled. Live it is skipped
@@ -75,7 +81,8 @@ class Process {
   // (the log's clock). Frame-id gaps are counted net of those skips.
   template <class Msg>
   void SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                        std::function<void(Msg&)> handler, int queue_capacity = 0);
+                        std::function<void(Msg&)> handler, int queue_capacity = 0,
+                        FrameGaps gaps = FrameGaps::count);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
   // dropped. A message that carries an auth_t is signed (with a rig key).
@@ -196,13 +203,13 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 
 template <class Msg>
 void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
-                        int queue_capacity) {
-  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity);
+                        int queue_capacity, FrameGaps gaps) {
+  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity, gaps);
 }
 
 template <class Msg>
 void Process::SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                               std::function<void(Msg&)> handler, int queue_capacity) {
+                               std::function<void(Msg&)> handler, int queue_capacity, FrameGaps gaps) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
@@ -210,8 +217,9 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
     Process* self;
     std::function<bool()> due;  // null: every message is handled
     std::function<void(Msg&)> handler;
+    FrameGaps gaps;
   };
-  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler)});
+  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler), gaps});
   handler_contexts_.push_back(context);
   lcm::Subscription* subscription = in->subscribeFunction(
       channel,
@@ -227,7 +235,8 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
           if constexpr (auth::IsAuthenticated<Msg>::value)
             if (self->auth_)
               self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
-          if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
+          if constexpr (detail::HasFrameId<Msg>::value)
+            if (ctx->gaps == FrameGaps::count) self->CountFrameGap(ch, msg.frame_id);
           if (ctx->due && self->file_input_ && !ctx->due()) {
             self->Counters(ch).skipped++;
             return;

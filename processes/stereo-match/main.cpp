@@ -99,8 +99,9 @@ int main(int argc, char** argv) {
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(
         ws::channel::kStereoImages, [&](auto& msg) { node.OnFrame(msg); }, 2);
-    process.Subscribe<widestereo::cloud_stats_t>(
-        ws::channel::kCloudStats, [&](const auto& msg) { node.OnCloudStats(msg); });
+    process.Subscribe<widestereo::cloud_stats_t>(  // the clouds of the pairs matched: gaps by design
+        ws::channel::kCloudStats, [&](const auto& msg) { node.OnCloudStats(msg); }, 0,
+        ws::Process::FrameGaps::ignore);
     return process.Run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-match: %s\n", e.what());
