@@ -95,8 +95,7 @@ std::pair<double, double> Time(Fn&& fn) {
   return {MillisecondsSince(start), 1000.0 * double(std::clock() - cpu_start) / CLOCKS_PER_SEC};
 }
 
-void BenchOutliers(const widestereo::point_cloud_t& msg, int runs) {
-  const ws::CloudFilterConfig config;
+void BenchOutliers(const widestereo::point_cloud_t& msg, int runs, const ws::CloudFilterConfig& config) {
   const ws::PclCloud::Ptr cloud = ws::DownsampleVoxels(
       ws::KeepDepthRange(ws::ToPcl(msg), config.z_min, config.z_max), config.voxel_leaf).cloud;
   std::vector<double> ours_ms, ours_cpu, pcl_ms, pcl_cpu;
@@ -164,7 +163,20 @@ void Bench(const char* name, const Camera& camera, int runs) {
   before.plane_ransac_points = 0;
   BenchChain("before #16: RANSAC on every point", cloud, before, runs);
   BenchChain("default: RANSAC on a subsample, refit on every inlier", cloud, ws::CloudFilterConfig{}, runs);
-  BenchOutliers(cloud, runs);
+  BenchOutliers(cloud, runs, ws::CloudFilterConfig{});
+}
+
+// The live chain (config/stereo-cloud-live.yaml's voxels and neighbours) on
+// the live cloud's size.
+void BenchLive(const Camera& camera, int runs) {
+  const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
+  ws::CloudFilterConfig live;
+  live.voxel_leaf = 0.04;
+  live.outliers_mean_k = 8;
+  std::printf("\nlive: %dx%d = %d points, %d runs (leaf 4 cm, 8 neighbours)\n", camera.width, camera.height,
+              cloud.npoints, runs);
+  BenchChain("config/stereo-cloud-live.yaml", cloud, live, runs);
+  BenchOutliers(cloud, runs, live);
 }
 
 }  // namespace
@@ -177,6 +189,7 @@ int main(int argc, char** argv) {
   }
   // Rectified 100-degree horizontal field: focal = (width / 2) / tan(50 deg).
   // stereo-match's live cloud: 1280x960 every 4th pixel and row.
+  BenchLive({320, 240, 160 / std::tan(50 * M_PI / 180)}, runs);
   Bench("77 k", {320, 240, 160 / std::tan(50 * M_PI / 180)}, runs);
   Bench("0.3 M", {640, 480, 320 / std::tan(50 * M_PI / 180)}, runs);
   Bench("1 M", {1280, 800, 640 / std::tan(50 * M_PI / 180)}, runs);

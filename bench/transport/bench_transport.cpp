@@ -61,7 +61,9 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
 // The stages on the way from a pair's capture stamp to its filtered cloud:
 // not the capture's reading of the next pair (the stamp is taken after it),
 // nor those of processes beside the chain (stereo-view, this listener).
+// A stage's parts ("filter: voxel") are in its own time already.
 bool OnTheChain(const std::string& process, const std::string& stage) {
+  if (ws::IsStagePart(stage)) return false;
   if (process == "stereo-capture") return stage != "read";
   return process == "stereo-match" || process == "stereo-cloud";
 }

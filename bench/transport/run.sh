@@ -16,7 +16,10 @@
 # VARIANTS="transport" runs the first launch only. ROUNDS=N (default 1)
 # runs the variants N times in turn (A B A B ...: a machine whose speed
 # drifts over minutes slows them alike) and ends with each figure's median
-# and range over the rounds, per variant (summary.py).
+# and range over the rounds, per variant (summary.py). BOTH=1 with
+# OTHER_TREE runs each launch in both trees in turn. SETTINGS="PROCESS.OPTION=VALUE ..."
+# changes the processes' settings (scripts/launch --set), say a filter
+# slower than the matcher: SETTINGS=stereo-cloud.voxel-leaf=0.02.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 DURATION=${1:-60}
@@ -30,14 +33,20 @@ echo "net.core.rmem_max = $(sysctl -n net.core.rmem_max)"
 build/bench/bench_transport --prepare "$RUN/frames" --sim config/sim/wall.yaml --log-dir "$RUN" --quiet
 mv "$RUN/frames/calibration.yaml" "$RUN/calibration.yaml"
 PORT=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+# With BOTH=1 (and OTHER_TREE), each launch runs in this tree, then in the
+# other, before the next: the baseline in turn with the change ("VARIANT"
+# and "VARIANT-other" in the summary).
+TREES=("${OTHER}")
+[ -n "$OTHER" ] && [ "${BOTH:-0}" = 1 ] && TREES=("" "$OTHER")
 for round in $(seq "$ROUNDS"); do
 for variant in $VARIANTS; do
-  dir=$variant
-  [ "$ROUNDS" = 1 ] || dir=round-$round/$variant
+for tree in "${TREES[@]}"; do
+  dir=$variant${tree:+-other}
+  [ "$ROUNDS" = 1 ] || dir=round-$round/$dir
   mkdir -p "$RUN/$dir"
   ln -sfn "$PWD/$RUN/frames" "$RUN/$dir/frames"
   ln -sfn "$PWD/$RUN/calibration.yaml" "$RUN/$dir/calibration.yaml"
-  python3 - "bench/transport/$variant.yaml" "$RUN/$dir/launch.yaml" "$OTHER" <<'PY'
+  python3 - "bench/transport/$variant.yaml" "$RUN/$dir/launch.yaml" "$tree" <<'PY'
 import sys, yaml
 launch_file, out, other = sys.argv[1:]
 launch = yaml.safe_load(open(launch_file))
@@ -49,18 +58,24 @@ for p in launch["processes"]:
 yaml.safe_dump(launch, open(out, "w"), sort_keys=False)
 PY
   extra=()
+  for setting in ${SETTINGS:-}; do extra+=(--set "$setting"); done
   case $variant in
     transport-view) extra=(--append "stereo-view=--port=$PORT" --append "browser=http://127.0.0.1:$PORT/") ;;
     transport-view-remote) extra=(--append "stereo-view=--port=$PORT" --append "page_reader=http://127.0.0.1:$PORT/") ;;
   esac
+  load=$(uptime)  # whatever else runs on the host slows the chain alike
   scripts/launch "$RUN/$dir/launch.yaml" --run-dir "$RUN/$dir" --no-record \
     --set "stereo-capture.rate=$RATE" --append "bench_transport=--duration=$DURATION" "${extra[@]}" \
     > "$RUN/$dir/launch.out"
-  echo "== $variant.yaml, ${OTHER:-this tree}: capture at $RATE Hz for $DURATION s"
+  echo "== $variant.yaml, ${tree:-this tree}: capture at $RATE Hz for $DURATION s"
+  echo "   load before the run (uptime): $load"
   [ "$ROUNDS" = 1 ] || echo "   round $round of $ROUNDS"
   cat "$RUN/$dir/bench_transport.out"
   grep -h "^browser: Chromium" "$RUN/$dir/browser.out" 2>/dev/null || true
   grep -h "^page reader: [0-9]" "$RUN/$dir/page_reader.out" 2>/dev/null || true
 done
 done
-[ "$ROUNDS" = 1 ] || python3 bench/transport/summary.py "$RUN" $VARIANTS
+done
+names=()
+for variant in $VARIANTS; do for tree in "${TREES[@]}"; do names+=("$variant${tree:+-other}"); done; done
+[ "$ROUNDS" = 1 ] || python3 bench/transport/summary.py "$RUN" "${names[@]}"

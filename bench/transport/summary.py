@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Summary of a bench/transport/run.sh run with ROUNDS > 1: for each
 variant, each figure's median over the rounds and its range (lowest,
-highest), from every round's bench_transport.out; with --rounds, one
+highest), from every round's bench_transport.out, then each stage's median
+and p99 per frame (the medians over the rounds); with --rounds, one
 Markdown table row per round and variant instead, in the order they ran.
 
   bench/transport/summary.py [--rounds] RUN_DIR VARIANT...
@@ -13,6 +14,8 @@ import sys
 
 # figure name -> pattern on bench_transport.out (first group: the value)
 FIGURES = {
+    "in: STEREO_IMAGES Hz": r"^  stereo-capture +STEREO_IMAGES +([\d.]+) Hz",
+    "out: STEREO_CLOUD_FILTERED Hz": r"^  stereo-cloud +STEREO_CLOUD_FILTERED +([\d.]+) Hz",
     "clouds missing from the first on %": r"^clouds missing from the first on: \d+ of \d+ pairs \(([\d.]+) %\)",
     "  after the first quarter %": r"^clouds missing from the first on: .*; after the first \d+ s: \d+ of \d+ pairs \(([\d.]+) %\)",
     "latency median ms": r"^capture -> STEREO_CLOUD_FILTERED: \d+ clouds, latency median (\d+) ms",
@@ -27,9 +30,23 @@ PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view", "stereo-status")
 NAMES = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]  # every figure, in table order
 
 
+BUDGET_ROW = re.compile(r"^  (\S+)\s+(.+?)\s+([\d.]+)\s+([\d.]+)\s+\d+$")
+
+
+def budget(text):
+    """(process, stage) -> (median ms, p99 ms) from the latency budget table."""
+    table = text.split("latency budget", 1)[-1].split("capture -> STEREO_CLOUD_FILTERED", 1)[0]
+    rows = {}
+    for line in table.splitlines()[2:]:
+        m = BUDGET_ROW.match(line)
+        if m:
+            rows[(m.group(1), m.group(2))] = (float(m.group(3)), float(m.group(4)))
+    return rows
+
+
 def figures(path):
     text = open(path).read()
-    out = {}
+    out = {"budget": budget(text)}
     for name, pattern in FIGURES.items():
         m = re.search(pattern, text, re.M)
         if m:
@@ -70,6 +87,18 @@ def main():
             cells.append("%g (%g - %g)" % (statistics.median(values), min(values), max(values)) if values else "-")
         if any(c != "-" for c in cells):
             print("  %-36s" % name + "".join("%-30s" % c for c in cells))
+    print("== latency budget: each stage's median / p99 ms per frame, medians over the rounds")
+    stages = []
+    for rounds in per_variant.values():
+        for r in rounds:
+            stages += [k for k in r["budget"] if k not in stages]
+    for process, stage in stages:
+        cells = []
+        for variant in variants:
+            rows = [r["budget"][(process, stage)] for r in per_variant[variant] if (process, stage) in r["budget"]]
+            cells.append("%.1f / %.1f" % (statistics.median(m for m, _ in rows), statistics.median(p for _, p in rows))
+                         if rows else "-")
+        print("  %-36s" % f"{process} {stage}"[:36] + "".join("%-30s" % c for c in cells))
 
 
 if __name__ == "__main__":

@@ -69,7 +69,9 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
       stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
                                   : NewestFirst<widestereo::point_cloud_t>::Policy::newest,
              [this](widestereo::point_cloud_t& msg) { Filter(msg); },
-             [this](const widestereo::point_cloud_t&) { process_.Counters(channel::kStereoCloud).skipped++; }) {
+             [this](const widestereo::point_cloud_t&) {
+               process_.CountSkipped(channel::kStereoCloud, "a newer cloud came while filtering");
+             }) {
   if (save_.save_every < 0)
     throw ConfigError("--save-every: must be >= 0, got " + std::to_string(save_.save_every));
   if (!save_.pcd_dir.empty()) {
@@ -95,6 +97,10 @@ void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   } catch (const std::exception& e) {
     return process_.HandleRejected(channel::kStereoCloud, e.what());
   }
+  // The filter's own parts, so that the budget says which one to cut.
+  for (int i = 0; i < result.stats.nstages; ++i)
+    process_.stage_times().Add(StagePart("filter", result.stats.stage_names[size_t(i)]),
+                               result.stats.stage_ms[size_t(i)]);
   const std::string frame = "frame " + std::to_string(msg.frame_id);
   process_.log().Detail(frame + ": " + Summary(msg, result));
   if (!result.notes.empty()) process_.log().Detail(frame + ": " + Join(result.notes));

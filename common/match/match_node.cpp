@@ -18,10 +18,14 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source, StageTimes* times) {
   RequireFrameSize(frame, rect->input_size, calibration_source);
+  std::optional<StageTimer> decode;
+  if (times) decode.emplace(*times, "decode");
+  // Views of the frame's payloads (it outlives the remap): no copy of a raw
+  // image, a decode of a compressed one.
+  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
+  decode.reset();
   std::optional<StageTimer> rectify;
   if (times) rectify.emplace(*times, "rectify");
-  // Views of the frame's payloads (it outlives the remap): no copy.
-  const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
@@ -29,8 +33,9 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   std::optional<StageTimer> match;
   if (times) match.emplace(*times, "match");
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
-  matcher.Compute(matched.left_rect(region), matched.right_rect(region))
-      .copyTo(matched.disparity(region));
+  cv::Mat in_region = matched.disparity(region);  // matched straight into the whole image's
+  matcher.ComputeInto(matched.left_rect(region), matched.right_rect(region), &in_region,
+                      ContextColumns(*rect, region));
   // No disparity where either rectified image holds no image (outside a
   // lens's field or its input image): the matcher saw the constant border.
   matched.disparity.setTo(-std::numeric_limits<float>::infinity(), rect->no_image);
@@ -94,7 +99,9 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
                [this](MatchedFrame& matched) { Publish(matched); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
              [this](widestereo::stereo_frame_t& frame) { Match(frame); },
-             [this](const widestereo::stereo_frame_t&) { process_.Counters(channel::kStereoImages).skipped++; }) {
+             [this](const widestereo::stereo_frame_t&) {
+               process_.CountSkipped(channel::kStereoImages, "a newer pair came while matching");
+             }) {
   process_.SetState("waiting for calibration");
   process_.AtExit([this] { Drain(); });
 }
@@ -200,7 +207,7 @@ void MatchNode::OnFrame(widestereo::stereo_frame_t& frame) {
     return;
   }
   if (!servable) {  // live, the first maps for this size being built: it would be stale once they are
-    process_.Counters(channel::kStereoImages).skipped++;
+    process_.CountSkipped(channel::kStereoImages, "came while the first maps were built");
     return;
   }
   match_.Offer(std::move(frame));
@@ -212,11 +219,21 @@ void MatchNode::Drain() {
   maps_.Drain();
 }
 
+void MatchNode::OnCloudStats(const widestereo::cloud_stats_t& stats) {
+  if (!process_.file_input()) downstream_.Acknowledge(stats.frame_id, DownstreamGate::Clock::now());
+}
+
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
+  if (!process_.file_input() && !downstream_.Open(DownstreamGate::Clock::now()))
+    return process_.CountSkipped(channel::kStereoImages, "the cloud filter had a cloud waiting");
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
-    publish_.Offer(RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()));
+    MatchedFrame matched = RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times());
+    // On its way to the filter from now: the next pair's matching may start
+    // before the publishing stage has sent this one's cloud.
+    if (!process_.file_input()) downstream_.Sent(matched.frame_id, DownstreamGate::Clock::now());
+    publish_.Offer(std::move(matched));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }

@@ -9,12 +9,14 @@
 #include <string>
 
 #include "lcm_io/image_codec.h"
+#include "match/downstream_gate.h"
 #include "match/matcher.h"
 #include "match/frame_image_writer.h"
 #include "rectify/disparity_cloud.h"
 #include "rectify/rectification.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
+#include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
@@ -45,7 +47,8 @@ struct MatchedFrame {
 // Rectifies and matches one frame. Throws std::invalid_argument when the
 // frame's size is not the calibration's (before decoding it); the message
 // names the calibration by `calibration_source` (e.g. its file). With
-// `times`, the two stages are timed there as "rectify" and "match".
+// `times`, its stages are timed there as "decode" (the payloads: a view of a
+// raw image, a decode of a compressed one), "rectify" and "match".
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source = "the calibration",
@@ -87,9 +90,15 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // matching takes the newest frame waiting (a frame replaced before it was
 // taken is counted as skipped on STEREO_IMAGES), while the cloud of the frame
 // before is built and published. At most one frame waits for each stage.
+// Live, a pair is also skipped, whole and before it is matched, when the
+// cloud filter downstream would still have one cloud being filtered and
+// another waiting by the time its cloud came (match/downstream_gate.h: its
+// CLOUD_STATS acknowledge them), instead of being matched for a cloud that
+// would replace the waiting one unfiltered.
 // Every frame from the first received is thus published, counted as skipped
-// (replaced), dropped (a frame-id gap), or rejected. From a log, both stages run in
-// line: nothing is dropped, and every replay gives the same output.
+// (each skip with its reason: Process::CountSkipped), dropped (a frame-id
+// gap), or rejected. From a log, both stages run in line: nothing is dropped
+// or skipped, and every replay gives the same output.
 class MatchNode {
  public:
   MatchNode(Process& process, MatchConfig config);
@@ -100,6 +109,9 @@ class MatchNode {
   // than config.max_image_pixels, keeping the one before.
   void SetRig(const Rig& rig, const std::string& source);
   void OnCalibration(const widestereo::stereo_calibration_t& msg);
+  // The cloud filter's acknowledgement of a cloud (live only; ignored from
+  // a log).
+  void OnCloudStats(const widestereo::cloud_stats_t& stats);
   // Takes the frame's payload (moves it into the pipeline). Live, a frame
   // that comes while no maps can serve it (the first calibration's, or one
   // for a new image size, still being built) is skipped, not held: held,
@@ -153,6 +165,7 @@ class MatchNode {
   std::shared_ptr<const Rectification> ready_;
   std::string ready_source_;
   int64_t frames_without_calibration_ = 0;
+  DownstreamGate downstream_;
   // Builds the maps of the newest calibration. Declared before the stages:
   // destroyed after them, since matching may wait for it.
   NewestFirst<MapsJob> maps_;

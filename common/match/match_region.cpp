@@ -17,4 +17,8 @@ cv::Rect MatchRegion(const Rectification& rect, const MatcherConfig& config) {
   return cv::Rect(top_left, bottom_right) & whole;
 }
 
+int ContextColumns(const Rectification& rect, const cv::Rect& region) {
+  return rect.common.empty() ? 0 : std::max(0, rect.common.x - region.x);
+}
+
 }  // namespace ws

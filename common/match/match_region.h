@@ -19,4 +19,9 @@ namespace ws {
 // no common field (then the mask leaves no disparity anyway).
 cv::Rect MatchRegion(const Rectification& rect, const MatcherConfig& config);
 
+// The region's columns left of the common field: they hold no image in one
+// of the pair, so need no disparity of their own, and serve as the
+// matcher's left margin (DisparityMatcher::Compute's context_columns).
+int ContextColumns(const Rectification& rect, const cv::Rect& region);
+
 }  // namespace ws

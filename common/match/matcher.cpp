@@ -82,34 +82,44 @@ cv::Ptr<cv::StereoMatcher> MakeMatcher(const MatcherConfig& c) {
 DisparityMatcher::DisparityMatcher(const MatcherConfig& config)
     : config_(config), matcher_(MakeMatcher(AtMatchScale(config))), margin_(LeftMargin(AtMatchScale(config))) {}
 
-void DisparityMatcher::Match(const cv::Mat& left, const cv::Mat& right, double scale, cv::Mat* disparity) {
-  // Matched with margin_ columns of no image added on the left, so that the
+void DisparityMatcher::Match(const cv::Mat& left, const cv::Mat& right, double scale, int margin,
+                             cv::Mat* disparity) {
+  // Matched with `margin` columns of no image added on the left, so that the
   // image's own first columns get a disparity wherever the right image holds
-  // their match; the margin is cut off again.
-  cv::copyMakeBorder(left, padded_left_, 0, 0, margin_, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::copyMakeBorder(right, padded_right_, 0, 0, margin_, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
-  matcher_->compute(padded_left_, padded_right_, fixed_point_);
+  // their match; the margin is cut off again. Without one, the images
+  // themselves go to the matcher: no copy.
+  const bool padded = margin > 0;
+  if (padded) {
+    cv::copyMakeBorder(left, padded_left_, 0, 0, margin, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::copyMakeBorder(right, padded_right_, 0, 0, margin, 0, cv::BORDER_CONSTANT, cv::Scalar(0));
+  }
+  matcher_->compute(padded ? padded_left_ : left, padded ? padded_right_ : right, fixed_point_);
   // OpenCV marks pixels without a match (min_disparity - 1) * 16.
-  fixed_point_.colRange(margin_, fixed_point_.cols).convertTo(*disparity, CV_32F, scale / cv::StereoMatcher::DISP_SCALE);
+  fixed_point_.colRange(margin, fixed_point_.cols).convertTo(*disparity, CV_32F, scale / cv::StereoMatcher::DISP_SCALE);
 }
 
-cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right) {
-  Require(left.size() == right.size(), "left and right images differ in size");
+cv::Mat DisparityMatcher::Compute(const cv::Mat& left, const cv::Mat& right, int context_columns) {
   cv::Mat disparity;
+  ComputeInto(left, right, &disparity, context_columns);
+  return disparity;
+}
+
+void DisparityMatcher::ComputeInto(const cv::Mat& left, const cv::Mat& right, cv::Mat* out, int context_columns) {
+  Require(left.size() == right.size(), "left and right images differ in size");
+  Require(context_columns >= 0, "context_columns must be >= 0");
+  Require(out->empty() || (out->size() == left.size() && out->type() == CV_32FC1),
+          "the disparity to write into must be empty or CV_32FC1 of the images' size");
+  cv::Mat& disparity = *out;
   const int n = config_.downscale;
-  if (n == 1) {
-    Match(Gray8(left), Gray8(right), 1.0, &disparity);
-    return disparity;
-  }
+  if (n == 1) return Match(Gray8(left), Gray8(right), 1.0, std::max(0, margin_ - context_columns), out);
   const cv::Size small((left.cols + n - 1) / n, (left.rows + n - 1) / n);
   cv::resize(Gray8(left), small_left_, small, 0, 0, cv::INTER_AREA);
   cv::resize(Gray8(right), small_right_, small, 0, 0, cv::INTER_AREA);
-  Match(small_left_, small_right_, double(n), &small_disparity_);
+  Match(small_left_, small_right_, double(n), std::max(0, margin_ - context_columns / n), &small_disparity_);
   // Nearest neighbour: no disparity mixed with a missing one at an edge.
   cv::resize(small_disparity_, disparity, left.size(), 0, 0, cv::INTER_NEAREST);
   const float missing = float(config_.min_disparity - 1);
   disparity.setTo(missing, disparity < float(config_.min_disparity));
-  return disparity;
 }
 
 }  // namespace ws

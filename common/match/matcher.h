@@ -51,14 +51,23 @@ class DisparityMatcher {
   // images (grey or BGR, converted to grey); pixels without a match hold
   // min_disparity - 1. Every column may get one: the images are matched with
   // a margin of no image on the left as wide as the search range, where
-  // OpenCV's matchers would give none.
-  cv::Mat Compute(const cv::Mat& left, const cv::Mat& right);
+  // OpenCV's matchers would give none. The images' first context_columns
+  // need no disparity of their own (they hold no image, as a match region's
+  // columns left of the common field: match/match_region.h): they serve as
+  // that margin, and only the part of it they do not cover is added, so
+  // that no column is matched for nothing. Their disparities are not to be
+  // used.
+  cv::Mat Compute(const cv::Mat& left, const cv::Mat& right, int context_columns = 0);
+  // As Compute, into *disparity: a Mat of left's size and CV_32FC1 (a view
+  // into a larger image, say) is written in place, not reallocated.
+  void ComputeInto(const cv::Mat& left, const cv::Mat& right, cv::Mat* disparity, int context_columns = 0);
 
   const MatcherConfig& config() const { return config_; }
 
  private:
-  // The match of two 8-bit grey images at the matcher's scale, times `scale`.
-  void Match(const cv::Mat& left, const cv::Mat& right, double scale, cv::Mat* disparity);
+  // The match of two 8-bit grey images at the matcher's scale, times
+  // `scale`, with `margin` columns of no image added on the left.
+  void Match(const cv::Mat& left, const cv::Mat& right, double scale, int margin, cv::Mat* disparity);
 
   MatcherConfig config_;
   cv::Ptr<cv::StereoMatcher> matcher_;

@@ -49,6 +49,14 @@ std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url, const char* role) {
 constexpr int64_t kStatusPeriodUs = 1000000;
 constexpr int64_t kRejectLogPeriodUs = 1000000;
 
+// " (a newer pair came 9, stereo-cloud had a cloud waiting 3)"; "" without reasons.
+std::string SkipReasons(const std::map<std::string, int64_t>& reasons) {
+  std::string text;
+  for (const auto& [reason, count] : reasons)
+    text += (text.empty() ? " (" : ", ") + reason + " " + std::to_string(count);
+  return text.empty() ? text : text + ")";
+}
+
 }  // namespace
 
 Process::Process(const ProcessOptions& options)
@@ -263,6 +271,12 @@ void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
                 ": counted as the sender's reset, not as lost frames");
 }
 
+void Process::CountSkipped(const std::string& channel, const std::string& reason) {
+  Counters(channel).skipped++;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++skip_reasons_[channel][reason];
+}
+
 void Process::SkipUndecoded(const std::string& channel) {
   Counters(channel).skipped++;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -322,7 +336,7 @@ std::string Process::ProgressLine() {
     for (const auto& [name, c] : counters_) {
       line << " | " << name << " in " << c->received << " out " << c->published;
       if (c->dropped) line << " dropped " << c->dropped;
-      if (c->skipped) line << " skipped " << c->skipped;
+      if (c->skipped) line << " skipped " << c->skipped << SkipReasons(skip_reasons_[name]);
       if (c->rejected) line << " rejected " << c->rejected;
     }
   }

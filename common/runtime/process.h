@@ -53,6 +53,12 @@ struct ChannelCounters {
 
 class Process {
  public:
+  // Whether a subscription counts the frame ids missing between its
+  // messages as dropped: not on a channel that by design carries only some
+  // frames (CLOUD_STATS read by stereo-match: the clouds of the pairs it
+  // matched, not those it skipped).
+  enum class FrameGaps { count, ignore };
+
   // Opens the text log, the rig key (if any) and both LCM URLs; throws
   // std::runtime_error with the reason when one cannot be opened.
   explicit Process(const ProcessOptions& options);
@@ -67,7 +73,7 @@ class Process {
   // default); LCM drops the oldest beyond that, which shows as a frame_id gap.
   template <class Msg>
   void Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
-                 int queue_capacity = 0);
+                 int queue_capacity = 0, FrameGaps gaps = FrameGaps::count);
   // As Subscribe, for a consumer that samples the stream (stereo-view shows a
   // few of the image pairs that arrive): a message that comes while `due()`
   // is false is counted as skipped and not handled. Live it is skipped
@@ -75,7 +81,8 @@ class Process {
   // (the log's clock). Frame-id gaps are counted net of those skips.
   template <class Msg>
   void SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                        std::function<void(Msg&)> handler, int queue_capacity = 0);
+                        std::function<void(Msg&)> handler, int queue_capacity = 0,
+                        FrameGaps gaps = FrameGaps::count);
 
   // Encodes and publishes; thread-safe. A failed publish is counted as
   // dropped. A message that carries an auth_t is signed (with a rig key).
@@ -117,6 +124,11 @@ class Process {
   // Logs an error and keeps it as the status's last_error.
   void ReportError(const std::string& error);
   ChannelCounters& Counters(const std::string& channel);
+  // Counts a frame on `channel` as skipped on purpose (whole, before work
+  // was spent on it) and why: the progress line and the final log line
+  // give each reason's count, "skipped 12 (a newer pair came 9, stereo-cloud
+  // had a cloud waiting 3)". Thread-safe.
+  void CountSkipped(const std::string& channel, const std::string& reason);
   // Counts a message on `channel` as rejected and logs why (at most once a
   // second a channel); for handlers that work on another thread.
   void HandleRejected(const std::string& channel, const std::string& why);
@@ -172,6 +184,7 @@ class Process {
   std::map<std::string, std::unique_ptr<ChannelCounters>> counters_;
   std::map<std::string, int64_t> last_frame_id_;
   std::map<std::string, int64_t> undecoded_skips_;  // since the channel's last frame id
+  std::map<std::string, std::map<std::string, int64_t>> skip_reasons_;  // channel -> reason -> count
   std::map<std::string, int64_t> last_reject_log_us_;
   std::vector<Timer> timers_;
   std::vector<std::function<void()>> at_end_;
@@ -190,13 +203,13 @@ struct HasFrameId<Msg, std::void_t<decltype(std::declval<Msg>().frame_id)>> : st
 
 template <class Msg>
 void Process::Subscribe(const std::string& channel, std::function<void(Msg&)> handler,
-                        int queue_capacity) {
-  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity);
+                        int queue_capacity, FrameGaps gaps) {
+  SubscribeSampled<Msg>(channel, nullptr, std::move(handler), queue_capacity, gaps);
 }
 
 template <class Msg>
 void Process::SubscribeSampled(const std::string& channel, std::function<bool()> due,
-                               std::function<void(Msg&)> handler, int queue_capacity) {
+                               std::function<void(Msg&)> handler, int queue_capacity, FrameGaps gaps) {
   Counters(channel);
   lcm::LCM* in = Input();
   if (!in) return;  // an empty input log: nothing will arrive
@@ -204,8 +217,9 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
     Process* self;
     std::function<bool()> due;  // null: every message is handled
     std::function<void(Msg&)> handler;
+    FrameGaps gaps;
   };
-  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler)});
+  auto context = std::make_shared<Context>(Context{this, std::move(due), std::move(handler), gaps});
   handler_contexts_.push_back(context);
   lcm::Subscription* subscription = in->subscribeFunction(
       channel,
@@ -221,7 +235,8 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
           if constexpr (auth::IsAuthenticated<Msg>::value)
             if (self->auth_)
               self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
-          if constexpr (detail::HasFrameId<Msg>::value) self->CountFrameGap(ch, msg.frame_id);
+          if constexpr (detail::HasFrameId<Msg>::value)
+            if (ctx->gaps == FrameGaps::count) self->CountFrameGap(ch, msg.frame_id);
           if (ctx->due && self->file_input_ && !ctx->due()) {
             self->Counters(ch).skipped++;
             return;

@@ -11,7 +11,13 @@ float Percentile(std::vector<float> values, double p) {
   return values[k];
 }
 
+constexpr const char* kPartMark = ": ";
+
 }  // namespace
+
+std::string StagePart(const std::string& stage, const std::string& part) { return stage + kPartMark + part; }
+
+bool IsStagePart(const std::string& name) { return name.find(kPartMark) != std::string::npos; }
 
 void StageTimes::Add(const std::string& stage, double ms) {
   std::lock_guard<std::mutex> lock(mutex_);

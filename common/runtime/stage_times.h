@@ -1,7 +1,9 @@
 // A process's latency budget: how long each stage of its work takes per
 // frame. Stages are timed on whatever thread runs them; PROCESS_STATUS
 // carries each stage's median and 99th percentile over its last kWindow
-// frames (widestereo::stage_time_t).
+// frames (widestereo::stage_time_t). A stage may also report its parts,
+// named "STAGE: PART" (StagePart): they are timed inside it, so a reader
+// that adds stages up skips them (IsStagePart).
 #pragma once
 
 #include <chrono>
@@ -33,6 +35,10 @@ class StageTimes {
   std::vector<std::string> order_;
   std::map<std::string, Samples> stages_;
 };
+
+// "filter: voxel": the part `part` of the stage `stage`.
+std::string StagePart(const std::string& stage, const std::string& part);
+bool IsStagePart(const std::string& name);
 
 // Times its own lifetime (or until Stop()) as one frame of `stage`.
 class StageTimer {

@@ -17,8 +17,11 @@ int main(int argc, char** argv) {
                      "STEREO_DISPARITY and STEREO_CLOUD (points in the left rectified frame). "
                      "Live, it matches the newest pair waiting while the cloud of the one before is "
                      "built, and skips the pairs that come while the first maps for their image size are "
-                     "built (they would be stale once they are); the pairs it skips are counted in "
-                     "PROCESS_STATUS. With "
+                     "built (they would be stale once they are), and, when stereo-cloud would still be filtering "
+                     "one of its clouds with another waiting by the time the pair's cloud came (its "
+                     "CLOUD_STATS acknowledge them), skips the pair before matching it rather than have "
+                     "stereo-cloud skip its cloud; the pairs it skips are "
+                     "counted in PROCESS_STATUS, and with their reasons in its log. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
   ws::MatchConfig config;
@@ -96,6 +99,9 @@ int main(int argc, char** argv) {
         ws::channel::kStereoCalibration, [&](const auto& msg) { node.OnCalibration(msg); });
     process.Subscribe<widestereo::stereo_frame_t>(
         ws::channel::kStereoImages, [&](auto& msg) { node.OnFrame(msg); }, 2);
+    process.Subscribe<widestereo::cloud_stats_t>(  // the clouds of the pairs matched: gaps by design
+        ws::channel::kCloudStats, [&](const auto& msg) { node.OnCloudStats(msg); }, 0,
+        ws::Process::FrameGaps::ignore);
     return process.Run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-match: %s\n", e.what());

@@ -57,6 +57,38 @@ TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
   EXPECT_EQ(c.rejected, 3);
 }
 
+// A subscription on a channel that carries only some frames by design
+// counts no frame-id gap as lost; one that does not, does.
+TEST(ProcessLcm, ASubscriptionThatIgnoresFrameGapsCountsNoneAsDropped) {
+  const std::string dir = TempDir("frame-gaps");
+  std::vector<LogEvent> events;
+  for (int64_t id : {1, 2, 5, 9})
+    for (const char* channel : {"COUNTED", "SOME_FRAMES"}) {
+      widestereo::stereo_frame_t frame{};
+      frame.frame_id = id;
+      frame.utime = 1000000 * id;
+      frame.left = frame.right = ws::MatToImage(cv::Mat(4, 4, CV_8U, cv::Scalar(7)), frame.utime);
+      events.push_back(Event(channel, frame));
+    }
+  WriteLog(dir + "/in.lcmlog", events);
+  ws::ProcessOptions options;
+  options.name = "gaps";
+  options.in_url = "file://" + dir + "/in.lcmlog?speed=0";
+  options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
+  options.log_dir = dir;
+  options.quiet = true;
+  ws::Process process(options);
+  int handled = 0;
+  process.Subscribe<widestereo::stereo_frame_t>("COUNTED", [&](widestereo::stereo_frame_t&) { ++handled; });
+  process.Subscribe<widestereo::stereo_frame_t>(
+      "SOME_FRAMES", [&](widestereo::stereo_frame_t&) { ++handled; }, 0, ws::Process::FrameGaps::ignore);
+  ASSERT_EQ(process.Run(), 0);
+  EXPECT_EQ(handled, 8);
+  EXPECT_EQ(process.Counters("COUNTED").dropped.load(), 5) << "3, 4, 6, 7 and 8";
+  EXPECT_EQ(process.Counters("SOME_FRAMES").dropped.load(), 0);
+  EXPECT_EQ(process.Counters("SOME_FRAMES").received.load(), 4);
+}
+
 TEST(ProcessLcm, EmptyInputLogEndsAtOnce) {
   const std::string dir = TempDir("empty");
   WriteLog(dir + "/in.lcmlog", {});

@@ -47,4 +47,11 @@ TEST(StageTimes, TimersOnSeveralThreadsAllCount) {
   EXPECT_LE(summary[0].median_ms, summary[0].p99_ms);
 }
 
+TEST(StageTimes, APartIsNamedAfterItsStageAndToldApart) {
+  EXPECT_EQ(ws::StagePart("filter", "voxel"), "filter: voxel");
+  EXPECT_TRUE(ws::IsStagePart(ws::StagePart("filter", "voxel")));
+  EXPECT_FALSE(ws::IsStagePart("filter"));
+  EXPECT_FALSE(ws::IsStagePart("publish STEREO_CLOUD_FILTERED"));
+}
+
 }  // namespace
