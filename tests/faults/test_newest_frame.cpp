@@ -163,9 +163,9 @@ TEST(NewestFrame, StereoMatchAt30HzWorksOnTheNewestFrameAndCountsEveryOther) {
                              << next_id - first_id;
   EXPECT_EQ(in.rejected, 0);
   EXPECT_GT(in.skipped, 0);  // it could not keep up: it skipped
-  // and it went on matching during the burst (twice at least: outputs are
-  // counted in pairs), however slowly a loaded machine matches.
-  EXPECT_GE(burst_outputs, 1);
+  // and it went on matching during the burst, however slowly a loaded
+  // machine matches (how fast is the benchmarks' to say).
+  EXPECT_GE(std::count_if(outputs.begin(), outputs.end(), [](const auto& o) { return o.in_burst; }), 1);
 }
 
 // The maps of a calibration are built when it arrives, on a thread of their
