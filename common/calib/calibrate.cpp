@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <map>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <opencv2/core/utility.hpp>
-#include <numeric>
 #include <stdexcept>
 
 #include "calib/camera_result.h"
@@ -164,8 +163,9 @@ double FittedNoise(const CameraCalibration& camera) {
 // degrees), so it cannot be scored on the same corners. Where nothing was
 // cross-validated (fewer than 4 views), the lowest FittedNoise, the
 // cameras pooled. The models that failed are listed with their error.
+// *chosen: the index into `solved` of the model chosen.
 Selection ChooseModel(const std::vector<StereoCalibration>& solved,
-                      const std::vector<ModelFailure>& failed) {
+                      const std::vector<ModelFailure>& failed, int* chosen) {
   auto views = [](const StereoCalibration& c) { return c.left.views + (c.mono ? 0 : c.right.views); };
   int most = 0;
   for (const auto& c : solved) most = std::max(most, views(c));
@@ -230,16 +230,12 @@ Selection ChooseModel(const std::vector<StereoCalibration>& solved,
                     "degrees of freedom left, rms sqrt(n / (n - p)), " +
                     Fixed(noise(solved[order[lowest]])) + " px";
   }
+  if (selection.chosen < 0) {  // no held-out corner all of them kept: the simplest
+    selection.chosen = 0;
+    selection.why += "; the simplest solved is published";
+  }
+  *chosen = order[size_t(selection.chosen)];  // the failed models follow the solved ones
   return selection;
-}
-
-// The index into `solved` of the model `selection` chose (solved in the
-// order of ChooseModel's candidates, by parameters).
-int SolvedIndex(const std::vector<StereoCalibration>& solved, const Selection& selection) {
-  const std::string& name = selection.candidates.at(size_t(selection.chosen)).name;
-  for (size_t i = 0; i < solved.size(); ++i)
-    if (ModelName(solved[i].model) == name) return int(i);
-  return 0;
 }
 
 }  // namespace
@@ -295,8 +291,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     why.back() = '.';
     throw CalibrationError(why);
   }
-  results.model_selection = ChooseModel(results.solved, results.failed);
-  results.chosen = SolvedIndex(results.solved, results.model_selection);
+  results.model_selection = ChooseModel(results.solved, results.failed, &results.chosen);
   if (field_after && !results.solved.empty()) {
     const ModelKind chosen = results.solved[results.chosen].model;
     try {

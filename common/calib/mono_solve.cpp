@@ -351,16 +351,13 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
   // held-out RMS of the ladders (a penalised spline's smoothness chosen by
   // cross-validation: Eilers and Marx); whether the lens has a field at
   // all is the choice of the rule, that field against none.
-  size_t shape = 0;
+  size_t shape = 0;  // 0: no field solved (the fields follow none and the tilt)
   for (size_t i = 2; i < candidates.size(); ++i)
-    if (i != base && (shape == 0 || candidates[i].heldout.rms_px[0] < candidates[shape].heldout.rms_px[0]))
-      shape = i;
-  const size_t chosen =
-      shape == 0 ? base
-                 : (Record(options, Select(p.name, "field", {candidate(base), candidate(shape)}), s)
-                            .chosen == 1
-                        ? shape
-                        : base);
+    if (shape == 0 || candidates[i].heldout.rms_px[0] < candidates[shape].heldout.rms_px[0]) shape = i;
+  size_t chosen = base;
+  if (shape != 0 &&
+      Record(options, Select(p.name, "field", {candidate(base), candidate(shape)}), s).chosen == 1)
+    chosen = shape;
   s->field_chosen = int(chosen);
   Restore(candidates[chosen], s);
 }

@@ -2,18 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 #include <utility>
 
+#include "calib/solver/stage_log.h"
+
 namespace ws::calib {
 namespace {
-
-std::string Px(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", value);
-  return buf;
-}
 
 double Mean(const std::vector<double>& x) {
   return x.empty() ? 0.0 : std::accumulate(x.begin(), x.end(), 0.0) / double(x.size());
@@ -22,7 +17,7 @@ double Mean(const std::vector<double>& x) {
 // A candidate's held-out RMS as the lines show it: its pooled RMS, or why
 // it has none.
 std::string Score(const Candidate& c) {
-  return c.failed.empty() ? Px(c.heldout_rms_px) + " px" : "not scored: " + c.failed;
+  return c.failed.empty() ? Fixed(c.heldout_rms_px) + " px" : "not scored: " + c.failed;
 }
 
 }  // namespace
@@ -79,13 +74,13 @@ Selection Select(std::string camera, std::string choice, std::vector<Candidate> 
   }
   const Candidate& chosen = c[s.chosen];
   const Candidate& best = c[s.best];
-  if (s.chosen == 0 || c[s.chosen].against < 0)
+  if (chosen.against < 0)
     s.why = chosen.name + " is the simplest, and no richer candidate beats it by more than the spread";
   else
-    s.why = chosen.name + " beats " + c[chosen.against].name + " by " + Px(-chosen.excess_px) +
-            " px, more than the spread " + Px(chosen.spread_px) + " px, and no richer candidate beats it by more";
+    s.why = chosen.name + " beats " + c[chosen.against].name + " by " + Fixed(-chosen.excess_px) +
+            " px, more than the spread " + Fixed(chosen.spread_px) + " px, and no richer candidate beats it by more";
   if (s.best != s.chosen)
-    s.why += " (the lowest held-out RMS is " + best.name + "'s, " + Px(best.heldout_rms_px) + " px)";
+    s.why += " (the lowest held-out RMS is " + best.name + "'s, " + Fixed(best.heldout_rms_px) + " px)";
   return s;
 }
 
@@ -98,8 +93,8 @@ std::vector<std::string> SelectionLines(const Selection& s) {
                        (c.parameters > 0 ? " (" + std::to_string(c.parameters) + " parameters)" : "") +
                        ": held-out " + Score(c);
     if (c.failed.empty() && c.against >= 0)
-      line += ", " + std::string(c.excess_px < 0 ? "" : "+") + Px(c.excess_px) + " px against " +
-              s.candidates[size_t(c.against)].name + ", spread " + Px(c.spread_px) + " px";
+      line += ", " + std::string(c.excess_px < 0 ? "" : "+") + Fixed(c.excess_px) + " px against " +
+              s.candidates[size_t(c.against)].name + ", spread " + Fixed(c.spread_px) + " px";
     if (int(i) == s.chosen) line += "  <- chosen";
     lines.push_back(line);
   }

@@ -98,14 +98,14 @@ class ViewCost final : public ceres::CostFunction {
 
   bool Evaluate(double const* const* p, double* residuals, double** jacobians) const override {
     const int n = model_->NumCoeffs(), local = model_->NumLocalCoeffs();
-    std::vector<double> all;
-    Gather(p, &all);
+    std::vector<double> gathered;
+    const double* all = field_->empty() ? p[1] : Gather(p, &gathered);
     if (jacobians == nullptr) {
       double R[9], t[3], ideal[2];
       BoardToCamera(p[3], kViaExtrinsic ? p[4] : nullptr, R, t);
       for (int i = 0; i < points_.size(); ++i) {
         if (!Ideal(i, p[2], R, t, ideal)) return false;
-        ProjectIdeal(*model_, *field_, p[0], all.data(), ideal, residuals + 2 * i);
+        ProjectIdeal(*model_, *field_, p[0], all, ideal, residuals + 2 * i);
         residuals[2 * i] -= points_.image[2 * i];
         residuals[2 * i + 1] -= points_.image[2 * i + 1];
         if (!std::isfinite(residuals[2 * i]) || !std::isfinite(residuals[2 * i + 1])) return false;
@@ -124,7 +124,7 @@ class ViewCost final : public ceres::CostFunction {
     LensJet intrinsics[kNumIntrinsics];
     Seed(p[0], kNumIntrinsics, kIntrinsicsAt, intrinsics);
     const int half = field_->GridCoeffs() / 2;
-    const double* field = all.data() + n;
+    const double* field = all + n;
     std::vector<LensJet> coeffs(p[1], p[1] + n);  // constants but for a corner's local ones
     LensJet tau[2];
     if (tilt_at_ >= 0) Seed(p[tilt_at_], 2, kTiltAt, tau);
@@ -204,10 +204,10 @@ class ViewCost final : public ceres::CostFunction {
   }
 
   // The model's and the field's coefficients in one array, as ProjectIdeal
-  // reads them: the radial block, the view's segments, the tilt; the
-  // control points of segments the view was not given are NaN, so a corner
-  // that reads one fails the evaluation.
-  void Gather(double const* const* p, std::vector<double>* all) const {
+  // reads them, into *all: the radial block, the view's segments, the tilt;
+  // the control points of segments the view was not given are NaN, so a
+  // corner that reads one fails the evaluation. Returns all->data().
+  const double* Gather(double const* const* p, std::vector<double>* all) const {
     const int n = model_->NumCoeffs();
     all->assign(size_t(n + field_->NumCoeffs()), NAN);
     std::copy_n(p[1], n, all->begin());
@@ -215,6 +215,7 @@ class ViewCost final : public ceres::CostFunction {
       std::copy_n(p[slot_[size_t(segment)]], blocks_.Size(segment),
                   all->begin() + n + blocks_.Offset(segment));
     if (tilt_at_ >= 0) std::copy_n(p[tilt_at_], 2, all->begin() + n + field_->GridCoeffs());
+    return all->data();
   }
 
   template <class Jet>
