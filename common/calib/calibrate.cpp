@@ -261,7 +261,8 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
     for (int k = range.start; k < range.end; ++k) {
       try {
         solved[size_t(k)] = SolveModel(
-            data, options, {kinds[size_t(k)], field_after ? FieldRule::kNone : options.nonradial});
+            data, options, {kinds[size_t(k)], field_after ? FieldRule::kNone : options.nonradial, options.flow,
+                                std::nullopt});
       } catch (const CalibrationError& e) {
         errors[size_t(k)] = e.what();
       } catch (...) {  // Stopped: the run ends
@@ -293,9 +294,11 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   }
   results.model_selection = ChooseModel(results.solved, results.failed, &results.chosen);
   if (field_after && !results.solved.empty()) {
-    const ModelKind chosen = results.solved[results.chosen].model;
+    const StereoCalibration& radial = results.solved[results.chosen];
+    const ModelKind chosen = radial.model;
     try {
-      results.solved[results.chosen] = SolveModel(data, options, {chosen, options.nonradial});
+      results.solved[results.chosen] = SolveModel(
+          data, options, {chosen, options.nonradial, radial.flow, radial.inconsistent_views});
     } catch (const CalibrationError& e) {  // the radial solution stands
       results.failed.push_back({ModelName(chosen) + " with a non-radial field", e.what()});
     }

@@ -22,28 +22,9 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
   for (const Observation& o : problem.observations) {
     if (o.camera != c) continue;
     ++out.views;
-    const Pose pose = BoardPose(problem, o);
-    out.board_poses[o.view] = pose;
-    for (int i = 0; i < o.corners->size(); ++i) {
-      if (!(*o.inliers)[i]) continue;
-      out.max_observed_radius =
-          std::max(out.max_observed_radius, IdealRadius(camera, pose * o.corners->object[i]));
-    }
+    out.board_poses[o.view] = BoardPose(problem, o);
   }
-  if (const auto fold = FoldRadius(camera, out.max_observed_radius)) {
-    // A pinhole radius r = tan(theta) runs to infinity at 90 degrees: a
-    // curve in r that must flatten towards it folds first.
-    const std::string fisheye =
-        Traits(KindOf(camera.model)).angle
-            ? ""
-            : "; the fold is " + Fixed(std::atan(*fold) * 180 / M_PI, 0) +
-                  " degrees off axis, and a pinhole-radius model cannot follow a lens whose "
-                  "views reach towards 90 degrees: bspline_theta or kb4 can";
-    throw CalibrationError(p.name + " camera (" + ModelName(KindOf(camera.model)) +
-                           "): the solved distortion curve folds back at r = " + Fixed(*fold, 3) +
-                           ", inside the observed field; the views do not constrain the model "
-                           "(more views, fewer knots or a stronger smoothness prior" + fisheye + ")");
-  }
+  out.max_observed_radius = RequireUnfolded(problem, c, p.name);
   if (out.views < options.min_views)
     throw CalibrationError(p.name + " camera: only " + std::to_string(out.views) +
                            " views fit the solved camera, at least " +
@@ -67,6 +48,32 @@ CameraCalibration CameraResult(const Problem& problem, int c, const Prepared& p,
   out.grid =
       MakeResidualGrid(out.residuals, p.width, p.height, options.grid_rows, options.grid_cols);
   return out;
+}
+
+double RequireUnfolded(const Problem& problem, int c, const std::string& name) {
+  const CameraBlock& camera = problem.cameras[c];
+  double reach = 0;
+  for (const Observation& o : problem.observations) {
+    if (o.camera != c) continue;
+    const Pose pose = BoardPose(problem, o);
+    for (int i = 0; i < o.corners->size(); ++i)
+      if ((*o.inliers)[i]) reach = std::max(reach, IdealRadius(camera, pose * o.corners->object[i]));
+  }
+  if (const auto fold = FoldRadius(camera, reach)) {
+    // A pinhole radius r = tan(theta) runs to infinity at 90 degrees: a
+    // curve in r that must flatten towards it folds first.
+    const std::string fisheye =
+        Traits(KindOf(camera.model)).angle
+            ? ""
+            : "; the fold is " + Fixed(std::atan(*fold) * 180 / M_PI, 0) +
+                  " degrees off axis, and a pinhole-radius model cannot follow a lens whose "
+                  "views reach towards 90 degrees: bspline_theta or kb4 can";
+    throw CalibrationError(name + " camera (" + ModelName(KindOf(camera.model)) +
+                           "): the solved distortion curve folds back at r = " + Fixed(*fold, 3) +
+                           ", inside the observed field; the views do not constrain the model "
+                           "(more views, fewer knots or a stronger smoothness prior" + fisheye + ")");
+  }
+  return reach;
 }
 
 void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out) {

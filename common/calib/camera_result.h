@@ -22,6 +22,12 @@ CameraCalibration CameraResult(const Problem& problem, int camera, const Prepare
                                const SolveOutcome& outcome, const std::string& init_method,
                                const CalibrationOptions& options);
 
+// Throws CalibrationError when camera `camera`'s distortion curve folds
+// back inside the field its inlier corners reach under their board poses
+// (r (1 + D(r)) not increasing: two directions on one pixel); `name` is the
+// camera's. Returns that reach, the largest ideal radius.
+double RequireUnfolded(const Problem& problem, int camera, const std::string& name);
+
 // Camera `camera`'s held-out RMS of a cross-validation (none when it has no
 // folds) into *out.
 void SetHeldOut(const CrossValidation& cv, int camera, CameraCalibration* out);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "calib/camera_result.h"
 #include "calib/evaluate/heldout.h"
 #include "calib/solver/corner_noise.h"
 #include "calib/solver/outliers.h"
@@ -510,6 +511,12 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
     Say(options, what + ": field moved to r_max " + Fixed(needed, 3) + ", rms " +
                      Fixed(Rms(Residuals(s->problem, 0))) + " px");
   }
+  // A curve that folds back inside the observed field on every corner
+  // cannot follow the lens (a pinhole radius cannot reach 90 degrees): the
+  // knots, the bow and a field move it too little to unfold it, and leaving
+  // out the corners past the fold as outliers would only hide that. It
+  // fails the final check (camera_result.h) now instead of after them.
+  RequireUnfolded(s->problem, 0, p.name);
   if (options.outliers != OutlierRule::kOff)  // the radial model's outliers
     SolveAll(s->problem.cameras[0], RejectingOutliers(options, what + " (gross outliers)"),
              WarpAlwaysFree(options), options, s);
@@ -518,6 +525,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
   if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, s);
   // The final solve: the chosen model, its outliers left out.
   SolveAll(s->problem.cameras[0], AsAsked(options, what), s->warp.free, options, s);
+  RequireUnfolded(s->problem, 0, p.name);  // before the cross-validation it would waste
   s->heldout = CrossValidate(s->problem, options.cv_folds);
 }
 

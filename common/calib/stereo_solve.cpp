@@ -74,7 +74,8 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     is_stereo[v] = mono[0].prepared.usable[v] && mono[1].prepared.usable[v];
   StereoCalibration out;
   out.model = plan.model;
-  out.flow = options.flow;
+  out.flow = plan.flow;
+  out.joint_left_out = options.flow == StereoFlow::kJoint && plan.flow != StereoFlow::kJoint;
   out.half_turned_views = MakeHalfTurnsConsistent(board, is_stereo, mono[0], &mono[1]);
   for (int v : out.half_turned_views)
     Say(options, "view " + std::to_string(v) +
@@ -147,14 +148,18 @@ StereoCalibration SolveStereo(const StereoData& data, const CalibrationOptions& 
     observe(true);
     return SolveWithRejection(problem, OnTheCorners(options, "joint stereo solve"));
   };
-  const bool joint = options.flow == StereoFlow::kJoint;
-  SolveOutcome outcome = solve_extrinsics();
-  if (joint) outcome = solve_joint();
+  const bool joint = plan.flow == StereoFlow::kJoint;
   // Pairs that no rig explains leave R, T; each camera keeps the view. They
   // are judged on the joint solve where there is one (its cameras take up
-  // each camera's own small errors), else with the cameras held.
-  out.inconsistent_views = CheckPairs(problem, mono, is_stereo).inconsistent;
-  if (!out.inconsistent_views.empty()) {
+  // each camera's own small errors), else with the cameras held; the radial
+  // solve's judgement stands where there was one (plan.unpaired).
+  SolveOutcome outcome;
+  if (!plan.unpaired) {
+    outcome = solve_extrinsics();
+    if (joint) outcome = solve_joint();
+  }
+  out.inconsistent_views = plan.unpaired ? *plan.unpaired : CheckPairs(problem, mono, is_stereo).inconsistent;
+  if (plan.unpaired || !out.inconsistent_views.empty()) {
     for (int v : out.inconsistent_views) {
       is_stereo[v] = false;
       Say(options, "view " + std::to_string(v) +

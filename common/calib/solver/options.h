@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "models/model_kind.h"
 
@@ -165,15 +166,24 @@ struct CalibrationOptions {
 };
 
 // What one model's solve does, fixed once by its caller from the options:
-// the model and whether the solve chooses a non-radial part (none while
-// several models are compared: calibrate.h, CalibrateStereoAllModels).
+// the model, whether the solve chooses a non-radial part (none while
+// several models are compared: calibrate.h, CalibrateStereoAllModels), and
+// what the stereo step takes from the model's radial solve where one came
+// first. Whether the pairs were exposed together is the data's, not the
+// lens's: the radial solve's judgement stands for its field.
 struct ModelPlan {
   ModelKind model = ModelKind::kBspline;
   FieldRule nonradial = FieldRule::kAuto;
+  // The options' own, or the paper's where the radial solve left the joint
+  // solve out.
+  StereoFlow flow = StereoFlow::kJoint;
+  // The pairs the radial solve found no rig explains (stereo_solve.h); none:
+  // judged in this solve.
+  std::optional<std::vector<int>> unpaired;
 };
-// The plan of the options' own model and non-radial rule.
+// The plan of the options' own model, non-radial rule and flow.
 inline ModelPlan PlanAsAsked(const CalibrationOptions& options) {
-  return {options.model, options.nonradial};
+  return {options.model, options.nonradial, options.flow, std::nullopt};
 }
 
 // Throws CalibrationError for options no calibration can use (knots out of
