@@ -1,6 +1,9 @@
 #include "detect/board_size_check.h"
 
+#include <algorithm>
+
 #include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace ws {
 
@@ -21,10 +24,19 @@ bool ShowsChessboard(const cv::Mat& gray, cv::Size size) {
       gray, size, corners, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_FAST_CHECK);
 }
 
-std::optional<cv::Size> LargerBoardShown(const cv::Mat& gray, const BoardSpec& board) {
-  if (board.type != BoardType::chessboard) return std::nullopt;
+std::optional<cv::Size> LargerBoardShown(const cv::Mat& gray, const BoardSpec& board,
+                                         const std::vector<cv::Point2f>& corners) {
+  if (board.type != BoardType::chessboard || corners.empty()) return std::nullopt;
+  // A square's side, at most (the board's extent along its longer side, over
+  // that side's squares; more where the board is turned).
+  const cv::Rect2f found = cv::boundingRect(corners);
+  const float square = std::max(found.width, found.height) / float(std::max(board.cols, board.rows) - 1);
+  const cv::Rect around = cv::Rect(cv::Point(cvFloor(found.x - 3 * square), cvFloor(found.y - 3 * square)),
+                                   cv::Point(cvCeil(found.br().x + 3 * square), cvCeil(found.br().y + 3 * square))) &
+                          cv::Rect(0, 0, gray.cols, gray.rows);
+  const cv::Mat near = gray(around);
   for (const cv::Size& size : NeighbourSizes(board))
-    if (size.width >= board.cols && size.height >= board.rows && ShowsChessboard(gray, size)) return size;
+    if (size.width >= board.cols && size.height >= board.rows && ShowsChessboard(near, size)) return size;
   return std::nullopt;
 }
 

@@ -20,9 +20,14 @@ std::vector<cv::Size> NeighbourSizes(const BoardSpec& board);
 // Whether OpenCV finds a chessboard of `size` inner corners in `gray` (8-bit).
 bool ShowsChessboard(const cv::Mat& gray, cv::Size size);
 
-// A larger chessboard than `board` that `gray`, where `board` was found,
-// shows too: then `board` is part of the real one. Nothing for ChArUco.
-std::optional<cv::Size> LargerBoardShown(const cv::Mat& gray, const BoardSpec& board);
+// A larger chessboard than `board` that `gray` shows too, where `board` was
+// found at `corners` (pixels): then `board` is part of the real one. Nothing
+// for ChArUco. Looked for around the corners found, three squares beyond
+// them each way (a larger board's extra row or column is one square away),
+// not over the whole image: there findChessboardCorners searches for
+// seconds (11 s a size at 1280 x 960) for a size it does not find.
+std::optional<cv::Size> LargerBoardShown(const cv::Mat& gray, const BoardSpec& board,
+                                         const std::vector<cv::Point2f>& corners);
 
 // "chessboard:9x6:0.025": `board` with another size.
 std::string WithSize(const BoardSpec& board, cv::Size size);

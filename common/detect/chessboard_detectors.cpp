@@ -43,15 +43,16 @@ std::vector<double> NearestSpacing(const std::vector<cv::Point2f>& points, cv::S
 // images that one global threshold misses, on a copy of at most `side`
 // pixels a side: its cost grows steeply with the image (about 11 s on a
 // 1280 x 960 simulator frame holding part of a board, 1 s on its 800-pixel
-// copy); the corners are refined at full resolution afterwards.
-// FAST_CHECK leaves frames without a board early.
-bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector<cv::Point2f>* points) {
+// copy); the corners are refined at full resolution afterwards. With
+// `fast_check`, FAST_CHECK leaves frames without a board early.
+bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, bool fast_check,
+                    std::vector<cv::Point2f>* points) {
   const double scale = std::min(1.0, double(side) / std::max(gray.cols, gray.rows));
   cv::Mat small = gray;
   if (scale < 1) cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
   if (!cv::findChessboardCorners(small, pattern, *points,
                                  cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE |
-                                     cv::CALIB_CB_FAST_CHECK))
+                                     (fast_check ? cv::CALIB_CB_FAST_CHECK : 0)))
     return false;
   for (cv::Point2f& p : *points) p = (p + cv::Point2f(0.5f, 0.5f)) / scale - cv::Point2f(0.5f, 0.5f);
   return true;
@@ -65,8 +66,8 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 //      and 2 miss (blurred, small or strongly curved squares);
 //   4. with BoardSearch::kEveryBoard only, before giving up, OpenCV's own
 //      call with its default flags (adaptive threshold and normalisation,
-//      no FAST_CHECK) at full resolution, so that every board
-//      cv::findChessboardCorners finds is found.
+//      no FAST_CHECK) on a copy of at most 960 pixels a side, so that every
+//      board cv::findChessboardCorners finds at that size is found.
 // FAST_CHECK rejects boards the full search finds: it looks for at least
 // COLS x ROWS / 2 black and white squares whose sizes lie within a factor
 // 1.4 of each other, under one global threshold (OpenCV 4.6,
@@ -74,26 +75,21 @@ bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, std::vector
 // larger than 1.4 times its far ones) or lit unevenly does not give; the
 // 800-pixel copy loses boards whose far squares are only a few pixels.
 // Step 4 costs nothing on a frame steps 1-3 find a board in; on a frame
-// without a whole board it is most of the time spent. Measured
-// (bench/detect/README.md, OpenCV 4.6, 2 shared cores), step 4 against
-// steps 1-3 with the refinement: 0.24 against 0.06 s on the opencv-doc
-// left.jpg (612 x 459), 2.2 against 1.9 s on its aloeL.jpg (1282 x 1110),
-// 19 against 0.7 s on a dark 800 x 503 frame of sensor noise (the
-// normalisation stretches the noise into countless small quads), 73
-// against 8 s on a 1280 x 960 render of a board half outside the image;
-// on two workers the simulator's default log (35 frames of 1280 x 960, 8
-// without a whole board) took 804 s instead of 42, its fisheye log 72 s
-// instead of 9. Live, stereo-detect would drop the frames that arrive
-// meanwhile (corner_stage.h), so it keeps steps 1-3 (kFast): a board they
-// miss is seen again in the next frames. A folder of images for
-// calibration (stereo-calibrate --images) has no next frame, so it runs
-// step 4 too.
+// without a whole board it is most of the time spent, and it grows
+// steeply with the image: on 1280 x 960 renders holding part of a board,
+// 15 to 106 s at full resolution, 1.4 to 3.2 s at 960 pixels, 0.6 to 1 s
+// at 800 (where the steep 960 x 600 board of test_board_search.cpp is
+// lost). Live, stereo-detect would drop the frames that arrive meanwhile
+// (corner_stage.h), so it keeps steps 1-3 (kFast): a board they miss is
+// seen again in the next frames. A folder of images for calibration
+// (stereo-calibrate --images) has no next frame, so it runs step 4 too
+// (docs/capture.md).
 bool FindBoard(const cv::Mat& gray, cv::Size pattern, BoardSearch search, std::vector<cv::Point2f>* points) {
-  constexpr int kSearchSide = 800;
+  constexpr int kSearchSide = 800, kEveryBoardSide = 960;
   return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
-         AdaptiveSearch(gray, pattern, kSearchSide, points) ||
+         AdaptiveSearch(gray, pattern, kSearchSide, true, points) ||
          cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
-         (search == BoardSearch::kEveryBoard && cv::findChessboardCorners(gray, pattern, *points));
+         (search == BoardSearch::kEveryBoard && AdaptiveSearch(gray, pattern, kEveryBoardSide, false, points));
 }
 
 // The detector's corners to their saddle points (corner_refinement.h), each

@@ -1,7 +1,8 @@
 // With BoardSearch::kEveryBoard (a folder of images), the classic detector
 // finds every board OpenCV's own cv::findChessboardCorners finds with its
-// default flags (CALIB_CB_ADAPTIVE_THRESH | CALIB_CB_NORMALIZE_IMAGE): on a
-// render that only its last search, the one without FAST_CHECK, finds
+// default flags (CALIB_CB_ADAPTIVE_THRESH | CALIB_CB_NORMALIZE_IMAGE), in
+// images of up to 960 pixels a side (larger ones: in their 960-pixel copy):
+// on a render that only its last search, the one without FAST_CHECK, finds
 // (chessboard_detectors.cpp), and on every image of the real sets. With
 // kFast (live) it leaves that search out, and that render's board with it.
 #include <gtest/gtest.h>

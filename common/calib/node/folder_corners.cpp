@@ -76,7 +76,8 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   if (!out.good()) throw std::runtime_error("cannot write " + corners_log);
   OrderedPipeline pipeline({workers, 2 * workers, OrderedPipeline::WhenFull::wait});
   const int64_t total = int64_t(result.folder.pairs.size());
-  std::string first_board;  // the first left image with the board
+  std::string first_board;  // the first left image with the board, and its corners
+  std::vector<cv::Point2f> first_corners;
   for (int64_t id = 0; !StopRequested(); ++id) {
     std::optional<StereoPair> pair = source.Next();
     for (const std::string& event : source.TakeEvents()) log.Info(event);
@@ -97,8 +98,9 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     auto shared = std::make_shared<const widestereo::stereo_frame_t>(std::move(frame));
     pipeline.Submit([&, shared, paths]() -> OrderedPipeline::Delivery {
       std::shared_ptr<widestereo::stereo_corners_t> corners;
+      int unrefined = 0;
       try {
-        corners = std::make_shared<widestereo::stereo_corners_t>(finder.Find(*shared));
+        corners = std::make_shared<widestereo::stereo_corners_t>(finder.Find(*shared, &unrefined));
       } catch (const std::exception& e) {
         return [&, paths, why = std::string(e.what())] {
           const std::string name = ImageName(paths.left, dir);
@@ -106,11 +108,16 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
           log.Error(name + ": " + why + ": left out");
         };
       }
-      return [&, corners, paths] {
+      return [&, corners, paths, unrefined] {
         out.publish(channel::kStereoCorners, corners.get());
+        result.unrefined += unrefined;
         if (corners->left.n > 0) {
           ++result.left_boards;
-          if (first_board.empty()) first_board = paths.left;
+          if (first_board.empty()) {
+            first_board = paths.left;
+            for (int i = 0; i < corners->left.n; ++i)
+              first_corners.emplace_back(float(corners->left.image_points[i][0]), float(corners->left.image_points[i][1]));
+          }
         } else {
           result.left_without_board.push_back(ImageName(paths.left, dir));
         }
@@ -139,12 +146,15 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   const std::string of = " of " + std::to_string(result.read);
   log.Info("board " + finder.board().id + " found: left " + std::to_string(result.left_boards) + of +
            (one_camera ? "" : ", right " + std::to_string(result.right_boards) + of));
+  if (result.unrefined > 0)
+    log.Info(std::to_string(result.unrefined) +
+             " corners dropped: their sub-pixel refinement failed (left at whole pixels)");
   if (!result.left_without_board.empty()) log.Info("no board in: " + List(result.left_without_board));
   if (!result.right_without_board.empty()) log.Info("no board in: " + List(result.right_without_board));
   if (result.left_boards + result.right_boards == 0)
     throw std::runtime_error(NoBoardAdvice(result.folder, finder.board()));
   if (first_board.empty()) return result;
-  if (const auto larger = LargerBoardShown(cv::imread(first_board, cv::IMREAD_GRAYSCALE), finder.board()))
+  if (const auto larger = LargerBoardShown(cv::imread(first_board, cv::IMREAD_GRAYSCALE), finder.board(), first_corners))
     throw std::runtime_error(
         ImageName(first_board, dir) + " shows a " + std::to_string(larger->width) + "x" +
         std::to_string(larger->height) + " board: a " + std::to_string(finder.board().cols) + "x" +

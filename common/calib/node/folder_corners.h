@@ -21,6 +21,7 @@ struct FolderCorners {
   std::map<int64_t, std::string> names;  // frame id -> "left01.jpg + right01.jpg"
   int read = 0;                          // pairs (images, one camera) read
   int left_boards = 0, right_boards = 0;
+  int unrefined = 0;  // corners found but dropped: their refinement failed (BoardCorners::unrefined)
   std::vector<std::string> unreadable, left_without_board, right_without_board;  // image names
 };
 
