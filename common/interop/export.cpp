@@ -12,6 +12,7 @@
 #include "interop/mrcal_spline_fit.h"
 #include "interop/opencv_stereo_file.h"
 #include "interop/ros_camera_info.h"
+#include "runtime/atomic_file.h"
 
 namespace ws {
 namespace {
@@ -206,12 +207,16 @@ ExportReport ExportCalibration(const Rig& file, ExportFormat format,
   if (!std::filesystem::is_directory(out))
     throw std::runtime_error("cannot create the folder " + out + (error ? ": " + error.message() : ""));
   ExportReport report;
+  // The format's files as one set: all of them put in place, or none (a
+  // new stereo.yaml never stands beside the old maps).
+  OutputSet set;
   switch (format) {
     case ExportFormat::kOpenCv: OpenCv(file, out, &report); break;
     case ExportFormat::kRos: Ros(file, out, &report); break;
     case ExportFormat::kKalibr: Kalibr(file, out, &report); break;
     case ExportFormat::kMrcal: Mrcal(file, out, &report); break;
   }
+  set.Commit();
   return report;
 }
 

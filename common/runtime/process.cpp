@@ -1,12 +1,15 @@
 #include "runtime/process.h"
 
 #include <cerrno>
+#include <fcntl.h>
 
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <algorithm>
+#include <cstring>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -76,7 +79,17 @@ Process::Process(const ProcessOptions& options)
   if ((file_input_ || options_.batch) && options_.out_url.empty()) {
     const std::string log = options_.batch_out.empty() ? options_.log_dir + "/" + options_.name + ".lcmlog"
                                                        : options_.batch_out;
-    options_.out_url = "file://" + std::filesystem::absolute(log).lexically_normal().string() + "?mode=w";
+    std::string written = log;
+    if (options_.batch_out_when_done) {
+      // Created anew here (never an existing file or a symlink), LCM then
+      // opens it; renamed over `log` by the destructor.
+      written = log + ".tmp." + std::to_string(getpid());
+      const int fd = open(written.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+      if (fd < 0) throw std::runtime_error("cannot write " + written + ": " + std::strerror(errno));
+      close(fd);
+      batch_pending_ = {written, log};
+    }
+    options_.out_url = "file://" + std::filesystem::absolute(written).lexically_normal().string() + "?mode=w";
     log_.Info("batch run: output to " + log + ", nothing on the live bus (--out-url URL publishes)");
   }
   out_ = OpenLcm(options_.out_url, "output");
@@ -98,7 +111,14 @@ Process::Process(const ProcessOptions& options)
 
 Process::~Process() {
   if (!complete_events_copy_.empty()) std::remove(complete_events_copy_.c_str());
+  if (batch_pending_.first.empty()) return;
+  out_.reset();  // closes the log
+  const bool done = exit_code_ == 0 && !discard_batch_ && std::uncaught_exceptions() == 0;  // not unwinding an error
+  if (!done || std::rename(batch_pending_.first.c_str(), batch_pending_.second.c_str()) != 0)
+    std::remove(batch_pending_.first.c_str());
 }
+
+void Process::DiscardBatchOutput() { discard_batch_ = true; }
 
 lcm::LCM* Process::Input() {
   if (in_opened_) return in_.get();

@@ -62,7 +62,12 @@ class Process {
   // Opens the text log, the rig key (if any) and both LCM URLs; throws
   // std::runtime_error with the reason when one cannot be opened.
   explicit Process(const ProcessOptions& options);
+  // With ProcessOptions::batch_out_when_done, puts the batch output log in
+  // place (exit code 0, not destroyed by an exception) or removes it.
   ~Process();
+  // With batch_out_when_done: the batch output log is removed at the end
+  // whatever the exit code (a run stopped before its work).
+  void DiscardBatchOutput();
 
   // Decodes, validates and counts every message on `channel`, then calls
   // `handler` with it (the handler may move what it keeps out of it: the
@@ -167,6 +172,8 @@ class Process {
   std::unique_ptr<lcm::LCM> in_;
   bool in_opened_ = false;
   std::unique_ptr<lcm::LCM> out_;
+  std::pair<std::string, std::string> batch_pending_;  // with batch_out_when_done: temporary, final
+  bool discard_batch_ = false;
   std::string input_log_;        // path of a file:// input, "" live
   std::string input_log_problem; // where a damaged input log stops
   std::string complete_events_copy_;  // what LCM reads of a damaged input log, if not the log

@@ -19,6 +19,11 @@ struct ProcessOptions {
   // `batch_out`; "" = <log_dir>/<name>.lcmlog.
   bool batch = false;
   std::string batch_out;
+  // With it, the batch output log goes to a temporary name beside
+  // `batch_out` and is put in place only when the process ends with exit
+  // code 0 (Process::DiscardBatchOutput aside): a failed run leaves the old
+  // log whole, and none of its own.
+  bool batch_out_when_done = false;
   std::string log_dir = "logs";
   std::string key_file;  // "" = no rig key: nothing signed or checked
   // How far ahead of this process's clock a signed message may be dated:

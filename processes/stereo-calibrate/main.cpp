@@ -10,8 +10,10 @@
 
 #include "calib/node/calibrate_node.h"
 #include "calib/node/folder_corners.h"
+#include "calib/node/run_outputs.h"
 #include "lcm_io/lcm_log.h"
 #include "models/model_registry.h"
+#include "runtime/atomic_file.h"
 #include "runtime/output_folder.h"
 #include "runtime/process_cli.h"
 #include "runtime/stop_request.h"
@@ -184,29 +186,54 @@ int main(int argc, char** argv) {
     ws::calib::CheckOptions(calib);
     ws::RequireWritableFolderOf("--out", node.out_yaml);
     ws::RequireWritableFolderOf("--report", node.report_json);
+    ws::calib::RunOutputs outputs{node.out_yaml, {}, node.report_json, node.plot_dir,
+                                  ws::LcmFileUrlPath(images.empty() ? "" : options.in_url), options.batch_out};
+    if (!node.out_yaml.empty() && node.models.size() > 1)
+      for (ws::ModelKind kind : node.models) outputs.model_yamls.push_back(ws::calib::ModelFilePath(node.out_yaml, kind));
+    ws::calib::RequireSafeOutputs(outputs, images);
     const std::optional<ws::StereoCornerFinder> finder =
         images.empty() ? std::nullopt
                        : std::optional<ws::StereoCornerFinder>(std::in_place, ws::ParseBoardSpec(board),
                                                                ws::kDefaultChessboardMethod,
                                                                ws::BoardSearch::kEveryBoard);
 
-    ws::Process process(options);
-    if (finder) {
-      const std::string corners = ws::LcmFileUrlPath(options.in_url);
-      ws::calib::FolderCorners found;
-      try {
-        found = ws::calib::DetectFolder(images, mono, *finder, std::max(1, int(std::thread::hardware_concurrency())),
-                                        corners, process.log());
-      } catch (const ws::Stopped&) {
-        return process.Finish();  // SIGTERM or Ctrl-C: nothing solved, nothing written
+    // A run that fails or is stopped leaves no log of its own behind, and
+    // the old ones whole (the calibration and report are put in place only
+    // when all are written: atomic_file.h; the messages' log by the process).
+    options.batch_out_when_done = true;
+    const bool corners_existed = ws::PathExists(outputs.corners_log);
+    auto remove_new_corners = [&] {
+      if (!outputs.corners_log.empty() && !corners_existed) std::filesystem::remove(outputs.corners_log);
+    };
+    auto run = [&]() -> int {
+      ws::Process process(options);
+      if (finder) {
+        const std::string corners = outputs.corners_log;
+        ws::calib::FolderCorners found;
+        try {
+          found = ws::calib::DetectFolder(images, mono, *finder, std::max(1, int(std::thread::hardware_concurrency())),
+                                          corners, process.log());
+        } catch (const ws::Stopped&) {
+          process.DiscardBatchOutput();
+          return process.Finish();  // SIGTERM or Ctrl-C: nothing solved, nothing written
+        }
+        node.frame_names = found.names;
+        process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
+                           corners + "?speed=0' --once)");
       }
-      node.frame_names = found.names;
-      process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
-                         corners + "?speed=0' --once)");
+      ws::calib::CalibrateNode calibrate(process, node);
+      calibrate.Start();
+      return process.Run();
+    };
+    int rc = 1;
+    try {
+      rc = run();
+    } catch (...) {
+      remove_new_corners();
+      throw;
     }
-    ws::calib::CalibrateNode calibrate(process, node);
-    calibrate.Start();
-    return process.Run();
+    if (rc != 0) remove_new_corners();
+    return rc;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-calibrate: %s\n", e.what());
     return 1;

@@ -285,8 +285,8 @@ TEST(BoundedInputs, SigtermWhileReadingAnImageFolderExitsPromptlyWritingNothing)
   ASSERT_TRUE(Says([&] { return calibrate.Output(); }, "finding the board: ", 60)) << calibrate.Output();
   const CommandResult r = StopsOnSigterm(calibrate, "reading the folder");
   EXPECT_EQ(r.output.find("finding the board: 260 of 260"), std::string::npos) << r.output;
-  for (const auto& entry : fs::directory_iterator(dir + "/out"))  // the run's own log of its heartbeats only
-    EXPECT_EQ(entry.path().filename(), "calib.lcmlog") << "a stopped read left " << entry.path();
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))  // not even the run's log of its heartbeats
+    ADD_FAILURE() << "a stopped read left " << entry.path();
 }
 
 }  // namespace

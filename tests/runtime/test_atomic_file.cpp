@@ -66,6 +66,37 @@ TEST(WriteFileAtomically, AFailedWriteLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(Names(dir), std::vector<std::string>{"calib.yaml"});
 }
 
+// A set of files (a calibration, its model files, its report): a write that
+// fails part-way through the set leaves every old file whole and no
+// temporary; committed, all are in place.
+TEST(OutputSet, AFailureAnywhereLeavesTheOldSetWhole) {
+  const std::string dir = ws::test::TempDir("output-set");
+  ws::WriteFileAtomically(dir + "/calib.yaml", "old calibration\n");
+  ws::WriteFileAtomically(dir + "/calib.report.json", "old report\n");
+  try {
+    ws::OutputSet set;
+    ws::WriteFileAtomically(dir + "/calib.yaml", "new calibration\n");  // into the set
+    ws::WriteFileAtomically(dir + "/missing/calib.report.json", "new report\n");  // fails
+    set.Commit();
+    FAIL() << "the second file cannot be written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("missing/calib.report.json"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.yaml"), "old calibration\n");
+  EXPECT_EQ(Names(dir), (std::vector<std::string>{"calib.report.json", "calib.yaml"}));
+
+  {
+    ws::OutputSet set;
+    ws::WriteFileAtomically(dir + "/calib.yaml", "new calibration\n");
+    ws::WriteFileAtomically(dir + "/calib.report.json", "new report\n");
+    EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.yaml"), "old calibration\n") << "not before the commit";
+    set.Commit();
+  }
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.yaml"), "new calibration\n");
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.report.json"), "new report\n");
+  EXPECT_EQ(Names(dir), (std::vector<std::string>{"calib.report.json", "calib.yaml"}));
+}
+
 TEST(WriteFileAtomically, AMissingFolderIsAnError) {
   EXPECT_THROW(ws::WriteFileAtomically("/nonexistent/folder/calib.yaml", "x"), std::runtime_error);
 }

@@ -16,6 +16,7 @@
 #include "models/model_registry.h"
 #include "rig/publish_calibration.h"
 #include "rig/rig_file.h"
+#include "runtime/atomic_file.h"
 #include "runtime/escaped.h"
 #include "runtime/json_file.h"
 #include "runtime/output_folder.h"
@@ -24,13 +25,12 @@
 
 namespace ws::calib {
 
-namespace {
-
-// calib.yaml and "poly6" -> calib.poly6.yaml
 std::string ModelFilePath(const std::string& yaml, ModelKind model) {
   const std::filesystem::path path(yaml);
-  return (path.parent_path() / (path.stem().string() + "." + ModelName(model) + path.extension().string())).string();
+  return (path.parent_path() / (path.stem().string() + "." + ModelName(model) + ".yaml")).string();
 }
+
+namespace {
 
 // The folder of an output file (--out, --report), where `save` may write; ""
 // when the option was not given.
@@ -250,21 +250,26 @@ void CalibrateNode::Solve(std::vector<ModelKind> models, CalibrationOptions opti
 
 void CalibrateNode::WriteFiles(const ModelCalibrations& results, const std::string& yaml,
                                const std::string& json) {
+  // One set: the calibration, each model's file and the report are put in
+  // place together, or none of them (atomic_file.h).
   const bool several = results.solved.size() + results.failed.size() > 1;
+  std::vector<std::string> written;
+  OutputSet set;
   if (!yaml.empty()) {
     WriteCalibrationFile(yaml, ToRig(Chosen(results)));
-    process_.log().Info("wrote " + yaml);
+    written.push_back(yaml);
     if (several)
       for (const StereoCalibration& result : results.solved) {
-        const std::string path = ModelFilePath(yaml, result.model);
-        WriteCalibrationFile(path, ToRig(result));
-        process_.log().Info("wrote " + path);
+        written.push_back(ModelFilePath(yaml, result.model));
+        WriteCalibrationFile(written.back(), ToRig(result));
       }
   }
   if (!json.empty()) {
     WriteJsonFile(json, several ? ModelsReport(results) : StereoReport(Chosen(results)));
-    process_.log().Info("wrote " + json);
+    written.push_back(json);
   }
+  set.Commit();
+  for (const std::string& path : written) process_.log().Info("wrote " + path);
 }
 
 std::string CalibrateNode::ViewName(int view, const std::vector<int64_t>& frames) const {

@@ -64,6 +64,10 @@ struct NodeOptions {
 // "all" -> every registered kind; else the one kind (checked).
 std::vector<ModelKind> ParseModelList(const std::string& spec);
 
+// Where a model's own file goes beside the calibration file of several
+// models: calib.yaml and poly6 -> calib.poly6.yaml (always .yaml).
+std::string ModelFilePath(const std::string& yaml, ModelKind model);
+
 class CalibrateNode {
  public:
   CalibrateNode(Process& process, NodeOptions options);

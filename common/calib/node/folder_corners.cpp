@@ -5,12 +5,14 @@
 #include <memory>
 #include <stdexcept>
 
-#include <lcm/lcm-cpp.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "detect/board_size_check.h"
 #include "lcm_io/channels.h"
+#include "lcm_io/decode.h"
+#include "lcm_io/lcm_log.h"
 #include "lcm_io/image_codec.h"
+#include "runtime/atomic_file.h"
 #include "runtime/ordered_pipeline.h"
 #include "runtime/stop_request.h"
 #include "source/dir_source.h"
@@ -72,8 +74,10 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   result.folder = FindImageFolder(dir, mono);
   const bool one_camera = result.folder.layout == FolderLayout::kOneCamera;
   DirSource source(dir, result.folder, false);
-  lcm::LCM out("file://" + corners_log + "?mode=w");
-  if (!out.good()) throw std::runtime_error("cannot write " + corners_log);
+  // The corners' log is written whole at the end, every write checked
+  // (atomic_file.h): a full disk is an error naming it, never a log cut
+  // short that the solve would then read as damaged.
+  std::vector<LcmLogEvent> events;
   OrderedPipeline pipeline({workers, 2 * workers, OrderedPipeline::WhenFull::wait});
   const int64_t total = int64_t(result.folder.pairs.size());
   std::string first_board;  // the first left image with the board, and its corners
@@ -109,7 +113,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
         };
       }
       return [&, corners, paths, unrefined] {
-        out.publish(channel::kStereoCorners, corners.get());
+        events.push_back({int64_t(events.size()), corners->utime, channel::kStereoCorners, EncodeMessage(*corners)});
         result.unrefined += unrefined;
         if (corners->left.n > 0) {
           ++result.left_boards;
@@ -133,10 +137,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
                    (one_camera ? "images" : "pairs"));
   }
   pipeline.Drain();
-  if (StopRequested()) {  // the log of part of the folder is no log of it
-    std::filesystem::remove(corners_log);
-    throw Stopped();
-  }
+  if (StopRequested()) throw Stopped();  // the log of part of the folder is no log of it: none
   const std::string what = one_camera ? " images" : " pairs";
   log.Info("read " + std::to_string(result.read) + " of " + std::to_string(total) + what + " (" +
            LayoutName(result.folder.layout) + ")");
@@ -153,14 +154,16 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   if (!result.right_without_board.empty()) log.Info("no board in: " + List(result.right_without_board));
   if (result.left_boards + result.right_boards == 0)
     throw std::runtime_error(NoBoardAdvice(result.folder, finder.board()));
-  if (first_board.empty()) return result;
-  if (const auto larger = LargerBoardShown(cv::imread(first_board, cv::IMREAD_GRAYSCALE), finder.board(), first_corners))
+  if (const auto larger = first_board.empty() ? std::nullopt
+                                              : LargerBoardShown(cv::imread(first_board, cv::IMREAD_GRAYSCALE),
+                                                                 finder.board(), first_corners))
     throw std::runtime_error(
         ImageName(first_board, dir) + " shows a " + std::to_string(larger->width) + "x" +
         std::to_string(larger->height) + " board: a " + std::to_string(finder.board().cols) + "x" +
         std::to_string(finder.board().rows) +
         " one is only part of it, numbered from a different corner in each image. Give the whole board: "
         "--board " + WithSize(finder.board(), *larger) + " (COLSxROWS counts inner corners)");
+  WriteFileAtomically(corners_log, EncodeLcmLog(events));
   return result;
 }
 

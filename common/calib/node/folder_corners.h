@@ -27,13 +27,15 @@ struct FolderCorners {
 
 // Reads every pair of `dir` (with `mono`, or a folder of no stereo layout:
 // every image alone), finds the board on `workers` threads and writes each
-// frame's corners to the LCM log `corners_log`; says on `log` what it read,
-// how many boards each camera shows and which images show none. Throws
-// std::runtime_error with what to do when nothing can be read, when no image
-// shows the board (naming a size that is found), or when the images show a
-// larger board than `finder`'s, of which it would find parts. Throws
-// Stopped (runtime/stop_request.h) when a stop is requested before every
-// pair is read, its images in hand detected and `corners_log` removed.
+// frame's corners to the LCM log `corners_log`, whole at the end, every
+// write checked (atomic_file.h); says on `log` what it read, how many boards
+// each camera shows and which images show none. Throws std::runtime_error
+// with what to do when nothing can be read, when no image shows the board
+// (naming a size that is found), when the images show a larger board than
+// `finder`'s, of which it would find parts, or naming `corners_log` when it
+// cannot be written. Throws Stopped (runtime/stop_request.h) when a stop is
+// requested before every pair is read, its images in hand detected and no
+// log written.
 FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCornerFinder& finder, int workers,
                            const std::string& corners_log, TextLog& log);
 

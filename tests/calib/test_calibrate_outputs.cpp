@@ -1,0 +1,120 @@
+// stereo-calibrate --images's outputs cannot destroy (docs/security.md,
+// "Output files"): an --out that would overwrite an image, a foreign file or
+// a folder, or follow a symlink, is refused before any work; a write that
+// fails part-way leaves the old calibration and report whole; a failed run
+// leaves nothing behind.
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace ws::test;
+
+constexpr const char* kBoard = "chessboard:9x6:0.025";
+
+// The 13 opencv-doc pairs, linked into a new folder.
+std::string OpenCvPairs(const std::string& name) {
+  const std::string dir = TempDir(name);
+  for (const auto& entry : fs::directory_iterator(OpenCvStereoSetDir())) {
+    const std::string file = entry.path().filename().string();
+    if (file.rfind("left", 0) == 0 || file.rfind("right", 0) == 0)
+      fs::create_symlink(fs::canonical(entry.path()), dir + "/" + file);
+  }
+  return dir;
+}
+
+CommandResult Calibrate(const std::string& images, const std::string& out) {
+  return RunCommand({"stereo-calibrate", "--images", images, "--board", kBoard, "--out", out, "--model", "poly6",
+                     "--nonradial", "none"},
+                    120);
+}
+
+void ExpectRefusedBeforeWork(const CommandResult& r, const std::string& says, const std::string& out_dir) {
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(says), std::string::npos) << says << "\n" << r.output;
+  EXPECT_EQ(r.output.find("finding the board"), std::string::npos) << "refused only after work:\n" << r.output;
+  for (const auto& entry : fs::directory_iterator(out_dir))
+    EXPECT_FALSE(entry.path().extension() == ".lcmlog" && !entry.is_symlink()) << "a log left behind: " << entry.path();
+}
+
+TEST(CalibrateOutputs, AnOutThatWouldDestroyIsRefusedBeforeAnyWork) {
+  const std::string images = OpenCvPairs("outputs-images");
+  const std::string dir = TempDir("outputs-refused");
+  const std::string image = ReadFileText(images + "/left01.jpg");
+
+  // An input image, by its own name or as the folder's calibration.
+  ExpectRefusedBeforeWork(Calibrate(images, images + "/left01.jpg"), "a calibration file ends in .yaml", dir);
+  ExpectRefusedBeforeWork(Calibrate(images, images + "/calib.yaml"), "is inside the image folder", dir);
+  EXPECT_EQ(ReadFileText(images + "/left01.jpg"), image);
+  EXPECT_FALSE(fs::exists(images + "/calib.yaml"));
+
+  // A file that is not a widestereo calibration.
+  std::ofstream(dir + "/notes.yaml") << "my notes\n";
+  ExpectRefusedBeforeWork(Calibrate(images, dir + "/notes.yaml"), "is not a widestereo calibration", dir);
+  EXPECT_EQ(ReadFileText(dir + "/notes.yaml"), "my notes\n");
+
+  // A folder.
+  fs::create_directories(dir + "/folder.yaml");
+  ExpectRefusedBeforeWork(Calibrate(images, dir + "/folder.yaml"), "is a folder", dir);
+
+  // A symlink where an output goes: never followed.
+  const std::string victim = TempDir("outputs-victim") + "/victim.lcmlog";
+  std::ofstream(victim) << "someone's log\n";
+  fs::create_symlink(victim, dir + "/c.lcmlog");
+  ExpectRefusedBeforeWork(Calibrate(images, dir + "/c.yaml"), "is a symlink", dir);
+  EXPECT_EQ(ReadFileText(victim), "someone's log\n");
+}
+
+// The disk fills while the report is written (a file size limit stands in
+// for it: EFBIG where ENOSPC would be): the run fails naming the file, and
+// the calibration and report of the run before stand, whole.
+TEST(CalibrateOutputs, AWriteThatFailsLeavesTheOldSetWhole) {
+  const std::string images = OpenCvPairs("outputs-full-images");
+  const std::string dir = TempDir("outputs-full");
+  ASSERT_EQ(Calibrate(images, dir + "/c.yaml").exit_code, 0);
+  const std::string yaml = ReadFileText(dir + "/c.yaml"), report = ReadFileText(dir + "/c.report.json"),
+                    messages = ReadFileText(dir + "/c.lcmlog");
+  ASSERT_LT(yaml.size() + 4096, report.size()) << "the limit must fall between the two files";
+
+  rlimit before;
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
+  const auto handler = std::signal(SIGXFSZ, SIG_IGN);  // inherited: the write fails instead
+  rlimit small = before;
+  small.rlim_cur = yaml.size() + 4096;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  const CommandResult r = RunCommand({"stereo-calibrate", "--images", images, "--board", kBoard, "--out",
+                                      dir + "/c.yaml", "--model", "kb4", "--nonradial", "none"},
+                                     120);
+  setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, handler);
+
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("cannot write '" + dir + "/c."), std::string::npos) << r.output;
+  EXPECT_EQ(ReadFileText(dir + "/c.yaml"), yaml) << "the old calibration must stand";
+  EXPECT_EQ(ReadFileText(dir + "/c.report.json"), report) << "the old report must stand";
+  EXPECT_EQ(ReadFileText(dir + "/c.lcmlog"), messages) << "the old messages' log must stand";
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "a temporary left: " << entry.path();
+}
+
+TEST(CalibrateOutputs, AFailedRunLeavesNothingBehind) {
+  const std::string images = TempDir("outputs-garbage");
+  std::ofstream(images + "/left01.jpg") << "not an image";
+  std::ofstream(images + "/right01.jpg") << "not an image";
+  const std::string dir = TempDir("outputs-nothing");
+  const CommandResult r = Calibrate(images, dir + "/c.yaml");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().filename() != "stereo-calibrate.log") left.push_back(entry.path().filename().string());
+  EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
+}
+
+}  // namespace
