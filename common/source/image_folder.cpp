@@ -29,8 +29,13 @@ std::vector<std::string> ImagesIn(const fs::path& dir) {
   fs::directory_iterator it(dir, error);
   if (error) throw std::runtime_error("cannot read image folder " + dir.string() + ": " + error.message());
   std::vector<std::string> images;
-  for (const auto& entry : it)
-    if (entry.is_regular_file() && IsImage(entry.path())) images.push_back(entry.path().string());
+  // Whatever bears an image's name but a folder: a device, a FIFO or a
+  // symlink loop is then named and left out by its reader (dir_source.h),
+  // not skipped in silence or fatal here.
+  for (const auto& entry : it) {
+    std::error_code not_a_folder;
+    if (IsImage(entry.path()) && !entry.is_directory(not_a_folder)) images.push_back(entry.path().string());
+  }
   std::sort(images.begin(), images.end());
   return images;
 }

@@ -5,10 +5,14 @@
 // leaves nothing behind.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "test_support.h"
 
@@ -115,6 +119,40 @@ TEST(CalibrateOutputs, AFailedRunLeavesNothingBehind) {
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.path().filename() != "stereo-calibrate.log") left.push_back(entry.path().filename().string());
   EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
+}
+
+// Hostile files in the folder are named and left out, on the terminal and
+// in stereo-calibrate.log, and the run goes on with the good pairs: a
+// JPEG whose header claims 60000 x 60000 pixels, a FIFO, a symlink loop.
+TEST(CalibrateOutputs, HostileImagesAreNamedAndLeftOutAndTheRunGoesOn) {
+  const std::string images = OpenCvPairs("outputs-hostile-images");
+  std::vector<uint8_t> jpeg;
+  cv::imencode(".jpg", cv::Mat(24, 32, CV_8UC1, cv::Scalar(9)), jpeg);
+  for (size_t i = 0; i + 9 < jpeg.size(); ++i)
+    if (jpeg[i] == 0xFF && jpeg[i + 1] == 0xC0) {
+      jpeg[i + 5] = jpeg[i + 7] = uint8_t(60000 >> 8);
+      jpeg[i + 6] = jpeg[i + 8] = uint8_t(60000 & 0xFF);
+      break;
+    }
+  std::ofstream(images + "/left90.jpg", std::ios::binary)
+      .write(reinterpret_cast<const char*>(jpeg.data()), std::streamsize(jpeg.size()));
+  fs::copy_file(fs::canonical(images + "/right01.jpg"), images + "/right90.jpg");
+  ASSERT_EQ(mkfifo((images + "/left91.jpg").c_str(), 0644), 0);
+  fs::copy_file(fs::canonical(images + "/right01.jpg"), images + "/right91.jpg");
+  fs::create_symlink("left92.jpg", images + "/left92.jpg");
+  fs::copy_file(fs::canonical(images + "/right01.jpg"), images + "/right92.jpg");
+
+  const std::string dir = TempDir("outputs-hostile");
+  const CommandResult r = Calibrate(images, dir + "/c.yaml");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string log = ReadFileText(dir + "/stereo-calibrate.log");
+  for (const std::string& says : {std::string("left90.jpg: 60000x60000 pixels, more than"),
+                                  std::string("left91.jpg: not a regular file"),
+                                  std::string("left92.jpg: Too many levels of symbolic links"),
+                                  std::string("found: left 13 of 13, right 13 of 13")}) {
+    EXPECT_NE(r.output.find(says), std::string::npos) << says << "\n" << r.output;
+    EXPECT_NE(log.find(says), std::string::npos) << says << " not in the log";
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // stereo-capture --source dir: over real LCM: pairs found by name, in order,
 // frame ids counting every pair, exit at the end; bad directories are errors.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -179,6 +180,74 @@ TEST(DirSource, LoopServesLaterLapsFromTheFirstLapsImagesAndCountsThemAlike) {
   const auto counts = source.Counters().at("dir:" + dir);
   EXPECT_EQ(counts.received, 3);  // pair 1 in each of the 3 laps
   EXPECT_EQ(counts.rejected, 3);  // pair 2 likewise
+}
+
+// The peak resident memory of this process, bytes (/proc/self/status VmHWM).
+int64_t PeakRss() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stoll(line.substr(6)) * 1024;
+  return -1;
+}
+
+// A JPEG of 32 x 24 whose frame header claims `side` x `side` pixels: 2 KB
+// that cv::imread would decode into side^2 bytes.
+void WriteJpegClaiming(const std::string& path, int side) {
+  std::vector<uint8_t> bytes;
+  cv::imencode(".jpg", cv::Mat(24, 32, CV_8UC1, cv::Scalar(9)), bytes);
+  for (size_t i = 0; i + 9 < bytes.size(); ++i)
+    if (bytes[i] == 0xFF && bytes[i + 1] == 0xC0) {
+      bytes[i + 5] = bytes[i + 7] = uint8_t(side >> 8);
+      bytes[i + 6] = bytes[i + 8] = uint8_t(side & 0xFF);
+      break;
+    }
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// Every image is sized from its header before it is decoded: a bomb, a FIFO,
+// a symlink loop and a pair of another size than most (first in the folder)
+// are named and left out, at no cost of memory; 16-bit colour with alpha
+// comes as 8-bit colour; the good pairs all come.
+TEST(DirSource, SizesImagesFromTheirHeadersAndNamesWhatItLeavesOut) {
+  const std::string dir = TempDir("hostile-folder");
+  WriteImage(dir + "/left0.png", 1, 64, 48);  // the odd size, first in the folder
+  WriteImage(dir + "/right0.png", 1, 64, 48);
+  for (int i : {1, 5, 6, 7}) {
+    WriteImage(dir + "/left" + std::to_string(i) + ".png", i);
+    WriteImage(dir + "/right" + std::to_string(i) + ".png", i);
+  }
+  WriteJpegClaiming(dir + "/left2.jpg", 32000);
+  WriteImage(dir + "/right2.jpg", 2);
+  cv::imwrite(dir + "/left3.png", cv::Mat(24, 32, CV_16UC4, cv::Scalar(30000, 20000, 10000, 65535)));
+  cv::imwrite(dir + "/right3.png", cv::Mat(24, 32, CV_16UC4, cv::Scalar(30000, 20000, 10000, 65535)));
+  ASSERT_EQ(mkfifo((dir + "/left4.png").c_str(), 0644), 0);
+  WriteImage(dir + "/right4.png", 4);
+  std::filesystem::create_symlink("left8.png", dir + "/left8.png");  // a loop
+  WriteImage(dir + "/right8.png", 8);
+
+  ws::DirSource source(dir, false);
+  std::vector<std::string> refused;
+  int readable = 0;
+  while (const auto pair = source.Next()) {
+    if (pair->left.empty()) {
+      refused.push_back(pair->label);
+      continue;
+    }
+    ++readable;
+    EXPECT_EQ(pair->left.size(), cv::Size(32, 24)) << pair->label;
+    if (pair->label.find("left3") != std::string::npos) {
+      EXPECT_EQ(pair->left.type(), CV_8UC3) << "16-bit colour";
+    }
+  }
+  EXPECT_EQ(readable, 5);  // 1, 3, 5, 6, 7
+  const std::vector<std::string> reasons = {"left0.png: 64x48, where 5 of the folder's pairs are 32x24",
+                                            "left2.jpg: 32000x32000 pixels, more than",
+                                            "left4.png: not a regular file",
+                                            "left8.png: Too many levels of symbolic links"};
+  ASSERT_EQ(refused.size(), reasons.size()) << ::testing::PrintToString(refused);
+  for (size_t i = 0; i < reasons.size(); ++i)
+    EXPECT_EQ(refused[i].rfind(reasons[i], 0), 0u) << refused[i] << "\n expected: " << reasons[i];
+  EXPECT_LT(PeakRss(), int64_t(600) << 20) << "the 32000 x 32000 image was decoded";
 }
 
 TEST(CaptureDir, BadSourceSpecIsAClearError) {
