@@ -26,6 +26,8 @@ bool AllFinite(const Range& values) {
 }
 
 constexpr double kMaxFocalPx = 1e6;
+constexpr double kMinFocalPx = 1;  // a focal length under a pixel is no camera's (fx = 1e-300 gave f = 0 px)
+constexpr double kMaxCoefficient = 1e8;
 
 // A row-major 3x3 matrix with orthonormal rows and determinant +1, to 1e-6.
 bool IsRotation(const double* R) {
@@ -90,13 +92,15 @@ void Validate(const widestereo::camera_calibration_t& msg) {
   Require(ImageSizeAcceptable(msg.image_width, msg.image_height), t,
           "bad image size " + std::to_string(msg.image_width) + "x" + std::to_string(msg.image_height));
   Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
+  Require(std::all_of(msg.coeffs.begin(), msg.coeffs.end(), [](double c) { return std::abs(c) <= kMaxCoefficient; }),
+          t, "a distortion coefficient beyond 1e8 (no lens's: the model's arithmetic loses every digit)");
   Require(std::is_sorted(msg.knots.begin(), msg.knots.end()), t, "knots are not non-decreasing");
   const double intrinsics[] = {msg.fx, msg.fy, msg.cx, msg.cy, msg.p1, msg.p2};
   Require(AllFinite(intrinsics), t, "non-finite intrinsics");
   // Bounds no real camera comes near; beyond them the model's arithmetic
   // loses every digit (a 1e270 px focal length was found by tests/fuzz).
-  Require(msg.fx > 0 && msg.fy > 0 && msg.fx <= kMaxFocalPx && msg.fy <= kMaxFocalPx, t,
-          "fx and fy must be in (0, " + std::to_string(int(kMaxFocalPx)) + "] pixels");
+  Require(msg.fx >= kMinFocalPx && msg.fy >= kMinFocalPx && msg.fx <= kMaxFocalPx && msg.fy <= kMaxFocalPx, t,
+          "fx and fy must be in [1, " + std::to_string(int(kMaxFocalPx)) + "] pixels");
   Require(msg.cx >= -msg.image_width && msg.cx <= 2.0 * msg.image_width && msg.cy >= -msg.image_height &&
               msg.cy <= 2.0 * msg.image_height,
           t, "the principal point (cx, cy) lies more than an image size outside the image");

@@ -26,6 +26,11 @@ Rectification CalibrationGeometry(const Rig& rig, const RectifyOptions& options,
                                 SizeText(size.width, size.height) + " and " +
                                 SizeText(rig.right.image_width, rig.right.image_height));
   RequireAtMost(size, max_pixels, source + " refused: its image size");
+  // Two cameras at one place have no epipolar geometry (OpenCV's
+  // stereoRectify would assert): no disparity, no depth.
+  if (!(rig.T.norm() > 0))
+    throw std::invalid_argument(source + " refused: a zero baseline (T = 0): the two cameras are at one place, "
+                                         "no depth can be had from them");
   try {
     Rectification geometry = RectificationGeometry(rig, options);
     // The grid its maps sample: the rectified image at full resolution.

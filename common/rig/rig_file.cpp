@@ -3,12 +3,16 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 
+#include "lcm_io/image_codec.h"
+#include "lcm_io/validate.h"
 #include "models/bspline_basis.h"
 #include "models/model_registry.h"
 #include "models/nonradial_field.h"
+#include "rig/rig_message.h"
 #include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
@@ -144,6 +148,8 @@ class Reader {
 
   // A file OpenCV wrote ends with a newline; one that does not was cut short.
   static bool EndsMidLine(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return false;  // never opens a FIFO (it would block)
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file || file.tellg() <= 0) return false;
     file.seekg(-1, std::ios::end);
@@ -290,6 +296,16 @@ Rig ReadCalibrationFile(const std::string& path) {
   Rig f;
   const ModelKind model = ReadModelKind(in, root, "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
+  // The ranges every way in shares (a STEREO_CALIBRATION message's:
+  // lcm_io/validate.h): fx = 1e-300 would load, and match with f = 0 px.
+  auto in_range = [&](const CameraModel& camera, const char* name) {
+    try {
+      Validate(MessageFromCameraModel(camera, name));
+    } catch (const DecodeError& e) {
+      in.Fail(name, e.what());
+    }
+  };
+  in_range(f.left, "left");
   // A one-camera file has neither "right" nor "stereo".
   f.mono = root["right"].empty() && root["stereo"].empty();
   if (f.mono) {
@@ -299,6 +315,7 @@ Rig ReadCalibrationFile(const std::string& path) {
     return f;
   }
   f.right = ReadCamera(in, root, "right", &f.right_rms, &f.right_views);
+  in_range(f.right, "right");
   for (const auto* camera : {&f.left, &f.right})
     if (camera->distortion.kind != model)
       in.Fail("model",
@@ -310,6 +327,7 @@ Rig ReadCalibrationFile(const std::string& path) {
       !(f.R.determinant() > 0))
     in.Fail("stereo.R", "not a rotation (R^T R = I, det R = +1)");
   f.T = in.Matrix(stereo, "T", "stereo.T", 3, 1);
+  if (!(f.T.norm() > 0)) in.Fail("stereo.T", "a zero baseline (T = 0): the two cameras are at one place");
   f.rms = in.Real(stereo, "rms", "stereo.rms");
   if (f.rms < 0) in.Fail("stereo.rms", "negative");
   const double baseline = in.Real(stereo, "baseline_m", "stereo.baseline_m");

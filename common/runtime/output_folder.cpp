@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 #include <stdexcept>
 
 #include "runtime/atomic_file.h"
@@ -36,12 +37,28 @@ std::string CommandOutputFile(const CommandOutput& output) {
 
 std::string KeepBackup(const std::string& path) {
   if (!PathExists(path)) return "";
-  for (int n = 1; n < 10000; ++n) {
-    const std::string backup = path + "." + std::to_string(n) + ".bak";
-    if (link(path.c_str(), backup.c_str()) == 0) return backup;
-    if (errno != EEXIST) throw std::runtime_error("cannot keep a backup of " + path + ": " + std::strerror(errno));
+  // The numbers of PATH.N.bak there now.
+  const std::filesystem::path file(path);
+  const std::string prefix = file.filename().string() + ".";
+  std::vector<long> kept;
+  std::error_code error;
+  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 4, 4, ".bak") != 0)
+      continue;
+    const std::string number = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+    if (number.empty() || number.size() > 9 || number.find_first_not_of("0123456789") != std::string::npos) continue;
+    kept.push_back(std::stol(number));
   }
-  throw std::runtime_error("cannot keep a backup of " + path + ": 9999 backups already");
+  const long next = kept.empty() ? 1 : *std::max_element(kept.begin(), kept.end()) + 1;
+  const std::string backup = path + "." + std::to_string(next) + ".bak";
+  if (link(path.c_str(), backup.c_str()) != 0)
+    throw std::runtime_error("cannot keep a backup of " + path + ": " + std::strerror(errno));
+  for (long n : kept)  // the oldest beyond the last kKeptBackups
+    if (n <= next - kKeptBackups) std::filesystem::remove(path + "." + std::to_string(n) + ".bak", error);
+  return backup;
 }
 
 void RequireWritableFolderOf(const std::string& option, const std::string& path) {

@@ -28,10 +28,13 @@ struct CommandOutput {
 // `overwrite` is false.
 std::string CommandOutputFile(const CommandOutput& output);
 
-// Keeps the file at `path`, if there is one, as PATH.N.bak (the first N
-// free): a hard link, so the old bytes survive the new file's rename over
-// PATH. Returns the backup's path, "" when there was no file. Throws
-// std::runtime_error when no backup can be made.
+// Keeps the file at `path`, if there is one, as PATH.N.bak (N one more
+// than the newest backup's): a hard link, so the old bytes survive the new
+// file's rename over PATH. Only the last kKeptBackups are kept, so that a
+// peer repeating `save ... overwrite=1` cannot fill the disk. Returns the
+// backup's path, "" when there was no file. Throws std::runtime_error when
+// no backup can be made.
+inline constexpr long kKeptBackups = 10;
 std::string KeepBackup(const std::string& path);
 
 // Checks, before any work, that the file `path` given as `option` (--out,

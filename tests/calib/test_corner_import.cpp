@@ -97,6 +97,10 @@ TEST(CornerImport, DamageIsNamedWithFileAndLine) {
   ExpectError([&] { ReadMrcalCorners(short_view, 2, 2, 0.1, 640, 480); }, "a.png has 1 corners");
   const std::string bad = Write(dir, "d.vnl", "a.png 1 x 0\n");
   ExpectError([&] { ReadMrcalCorners(bad, 2, 2, 0.1, 640, 480); }, "d.vnl:1: x and y");
+  // Corners outside the image (a solve would call such a board collinear).
+  ExpectError([&] { ReadBabelCalibViews(dsc, {orpc("0,1,1,99999,2\n")}); }, "x.orpc: corner 1 at (99999");
+  const std::string far = Write(dir, "e.vnl", "a.png 1 2 0\na.png 1e308 2 0\na.png 5 6 0\na.png 7 8 0\n");
+  ExpectError([&] { ReadMrcalCorners(far, 2, 2, 0.1, 640, 480); }, "e.vnl: a.png: corner 1 at (");
 }
 
 TEST(GlobCaptures, EachStarGivesTheTextItMatched) {

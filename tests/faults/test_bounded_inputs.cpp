@@ -200,6 +200,18 @@ TEST_P(AbsurdCalibration, FileIsRefusedAtTheStartWithTheReason) {
       << r.output;
 }
 
+// A rig of zero baseline (once a raw OpenCV assertion): refused at the
+// start, saying why.
+TEST_P(AbsurdCalibration, AZeroBaselineIsRefusedWithTheReason) {
+  const std::string name = GetParam();
+  const std::string dir = TempDir("zero-baseline-" + name);
+  const std::string calib = dir + "/calib.yaml";
+  WriteCalibrationFile(calib, ws::RigFromMessage(IdentityCalibration(640, 480, 500, 0.0)));
+  const CommandResult r = RunCommand({name, "--calib", calib, "--log-dir", dir, "--in-url", UniqueUdpmUrl(46)}, 60);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("a zero baseline (T = 0)"), std::string::npos) << r.output;
+}
+
 // A 10^7-knot calibration file (the issue: it hung for over 12 minutes
 // and ignored SIGTERM) is refused by its size before it is parsed.
 TEST_P(AbsurdCalibration, AHugeFileIsRefusedBeforeItIsParsed) {

@@ -2,6 +2,9 @@
 // OpenCV's own cv::FileStorage reads K, R and T, and every damaged field is
 // reported with the file, the field and the reason.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <functional>
 
 #include <fstream>
 #include <set>
@@ -273,6 +276,44 @@ TEST(RigFile, EachDamagedFieldIsNamed) {
       const std::string message = e.what();
       EXPECT_NE(message.find(path + ": " + d.field + ": "), std::string::npos) << message;
       EXPECT_NE(message.find(d.reason), std::string::npos) << message;
+    }
+  }
+}
+
+// The ranges a STEREO_CALIBRATION message must keep hold for a file too
+// (once fx = 1e-300 and 1e308 loaded, and stereo-match ran with f = 0 px).
+TEST(RigFile, RefusesValuesNoCameraHasAsItsMessageDoes) {
+  const std::string path = test::TempDir("calib-file-ranges") + "/calib.yaml";
+  const std::vector<std::pair<std::function<void(Rig&)>, std::string>> absurd = {
+      {[](Rig& f) { f.left.fx = 1e-300; }, "left: camera_calibration_t: fx and fy must be in"},
+      {[](Rig& f) { f.right.fy = 1e308; }, "right: camera_calibration_t: fx and fy must be in"},
+      {[](Rig& f) { f.left.distortion.coeffs.back() = 1e300; }, "a distortion coefficient beyond 1e8"},
+      {[](Rig& f) { f.T.setZero(); }, "stereo.T: a zero baseline"},
+  };
+  for (const auto& [spoil, says] : absurd) {
+    Rig f = SampleRig(ModelKind::kPoly6);
+    spoil(f);
+    WriteCalibrationFile(path, f);
+    try {
+      ReadCalibrationFile(path);
+      ADD_FAILURE() << "accepted: " << says;
+    } catch (const CalibrationFileError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
+// A FIFO, a device or a folder is refused before it is read (a FIFO
+// blocked the reader; /dev/zero was read for 2 GB).
+TEST(RigFile, RefusesWhatIsNoRegularFileBeforeReadingIt) {
+  const std::string dir = test::TempDir("calib-file-fifo");
+  ASSERT_EQ(mkfifo((dir + "/fifo.yaml").c_str(), 0644), 0);
+  for (const std::string& path : {dir + "/fifo.yaml", std::string("/dev/zero"), dir}) {
+    try {
+      ReadCalibrationFile(path);
+      ADD_FAILURE() << "accepted " << path;
+    } catch (const CalibrationFileError& e) {
+      EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
     }
   }
 }

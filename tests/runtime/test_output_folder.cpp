@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "runtime/atomic_file.h"
 #include "runtime/output_folder.h"
@@ -52,6 +54,22 @@ TEST(CommandOutputFile, AnExistingFileOrSymlinkOnlyWithOverwriteAndKeptAsABackup
   EXPECT_EQ(ws::test::ReadFileText(dir + "/refined.yaml"), "new\n");
   EXPECT_EQ(ws::test::ReadFileText(dir + "/refined.yaml.1.bak"), "old\n");
   EXPECT_EQ(ws::KeepBackup(dir + "/none.yaml"), "");
+}
+
+// A peer repeating `save ... overwrite=1` (400 of them once made 400
+// backups) keeps only the last kKeptBackups, numbered on from the newest.
+TEST(KeepBackup, KeepsOnlyTheLastBackups) {
+  const std::string dir = ws::test::TempDir("backups");
+  for (int i = 1; i <= 25; ++i) {
+    ws::WriteFileAtomically(dir + "/calib.yaml", "version " + std::to_string(i) + "\n");
+    ws::KeepBackup(dir + "/calib.yaml");
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  EXPECT_EQ(long(names.size()), ws::kKeptBackups + 1) << ::testing::PrintToString(names);
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.yaml.25.bak"), "version 25\n");
+  EXPECT_EQ(ws::test::ReadFileText(dir + "/calib.yaml.16.bak"), "version 16\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/calib.yaml.15.bak"));
 }
 
 TEST(RequireWritableFolderOf, AMissingFolderIsAnErrorNamingTheOptionAndTheFolder) {

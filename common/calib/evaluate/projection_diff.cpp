@@ -112,11 +112,13 @@ ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjecti
     sum += r->squaredNorm();
   }
   out.points = int(compared.size());
-  if (!compared.empty()) {
-    out.rms_px = std::sqrt(sum / compared.size());
-    out.max_px = *std::max_element(compared.begin(), compared.end());
-    out.median_px = Median(compared);
-  }
+  if (compared.empty())  // a difference over nothing is no difference
+    throw std::runtime_error("no point of the " + std::to_string(cols) + " x " + std::to_string(rows) +
+                             " grid projects through both cameras: nothing to compare (do they describe one "
+                             "camera, of one image size?)");
+  out.rms_px = std::sqrt(sum / compared.size());
+  out.max_px = *std::max_element(compared.begin(), compared.end());
+  out.median_px = Median(compared);
   return out;
 }
 

@@ -41,7 +41,9 @@ double DefaultFitRadius(const CameraProjection& camera);
 
 // Compares camera B against camera A (A's image is the grid's); either may
 // be another tool's model (interop/any_rig.h). Throws
-// std::invalid_argument when the two cameras' image sizes differ.
+// std::invalid_argument when the two cameras' image sizes differ, and
+// std::runtime_error when no grid point projects through both (a
+// difference over nothing).
 ProjectionDiff CompareProjection(const CameraProjection& a, const CameraProjection& b, double fit_radius,
                                  int cols = 64, int rows = 48);
 

@@ -118,9 +118,8 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
       process_.log().Detail("view " + std::to_string(session_.views()) + " from frame " +
                             std::to_string(msg.frame_id));
       break;
-    case CalibrationSession::Outcome::kRejected:
-      process_.Counters(channel::kStereoCorners).rejected++;
-      process_.ReportError("frame " + std::to_string(msg.frame_id) + " not used: " + why);
+    case CalibrationSession::Outcome::kRejected:  // counted, logged at most once a period with the count
+      process_.HandleRejected(channel::kStereoCorners, "frame " + std::to_string(msg.frame_id) + " not used: " + why);
       break;
     case CalibrationSession::Outcome::kDuplicate:
     case CalibrationSession::Outcome::kNoBoard:

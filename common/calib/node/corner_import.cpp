@@ -56,6 +56,20 @@ std::vector<double> Numbers(const Lines& lines, const std::string& line, size_t 
   return out;
 }
 
+// Every corner of `view` inside the image of width x height (pixel centres
+// at integer coordinates: [-0.5, width - 0.5] x [-0.5, height - 0.5]);
+// throws naming `where` and the corner otherwise (x = 99999 or 1e308 would
+// reach the solve as a "collinear" board).
+void RequireInImage(const BoardView& view, int width, int height, const std::string& where) {
+  for (size_t i = 0; i < view.image.size(); ++i) {
+    const Eigen::Vector2d& p = view.image[i];
+    if (!(p.x() >= -0.5 && p.x() <= width - 0.5 && p.y() >= -0.5 && p.y() <= height - 0.5))
+      throw CornerImportError(where + ": corner " + std::to_string(view.ids[i]) + " at (" + std::to_string(p.x()) +
+                              ", " + std::to_string(p.y()) + ") lies outside the " + std::to_string(width) + "x" +
+                              std::to_string(height) + " image");
+  }
+}
+
 int WholeNumber(const Lines& lines, double value, const char* what) {
   if (value != std::floor(value) || std::abs(value) > 1e6)
     lines.Fail(std::string(what) + " must be a whole number");
@@ -118,6 +132,7 @@ CameraData ReadBabelCalibViews(const std::string& dsc_path,
     if ((data.image_width && data.image_width != width) ||
         (data.image_height && data.image_height != height))
       throw CornerImportError(path + ": image size differs from the other files'");
+    RequireInImage(view, width, height, path);
     data.image_width = width;
     data.image_height = height;
     data.views.push_back(std::move(view));
@@ -178,6 +193,7 @@ CameraData ReadMrcalCorners(const std::string& vnl_path, int cols, int rows, dou
   data.image_width = image_width;
   data.image_height = image_height;
   for (NamedView& named : ReadMrcalViews(vnl_path, cols, rows, square)) {
+    RequireInImage(named.view, image_width, image_height, vnl_path + ": " + named.name);
     if (names) names->push_back(named.name);
     data.views.push_back(std::move(named.view));
   }
@@ -212,6 +228,7 @@ PairedViews PairMrcalViews(const std::vector<NamedView>& views, const std::strin
       throw CornerImportError(named.name + " and " + slot + " fall in the same frame of the " +
                               (left ? "left" : "right") + " camera");
     slot = named.name;
+    RequireInImage(named.view, image_width, image_height, named.name);
     (left ? paired.data.left : paired.data.right).views[at->second] = named.view;
   }
   for (CameraData* camera : {&paired.data.left, &paired.data.right}) {
