@@ -8,7 +8,6 @@
 #include "rectify/rectify_options.h"
 #include "rig/rig_file.h"
 #include "runtime/max_image_pixels_option.h"
-#include "runtime/niceness_option.h"
 #include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
@@ -56,8 +55,6 @@ int main(int argc, char** argv) {
                "image (the common field) grown by the matcher's reach (for comparisons)");
   ws::AddRectifyOptions(app, config.rectify);
   ws::AddMaxImagePixelsOption(app, config.max_image_pixels);
-  int niceness = 0;
-  ws::AddNicenessOption(app, niceness);
   std::string rectification = "auto";
   app.add_option("--rectification", rectification,
                  "pinhole, latlon (rows are epipolar planes, columns angles: fields to 180 degrees "
@@ -95,7 +92,6 @@ int main(int argc, char** argv) {
   m.common_field_only = !whole_image;
 
   try {
-    ws::ApplyNiceness(niceness);  // before the process starts its threads
     ws::Process process(cli.options());
     ws::MatchNode node(process, config);
     if (!calib_file.empty()) node.SetRig(ws::StereoRigFromFile(calib_file), "calibration file " + calib_file);
