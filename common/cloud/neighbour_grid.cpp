@@ -73,7 +73,8 @@ NeighbourGrid::NeighbourGrid(const PclCloud& cloud, double cell) : cell_(cell) {
                                         double(max.z) - min.z};
   for (size_t a = 0; a < 3; ++a) {
     const double cells = std::floor(extent[a] / cell_) + 1;
-    if (!(cells < double(1 << 30)))
+    // Below 2^31 a column's key, x * cells_[1] + y, fits an int64_t.
+    if (!(cells < double(int64_t(1) << 31)))
       throw std::invalid_argument("NeighbourGrid: the cloud spans too many cells");
     cells_[a] = int64_t(cells);
   }

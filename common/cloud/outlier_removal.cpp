@@ -12,8 +12,8 @@
 namespace ws {
 namespace {
 
-// Points searched per FLANN call: big enough that the
-// call's own cost vanishes, small enough to keep the result arrays in cache.
+// Points searched per FLANN call: big enough that the call's own cost
+// vanishes, small enough to keep the result arrays in cache.
 constexpr int kChunk = 4096;
 
 // Each point's mean distance to its mean_k neighbours, from the squared
