@@ -53,7 +53,7 @@ class NeighbourGrid {
   struct Block;
 
   Cell CellOf(const std::array<float, 3>& point) const;
-  // Appends the positions of the points in the cube of cells within r of `cell`.
+  // Appends the points in the cube of cells within r of `cell` to the block.
   void Gather(const Cell& cell, int64_t r, Block* block) const;
   // Whether the `found` nearest points of that cube, squared[0 .. found),
   // are the cloud's `count` nearest to `query`: the count-th is nearer than
