@@ -3,22 +3,23 @@
 // camera looking at a wall and a floor, with depth noise that grows with
 // depth squared, speckle outliers, and OpenCV's Z = 10000 where the
 // disparity is missing. Prints the median wall time of several runs per
-// stage, and the median CPU time of a whole run; then the outlier stage
-// (PCL's statistic on every core, cloud/outlier_removal.h) against PCL's own
-// single-threaded StatisticalOutlierRemoval on the same voxelized cloud, in
-// alternating runs.
+// stage, and the median CPU time of a whole run; then the outlier stage's
+// statistic (cloud/outlier_removal.h) by its grid search and by its k-d tree
+// against PCL's own single-threaded StatisticalOutlierRemoval on the same
+// voxelized cloud, in alternating runs.
 //
-//   bench_cloud_filter [RUNS]    (default 3)
+//   bench_cloud_filter [RUNS] [CLOUD.pcd ...]    (default 3 runs)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <chrono>
-#include <tuple>
+#include <functional>
 #include <utility>
 
 #include <opencv2/core.hpp>
@@ -28,6 +29,7 @@
 #include "cloud/cloud_filter.h"
 #include "cloud/cloud_stages.h"
 #include "cloud/outlier_removal.h"
+#include "cloud/pcd_io.h"
 #include "cloud/pcl_cloud.h"
 
 namespace {
@@ -95,34 +97,44 @@ std::pair<double, double> Time(Fn&& fn) {
   return {MillisecondsSince(start), 1000.0 * double(std::clock() - cpu_start) / CLOCKS_PER_SEC};
 }
 
+// One way to compute the statistic and its CPU time per run.
+struct Contender {
+  const char* name;
+  std::function<size_t()> kept;  // runs the statistic, returns the points kept
+  std::vector<double> cpu_ms;
+  size_t kept_points = 0;
+};
+
+// The outlier statistic on the same voxelised cloud three ways, in
+// alternating runs: the grid search the chain uses on voxels, the k-d tree
+// on every core (the chain's search before the grid, and still its search
+// when the voxel stage is off), and PCL's own single-threaded filter.
 void BenchOutliers(const widestereo::point_cloud_t& msg, int runs, const ws::CloudFilterConfig& config) {
-  const ws::PclCloud::Ptr cloud = ws::DownsampleVoxels(
-      ws::KeepDepthRange(ws::ToPcl(msg), config.z_min, config.z_max), config.voxel_leaf).cloud;
-  std::vector<double> ours_ms, ours_cpu, pcl_ms, pcl_cpu;
-  size_t ours_kept = 0, pcl_kept = 0;
-  for (int run = 0; run < runs; ++run) {
-    auto [wall, cpu] = Time([&] {
-      ours_kept = ws::StatisticalInliers(cloud, config.outliers_mean_k, config.outliers_stddev_mul).size();
-    });
-    ours_ms.push_back(wall);
-    ours_cpu.push_back(cpu);
-    std::tie(wall, cpu) = Time([&] {
-      pcl::StatisticalOutlierRemoval<pcl::PointXYZI> removal;
-      removal.setInputCloud(cloud);
-      removal.setMeanK(config.outliers_mean_k);
-      removal.setStddevMulThresh(config.outliers_stddev_mul);
-      pcl::Indices kept;
-      removal.filter(kept);
-      pcl_kept = kept.size();
-    });
-    pcl_ms.push_back(wall);
-    pcl_cpu.push_back(cpu);
-  }
-  std::printf("  outliers on %zu points, ours (%d threads) against PCL's filter: wall %.1f / %.1f ms = %.2f, "
-              "CPU %.1f / %.1f ms = %.2f; kept %zu and %zu\n",
-              cloud->size(), cv::getNumThreads(), Median(ours_ms), Median(pcl_ms),
-              Median(ours_ms) / Median(pcl_ms), Median(ours_cpu), Median(pcl_cpu),
-              Median(ours_cpu) / Median(pcl_cpu), ours_kept, pcl_kept);
+  const ws::VoxelOutput voxels = ws::DownsampleVoxels(
+      ws::KeepDepthRange(ws::ToPcl(msg), config.z_min, config.z_max), config.voxel_leaf);
+  const ws::PclCloud::Ptr cloud = voxels.cloud;
+  const int k = config.outliers_mean_k;
+  const double mul = config.outliers_stddev_mul;
+  std::vector<Contender> contenders = {
+      {"grid", [&] { return ws::StatisticalInliers(cloud, k, mul, voxels.leaf).size(); }, {}, 0},
+      {"k-d tree", [&] { return ws::StatisticalInliers(cloud, k, mul, 0).size(); }, {}, 0},
+      {"PCL", [&] {
+         pcl::StatisticalOutlierRemoval<pcl::PointXYZI> removal;
+         removal.setInputCloud(cloud);
+         removal.setMeanK(k);
+         removal.setStddevMulThresh(mul);
+         pcl::Indices kept;
+         removal.filter(kept);
+         return kept.size();
+       }, {}, 0}};
+  for (int run = 0; run < runs; ++run)
+    for (Contender& c : contenders) c.cpu_ms.push_back(Time([&] { c.kept_points = c.kept(); }).second);
+  const double pcl_cpu = Median(contenders.back().cpu_ms);
+  std::printf("  outliers on %zu points (%d threads), median CPU ms, ratio to PCL's, points kept:\n",
+              cloud->size(), cv::getNumThreads());
+  for (const Contender& c : contenders)
+    std::printf("    %-9s %8.1f  %5.3f  %zu\n", c.name, Median(c.cpu_ms), Median(c.cpu_ms) / pcl_cpu,
+                c.kept_points);
 }
 
 // The chain with `config`, `runs` times: the median time per stage.
@@ -167,29 +179,49 @@ void Bench(const char* name, const Camera& camera, int runs) {
 }
 
 // The live chain (config/stereo-cloud-live.yaml's voxels and neighbours) on
-// the live cloud's size.
-void BenchLive(const Camera& camera, int runs) {
-  const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
+// `cloud`.
+void BenchLive(const std::string& name, const widestereo::point_cloud_t& cloud, int runs) {
   ws::CloudFilterConfig live;
   live.voxel_leaf = 0.04;
   live.outliers_mean_k = 8;
-  std::printf("\nlive: %dx%d = %d points, %d runs (leaf 4 cm, 8 neighbours)\n", camera.width, camera.height,
-              cloud.npoints, runs);
+  std::printf("\nlive: %s, %d points, %d runs (leaf 4 cm, 8 neighbours)\n", name.c_str(), cloud.npoints,
+              runs);
   BenchChain("config/stereo-cloud-live.yaml", cloud, live, runs);
   BenchOutliers(cloud, runs, live);
 }
 
+constexpr char kUsage[] =
+    "usage: bench_cloud_filter [RUNS >= 1] [CLOUD.pcd ...]\n"
+    "  RUNS: runs per measurement (default 3). Each CLOUD.pcd (a cloud stereo-match published,\n"
+    "  saved by stereo-cloud with every stage off, bench/cloud/README.md) goes through the live\n"
+    "  chain too.\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--help") {
+    std::printf("%s", kUsage);
+    return 0;
+  }
   const int runs = argc > 1 ? std::atoi(argv[1]) : 3;
   if (runs < 1) {
-    std::fprintf(stderr, "usage: bench_cloud_filter [RUNS >= 1]\n");
+    std::fprintf(stderr, "%s", kUsage);
     return 2;
+  }
+  std::vector<widestereo::point_cloud_t> saved;
+  for (int i = 2; i < argc; ++i) {
+    try {
+      saved.push_back(ws::ReadPcd(argv[i]));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "bench_cloud_filter: %s: %s\n", argv[i], e.what());
+      return 1;
+    }
   }
   // Rectified 100-degree horizontal field: focal = (width / 2) / tan(50 deg).
   // stereo-match's live cloud: 1280x960 every 4th pixel and row.
-  BenchLive({320, 240, 160 / std::tan(50 * M_PI / 180)}, runs);
+  const Camera live{320, 240, 160 / std::tan(50 * M_PI / 180)};
+  BenchLive("a made-up wall and floor, 320x240", StereoWallCloud(live, 1), runs);
+  for (int i = 2; i < argc; ++i) BenchLive(argv[i], saved[size_t(i - 2)], runs);
   Bench("77 k", {320, 240, 160 / std::tan(50 * M_PI / 180)}, runs);
   Bench("0.3 M", {640, 480, 320 / std::tan(50 * M_PI / 180)}, runs);
   Bench("1 M", {1280, 800, 640 / std::tan(50 * M_PI / 180)}, runs);

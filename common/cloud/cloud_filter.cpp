@@ -53,13 +53,17 @@ CloudFilterResult CloudFilter::Run(const widestereo::point_cloud_t& msg) const {
   cloud = Take("passthrough", EmptyIfOnePoint(cloud), &result.notes);
   clock.Lap("passthrough", cloud->size());
 
-  if (config_.voxel_enabled)
-    cloud = Take("voxel", DownsampleVoxels(cloud, config_.voxel_leaf), &result.notes);
+  double voxel_leaf = 0;  // 0: the cloud was not voxelised
+  if (config_.voxel_enabled) {
+    VoxelOutput voxels = DownsampleVoxels(cloud, config_.voxel_leaf);
+    voxel_leaf = voxels.leaf;
+    cloud = Take("voxel", std::move(voxels), &result.notes);
+  }
   clock.Lap("voxel", cloud->size());
 
   if (config_.outliers_enabled)
     cloud = Take("outliers",
-                 RemoveOutliers(cloud, config_.outliers_mean_k, config_.outliers_stddev_mul),
+                 RemoveOutliers(cloud, config_.outliers_mean_k, config_.outliers_stddev_mul, voxel_leaf),
                  &result.notes);
   clock.Lap("outliers", cloud->size());
 

@@ -63,29 +63,31 @@ StageOutput EmptyIfOnePoint(const PclCloud::Ptr& cloud) {
   return {PclCloud::Ptr(new PclCloud), note.str()};
 }
 
-StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf) {
-  if (cloud->empty()) return {cloud, "skipped: no points"};
+VoxelOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf) {
+  if (cloud->empty()) return {{cloud, "skipped: no points"}};
   pcl::PointXYZI min, max;
   pcl::getMinMax3D(*cloud, min, max);
   const VoxelPlan plan = PlanVoxelGrid({min.x, min.y, min.z}, {max.x, max.y, max.z}, leaf);
-  if (!plan.run) return {cloud, plan.reason};
+  if (!plan.run) return {{cloud, plan.reason}};
   pcl::VoxelGrid<pcl::PointXYZI> grid;
   grid.setInputCloud(cloud);
   grid.setLeafSize(float(plan.leaf), float(plan.leaf), float(plan.leaf));
   PclCloud::Ptr centroids(new PclCloud);
   grid.filter(*centroids);
-  return {centroids, plan.reason};
+  return {{centroids, plan.reason}, plan.leaf};
 }
 
-StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul) {
+StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul,
+                           double voxel_leaf) {
   if (cloud->size() <= size_t(mean_k))
     return {cloud, "skipped: " + std::to_string(cloud->size()) +
                        " points, not more than --outliers-mean-k (" + std::to_string(mean_k) + ")"};
-  if (RepeatVisits(*cloud) > kMaxRepeatVisitsPerPoint * double(cloud->size()))
+  // VoxelGrid's output holds one point per voxel: no copies to count.
+  if (voxel_leaf == 0 && RepeatVisits(*cloud) > kMaxRepeatVisitsPerPoint * double(cloud->size()))
     return {cloud,
             "skipped: the cloud repeats the same points so often that the neighbour "
             "search would take quadratic time"};
-  return {Select(cloud, StatisticalInliers(cloud, mean_k, stddev_mul)), ""};
+  return {Select(cloud, StatisticalInliers(cloud, mean_k, stddev_mul, voxel_leaf)), ""};
 }
 
 }  // namespace ws

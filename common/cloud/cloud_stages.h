@@ -23,14 +23,20 @@ PclCloud::Ptr KeepDepthRange(const PclCloud::Ptr& cloud, double z_min, double z_
 // the cloud unchanged otherwise.
 StageOutput EmptyIfOnePoint(const PclCloud::Ptr& cloud);
 
-// VoxelGrid (intensity averaged per voxel) at the leaf PlanVoxelGrid chooses.
-StageOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf);
+struct VoxelOutput : StageOutput {
+  double leaf = 0;  // metres: the leaf the cloud was downsampled at; 0 when it was not
+};
 
-// PCL's StatisticalOutlierRemoval, on every core (outlier_removal.h).
+// VoxelGrid (intensity averaged per voxel) at the leaf PlanVoxelGrid chooses.
+VoxelOutput DownsampleVoxels(const PclCloud::Ptr& cloud, double leaf);
+
+// PCL's StatisticalOutlierRemoval, on every core (outlier_removal.h); on a
+// grid when voxel_leaf > 0 says the cloud is VoxelGrid's output at that leaf.
 // Skipped when the cloud has no more than mean_k points (PCL would read past
 // its neighbour arrays), and when it holds so many copies of the same points
 // that the k-d tree search turns quadratic (200 000 identical points take
-// PCL about 24 minutes: PCL issue #1146).
-StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul);
+// PCL about 24 minutes: PCL issue #1146); a voxelised cloud holds none.
+StageOutput RemoveOutliers(const PclCloud::Ptr& cloud, int mean_k, double stddev_mul,
+                           double voxel_leaf);
 
 }  // namespace ws

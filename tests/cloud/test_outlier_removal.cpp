@@ -1,11 +1,13 @@
 // The outlier stage computes PCL's StatisticalOutlierRemoval on several
-// threads: it must keep exactly the points PCL's filter keeps.
+// threads, by a k-d tree or, on a voxelised cloud, by a grid: either must
+// keep exactly the points PCL's filter keeps.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include <pcl/filters/statistical_outlier_removal.h>
 
+#include "cloud/cloud_stages.h"
 #include "cloud/outlier_removal.h"
 #include "cloud/pcl_cloud.h"
 #include "cloud_test_support.h"
@@ -36,7 +38,7 @@ TEST(OutlierRemoval, KeepsExactlyThePointsPclKeeps) {
   const ws::PclCloud::Ptr wall = WallWithOutliers();
   for (int mean_k : {1, 8, 20, 50})
     for (double stddev_mul : {0.5, 1.0, 2.0}) {
-      const pcl::Indices ours = ws::StatisticalInliers(wall, mean_k, stddev_mul);
+      const pcl::Indices ours = ws::StatisticalInliers(wall, mean_k, stddev_mul, 0);
       EXPECT_EQ(ours, PclInliers(wall, mean_k, stddev_mul)) << mean_k << " " << stddev_mul;
       EXPECT_LT(ours.size(), wall->size());
       EXPECT_GT(ours.size(), wall->size() / 2);
@@ -59,7 +61,24 @@ TEST(OutlierRemoval, KeepsExactlyThePointsPclKeepsInAClusteredCloud) {
       cloud->push_back(p);
     }
   }
-  EXPECT_EQ(ws::StatisticalInliers(cloud, 20, 1.0), PclInliers(cloud, 20, 1.0));
+  EXPECT_EQ(ws::StatisticalInliers(cloud, 20, 1.0, 0), PclInliers(cloud, 20, 1.0));
+}
+
+TEST(OutlierRemoval, OnVoxelsTheGridKeepsExactlyThePointsPclKeeps) {
+  const ws::PclCloud::Ptr wall = WallWithOutliers();
+  // Leaves coarser than the wall's 2 cm spacing (several points a voxel),
+  // and finer (one a voxel: the grid must grow its cells).
+  for (double leaf : {0.05, 0.03, 0.01, 0.004}) {
+    const ws::VoxelOutput voxels = ws::DownsampleVoxels(wall, leaf);
+    ASSERT_EQ(voxels.leaf, leaf);
+    for (int mean_k : {1, 8, 20})
+      for (double stddev_mul : {0.5, 2.0}) {
+        const pcl::Indices ours = ws::StatisticalInliers(voxels.cloud, mean_k, stddev_mul, voxels.leaf);
+        EXPECT_EQ(ours, PclInliers(voxels.cloud, mean_k, stddev_mul))
+            << "leaf " << leaf << ", " << mean_k << " neighbours, " << stddev_mul;
+        EXPECT_LT(ours.size(), voxels.cloud->size());
+      }
+  }
 }
 
 }  // namespace
