@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 
 #include "view/host_check.h"
@@ -168,7 +169,7 @@ void HttpServer::Accept() {
     const int fd = accept4(listener_, reinterpret_cast<sockaddr*>(&peer), &peer_length, SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) {
       // Out of descriptors: room is made for the next one (the listener stays ready).
-      if (errno == EMFILE || errno == ENFILE) MakeRoom("");
+      if (errno == EMFILE || errno == ENFILE) MakeRoom(Busiest());
       return;
     }
     Connection c;
@@ -177,11 +178,8 @@ void HttpServer::Accept() {
     if (getsockname(fd, reinterpret_cast<sockaddr*>(&own), &own_length) == 0) c.local = AddressText(own);
     const auto mine = std::count_if(connections_.begin(), connections_.end(),
                                     [&](const Connection& other) { return other.client == c.client; });
-    if ((mine >= limits_.per_client && !MakeRoom(c.client)) ||
-        (int(connections_.size()) >= limits_.total && !MakeRoom(""))) {
-      close(fd);
-      continue;
-    }
+    if (mine >= limits_.per_client) MakeRoom(c.client);
+    if (int(connections_.size()) >= limits_.total) MakeRoom(Busiest());
     setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &limits_.send_buffer, sizeof limits_.send_buffer);
     const int yes = 1;
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
@@ -191,16 +189,26 @@ void HttpServer::Accept() {
   }
 }
 
-bool HttpServer::MakeRoom(const std::string& client) {
-  auto oldest = connections_.end();
+void HttpServer::MakeRoom(const std::string& client) {
+  // The oldest waiting for a request, else the oldest (a response it does not read).
+  const auto before = [](const Connection& a, const Connection& b) {
+    const bool a_waits = a.state != Connection::State::kWriting, b_waits = b.state != Connection::State::kWriting;
+    return a_waits != b_waits ? a_waits : a.since < b.since;
+  };
+  auto chosen = connections_.end();
   for (auto it = connections_.begin(); it != connections_.end(); ++it)
-    if (it->state != Connection::State::kWriting && (client.empty() || it->client == client) &&
-        (oldest == connections_.end() || it->since < oldest->since))
-      oldest = it;
-  if (oldest == connections_.end()) return false;
-  close(oldest->fd);
-  connections_.erase(oldest);
-  return true;
+    if (it->client == client && (chosen == connections_.end() || before(*it, *chosen))) chosen = it;
+  if (chosen == connections_.end()) return;
+  close(chosen->fd);
+  connections_.erase(chosen);
+}
+
+std::string HttpServer::Busiest() const {
+  std::map<std::string, int> count;
+  for (const Connection& c : connections_) ++count[c.client];
+  const auto most = std::max_element(count.begin(), count.end(),
+                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  return most == count.end() ? "" : most->first;
 }
 
 bool HttpServer::Read(Connection& c) {

@@ -10,10 +10,12 @@
 //     something comes; it never grows past kMaxHead, a body past
 //     Limits::body (refused by its Content-Length, before it is read).
 //   - A connection costs a buffer, not a thread: idle or slow ones wait in
-//     poll() and are closed at their deadline; at the caps (per client
-//     address, in all) the oldest connection still waiting for its request is
-//     closed to make room, so that a flood of idle sockets pushes out itself,
-//     not a page's next request.
+//     poll() and are closed at their deadline. A new connection is always
+//     taken: at the cap of its client address that client's oldest
+//     connection waiting for a request is closed (its oldest at all when
+//     none waits: a response it does not read), at the cap in all the
+//     busiest client's. So a flood of sockets pushes out itself, not a
+//     page's next request.
 //   - Only the names the server is reached by are served (view/host_check.h),
 //     403 for the others: a page of another site cannot read the rig, or
 //     command it, by DNS rebinding.
@@ -104,8 +106,10 @@ class HttpServer {
   // its next request (Answer) once all is sent.
   bool Flush(Connection& c);
   void Reply(Connection& c, HttpResponse& response, bool keep_alive);
-  // Closes the oldest connection of `client` ("" any) waiting for a request; false when none is.
-  bool MakeRoom(const std::string& client);
+  // Closes a connection of `client`: the oldest waiting for a request, else the oldest.
+  void MakeRoom(const std::string& client);
+  // The client address with the most connections.
+  std::string Busiest() const;
   void StartStream(Connection& c, HttpResponse& response);
 
   Handler handler_;

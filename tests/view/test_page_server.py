@@ -172,6 +172,25 @@ def test_idle_and_slow_sockets_do_not_keep_the_page_from_being_served(bus, view)
 
 
 @pytest.mark.recorded("STEREO_COMMAND")
+def test_clients_that_do_not_read_their_responses_do_not_keep_the_page_from_being_served(bus, view):
+    port, process = view
+    stalled = []
+    for _ in range(300):  # each asks for three.js (600 KB) and reads none of it
+        s = socket.socket()
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+        s.settimeout(30)
+        s.connect(("127.0.0.1", port))
+        s.sendall(b"GET /three.min.js HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n\r\n" % port)
+        stalled.append(s)
+    worst = max(served_in(port) for _ in range(5))
+    print("the page's file, while 300 clients did not read theirs: at most %.3f s" % worst)
+    assert worst < SERVED_WITHIN
+    assert sockets_of(process.pid) < 64 + 16
+    for s in stalled:
+        s.close()
+
+
+@pytest.mark.recorded("STEREO_COMMAND")
 def test_another_sites_name_is_refused_and_publishes_nothing(bus, view):
     port, process = view
     rebound = "rebind.example:%d" % port  # a site whose name now resolves to 127.0.0.1
