@@ -243,10 +243,10 @@ bool HttpServer::Answer(Connection& c) {
     if (c.in.size() < parse.length + size_t(head.content_length)) return true;  // the body is coming
     HttpRequest request{std::move(parse.head), c.in.substr(parse.length, size_t(head.content_length))};
     c.in.erase(0, parse.length + size_t(head.content_length));
-    if (!HostAllowed(request.head.Field("host"), c.local, port_) ||
-        !OriginAllowed(request.head.Field("origin"), c.local, port_)) {
+    const std::string host = request.head.Field("host");
+    if (!HostAllowed(host, c.local) || !OriginAllowed(request.head.Field("origin"), host)) {
       response.Text(403, "served only as http://localhost:" + std::to_string(port_) +
-                             "/ (or 127.0.0.1, [::1], or the address it listens on)");
+                             "/ (or 127.0.0.1, [::1], or the address it listens on), to its own page");
     } else {
       try {
         handler_(request, response);

@@ -201,7 +201,8 @@ def test_another_sites_name_is_refused_and_publishes_nothing(bus, view):
     assert command(port, origin="http://" + rebound) == 403
     assert command(port, origin="null") == 403
     assert command(port, page_header=False) == 400  # the page's own header is still required
-    for host in ("localhost:%d" % port, "[::1]:%d" % port):
+    assert command(port, origin="http://localhost:3000") == 403  # another site on this machine
+    for host in ("localhost:%d" % port, "[::1]:%d" % port, "localhost:9000"):  # the last through a tunnel
         assert get(port, PAGE_FILE, host=host) == 200
     # The page's own command goes out: the recording does see a command.
     assert command(port, origin="http://localhost:%d" % port) == 200
