@@ -205,7 +205,8 @@ def test_another_sites_name_is_refused_and_publishes_nothing(bus, view):
     for host in ("localhost:%d" % port, "[::1]:%d" % port, "localhost:9000"):  # the last through a tunnel
         assert get(port, PAGE_FILE, host=host) == 200
     # The page's own command goes out: the recording does see a command.
-    assert command(port, origin="http://localhost:%d" % port) == 200
+    own = "localhost:%d" % port
+    assert command(port, host=own, origin="http://" + own) == 200
 
     def recorded():
         try:
