@@ -1,8 +1,9 @@
 #include "page_server.h"
 
+#include <algorithm>
 #include <fstream>
-#include <regex>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -55,8 +56,11 @@ void PageServer::Handle(const HttpRequest& req, HttpResponse& res) {
   for (const auto& [path, asset] : assets_)
     if (head.path == path) return asset.Serve(head, res);
   // The id is at most 18 digits, so it always fits an int64.
-  static const std::regex kBlob(R"(/blob/(\d{1,18}))");
-  if (std::smatch id; std::regex_match(head.path, id, kBlob)) return ServeBlob(id[1].str(), res);
+  static constexpr std::string_view kBlob = "/blob/";
+  if (const std::string_view id = std::string_view(head.path).substr(std::min(head.path.size(), kBlob.size()));
+      head.path.compare(0, kBlob.size(), kBlob) == 0 && !id.empty() && id.size() <= 18 &&
+      std::all_of(id.begin(), id.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return ServeBlob(std::string(id), res);
   if (head.path == "/events") return Events(head, res);
   res.Text(404, "not here: the page is /");
 }
