@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   app.add_option("--port", port, "TCP port of the page (0: any free port, printed and logged)")->check(CLI::Range(0, 65535))->capture_default_str();
   app.add_option("--listen", address,
                  "Address to listen on: 127.0.0.1 (this host only), 0.0.0.0 (every network: anyone "
-                 "who reaches the port sees the rig, and with the key can command it)")
+                 "who reaches the port sees the rig, and with the key can command it). The page is served "
+                 "by the address a browser reached it on, or localhost, not by a host name (docs/security.md)")
       ->capture_default_str();
   app.add_option("--calib", calib_file,
                  "Calibration file the depth view rectifies with until a STEREO_CALIBRATION comes")

@@ -1,4 +1,4 @@
-// stereo-view's HTTP side (cpp-httplib): the page and its scripts, three.js
+// stereo-view's HTTP side (view/http_server.h): the page and its scripts, three.js
 // from Debian's libjs-three, the live events by Server-Sent Events, and the
 // page's commands.
 //
@@ -13,14 +13,16 @@
 //
 // A POST must carry the header X-Widestereo-Page: 1, which a page of another
 // site cannot send without the browser asking first (CORS), so no other page
-// a user has open can press the buttons. At most kMaxStreams event streams at
-// once (503 beyond), so that the page's files are always served.
+// a user has open can press the buttons. A command's body is at most
+// kMaxBody bytes (413 beyond, unread), so its JSON is small and shallow
+// before it is parsed. At most kMaxStreams event streams at once (503
+// beyond). Every request names the server as it is reached (Host, Origin:
+// view/host_check.h), 403 otherwise.
 #pragma once
 
 #include <atomic>
 #include <memory>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -29,30 +31,30 @@
 #include "view/audience.h"
 #include "view/blob_store.h"
 #include "view/event_hub.h"
+#include "view/http_server.h"
 #include "view/view_node.h"
-
-namespace httplib {
-class Server;
-}
 
 namespace ws::view {
 
 class PageServer {
  public:
   static constexpr int kMaxStreams = 8;
-  static constexpr int kSendBufferBytes = 32 * 1024;  // the kernel doubles it
+  static constexpr size_t kMaxBody = 1024;  // {"command": "restore"} is 22
 
   // Reads three.js (throws naming the package when it is missing) and binds
   // to address:port, any free port for 0 (throws when it cannot); serves
-  // from a thread of its own.
+  // from threads of its own.
   PageServer(Process& process, EventHub& hub, const BlobStore& blobs, Audience& audience, ViewNode& node,
              const std::string& address, int port, const std::string& three_dir);
   // Closes the streams and stops serving.
   ~PageServer();
-  int port() const { return port_; }
+  int port() const { return server_->port(); }
 
  private:
-  void Routes();
+  void Handle(const HttpRequest& req, HttpResponse& res);
+  void ServeBlob(const std::string& id, HttpResponse& res);
+  void Events(const HttpHead& req, HttpResponse& res);
+  void Command(const HttpRequest& req, HttpResponse& res);
 
   Process& process_;
   EventHub& hub_;
@@ -60,10 +62,8 @@ class PageServer {
   Audience& audience_;
   ViewNode& node_;
   std::vector<std::pair<std::string, StaticAsset>> assets_;  // path, file
-  std::unique_ptr<httplib::Server> server_;
-  int port_ = 0;
   std::atomic<int> streams_{0};
-  std::thread thread_;
+  std::unique_ptr<HttpServer> server_;  // last: it stops before what it serves goes
 };
 
 }  // namespace ws::view

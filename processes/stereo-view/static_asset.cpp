@@ -4,8 +4,6 @@
 
 #include <stdexcept>
 
-#include <httplib.h>
-
 namespace ws::view {
 namespace {
 
@@ -31,16 +29,12 @@ std::string Gzip(const std::string& text) {
 StaticAsset::StaticAsset(std::string body, std::string content_type)
     : plain_(std::move(body)), gzip_(Gzip(plain_)), content_type_(std::move(content_type)) {}
 
-void StaticAsset::Serve(const httplib::Request& req, httplib::Response& res) const {
-  const bool gzip = req.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
-  const std::string& body = gzip ? gzip_ : plain_;
-  if (gzip) res.set_header("Content-Encoding", "gzip");
-  res.set_header("Vary", "Accept-Encoding");
-  // A provider of known length: httplib sends it as it is, compressing nothing.
-  res.set_content_provider(body.size(), content_type_.c_str(),
-                           [&body](size_t offset, size_t length, httplib::DataSink& sink) {
-                             return sink.write(body.data() + offset, length);
-                           });
+void StaticAsset::Serve(const HttpHead& req, HttpResponse& res) const {
+  const bool gzip = req.Field("accept-encoding").find("gzip") != std::string::npos;
+  if (gzip) res.fields.emplace_back("Content-Encoding", "gzip");
+  res.fields.emplace_back("Vary", "Accept-Encoding");
+  res.content_type = content_type_;
+  res.shared_body = gzip ? gzip_ : plain_;
 }
 
 }  // namespace ws::view

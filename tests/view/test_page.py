@@ -3,11 +3,7 @@ the simulated rig's processes on a bus of their own (udpm, ttl 0), lcm-logger
 recording it, and the page checked against what the bus carried."""
 import json
 import os
-import random
-import secrets
-import signal
 import socket
-import subprocess
 import time
 import urllib.error
 import urllib.request
@@ -19,90 +15,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 
-import widestereo
-
-SOURCE = os.environ.get("WS_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-BUILD = os.environ.get("WS_BINARY_DIR", os.path.join(SOURCE, "build"))
-BIN = os.path.join(BUILD, "bin")
-CALIBRATION = os.path.join(SOURCE, "config", "calib", "sim-default.yaml")
-
-
-def until(condition, timeout, what):
-    """Polls condition() until it is true (returns its value) or fails the test after timeout seconds."""
-    end = time.monotonic() + timeout
-    while True:
-        value = condition()
-        if value:
-            return value
-        if time.monotonic() > end:
-            pytest.fail("after %.0f s still not: %s" % (timeout, what))
-        time.sleep(0.1)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class Bus:
-    """Processes on a private udpm bus, each with its output in the test's folder, and a recording."""
-
-    def __init__(self, folder, channels):
-        self.folder = str(folder)
-        # Ports apart from the other tests' (tests/support UniqueUdpmUrl: 20000 to 39999).
-        self.url = "udpm://239.255.76.67:%d?ttl=0&recv_buf_size=16777216" % random.randrange(41000, 49000)
-        self.log = os.path.join(self.folder, "bus.lcmlog")
-        self.processes = []
-        self.start("lcm-logger", ["-f", "-s", "--channel=" + channels, "--lcm-url=" + self.url, self.log], own=False)
-
-    def start(self, name, args, own=True):
-        executable = os.path.join(BIN, name) if own else name
-        argv = [executable] + args
-        if own:
-            argv += ["--in-url", self.url, "--out-url", self.url, "--log-dir", self.folder]
-        out = open(os.path.join(self.folder, "%s-%d.out" % (name, len(self.processes))), "w")
-        process = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, cwd=SOURCE)
-        self.processes.append((name, process, out.name))
-        return process
-
-    def page(self, port, process):
-        """Waits for stereo-view to serve its page; its address."""
-        address = "http://127.0.0.1:%d/" % port
-
-        def up():
-            assert process.poll() is None, "stereo-view ended: " + self.output("stereo-view")
-            try:
-                return urllib.request.urlopen(address, timeout=1).status == 200
-            except OSError:
-                return False
-        until(up, 30, "stereo-view serves " + address)
-        return address
-
-    def output(self, name):
-        return "\n".join(open(path).read() for n, _, path in self.processes if n == name)
-
-    def stop(self):
-        for _, process, _ in reversed(self.processes):
-            if process.poll() is None:
-                process.send_signal(signal.SIGINT)
-        for name, process, path in reversed(self.processes):
-            try:
-                process.wait(timeout=15)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait()
-
-    def events(self, channel):
-        return [e.message for e in widestereo.read_log(self.log, channels={channel})]
-
-
-@pytest.fixture
-def bus(tmp_path, request):
-    """The bus, recording the channels the test's `recorded` mark names (not the images: GBs)."""
-    b = Bus(tmp_path, request.node.get_closest_marker("recorded").args[0])
-    yield b
-    b.stop()
+from view_support import CALIBRATION, free_port, key_file, until
 
 
 @pytest.fixture(scope="module")
@@ -133,13 +46,6 @@ def green_pixels(png):
 def screenshot(driver, bus, name):
     path = os.path.join(bus.folder, name)
     driver.save_screenshot(path)
-    return path
-
-
-def key_file(folder):
-    path = os.path.join(str(folder), "rig.key")
-    with os.fdopen(os.open(path, os.O_WRONLY | os.O_CREAT, 0o600), "wb") as f:
-        f.write(secrets.token_bytes(32))
     return path
 
 
@@ -254,7 +160,7 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     stalled = socket.socket()
     stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
     stalled.connect(("127.0.0.1", port))
-    stalled.sendall(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+    stalled.sendall(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n\r\n" % port)
     stalled_at = time.time()
 
     def skipped_on_page():  # a reading browser skips too: newest-only events coalesce between its reads
