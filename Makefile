@@ -24,7 +24,7 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libgtest-dev libcli11-dev libyaml-cpp-dev nlohmann-json3-dev \
   gnuplot-nox iproute2 tmux xvfb clang libclang-rt-14-dev python3 python3-yaml time \
   libsodium-dev mrcal python3-mrcal python3-opencv pybind11-dev python3-pybind11 python3-numpy \
-  python3-pytest libcpp-httplib-dev libjs-three chromium chromium-driver python3-selenium
+  python3-pytest libjs-three chromium chromium-driver python3-selenium
 
 .PHONY: deps build built test test-asan fuzz demo spy clean
 
