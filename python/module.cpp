@@ -128,6 +128,8 @@ struct PyRig {
     RectifyOptions options;
     options.mode = ParseRectificationMode(mode);
     options.focal_scale = focal_scale;
+    if (size && (size->first <= 0 || size->second <= 0))
+      throw std::invalid_argument("size must be two positive numbers (width, height), or None for the default");
     if (size) options.size = cv::Size(size->first, size->second);
     const Rig stereo = rig.AsStereoRig();
     py::gil_scoped_release release;
@@ -146,6 +148,13 @@ struct PyRig {
     });
   }
 };
+
+// A path as Python gave it: one with a NUL byte would name another file
+// (the C library stops at it), so it is refused.
+const std::string& CheckedPath(const std::string& path) {
+  if (path.find('\0') != std::string::npos) throw std::invalid_argument("a path with a NUL byte names no file");
+  return path;
+}
 
 py::tuple Maps(const std::array<cv::Mat, 2>& maps) { return py::make_tuple(MatToArray(maps[0]), MatToArray(maps[1])); }
 
@@ -170,7 +179,7 @@ PYBIND11_MODULE(_widestereo, m) {
       .def_static(
           "load",
           [](const std::string& path, const std::string& side) {
-            const AnyRig rig = LoadAnyRig(path);
+            const AnyRig rig = LoadAnyRig(CheckedPath(path));
             return PyCamera{Side(rig, side, path)};
           },
           py::arg("path"), py::arg("side") = "left",
@@ -209,8 +218,15 @@ PYBIND11_MODULE(_widestereo, m) {
       .def(
           "rectify",
           [](const Rectification& r, const py::array& left, const py::array& right) {
+            const cv::Mat l = ArrayToMat(left), rt = ArrayToMat(right);
+            for (const cv::Mat* image : {&l, &rt})
+              if (image->size() != r.input_size)
+                throw std::invalid_argument("an image of " + std::to_string(image->cols) + "x" +
+                                            std::to_string(image->rows) + ", where the cameras' are " +
+                                            std::to_string(r.input_size.width) + "x" +
+                                            std::to_string(r.input_size.height));
             cv::Mat out_left, out_right;
-            RectifyPair(r, ArrayToMat(left), ArrayToMat(right), &out_left, &out_right);
+            RectifyPair(r, l, rt, &out_left, &out_right);
             return py::make_tuple(MatToArray(out_left), MatToArray(out_right));
           },
           py::arg("left"), py::arg("right"), "Both images rectified (as stereo-match does)")
@@ -228,7 +244,7 @@ PYBIND11_MODULE(_widestereo, m) {
 
   py::class_<PyRig>(m, "Rig", "A calibrated camera pair, X_right = R X_left + T")
       .def_static(
-          "load", [](const std::string& path) { return PyRig{LoadAnyRig(path)}; }, py::arg("path"))
+          "load", [](const std::string& path) { return PyRig{LoadAnyRig(CheckedPath(path))}; }, py::arg("path"))
       .def_static("from_message", &PyRig::FromMessage, py::arg("encoded"),
                   "The rig of an encoded stereo_calibration_t (STEREO_CALIBRATION)")
       .def_property_readonly("left", [](const PyRig& r) { return r.Get("left"); })

@@ -80,6 +80,16 @@ bool IsRotation(const Eigen::Matrix3d& R) {
 AnyRig LoadAnyRig(const std::string& path) {
   const std::filesystem::path p(path);
   if (!std::filesystem::exists(p)) throw CalibrationFileError(path + ": (file): missing");
+  // Sized before a byte is read: a FIFO would block the first read, a
+  // device (/dev/zero) never end it; no calibration of any format is
+  // larger than the largest file any of the readers takes.
+  constexpr uintmax_t kMaxBytes = uintmax_t(64) << 20;
+  std::error_code error;
+  if (!std::filesystem::is_directory(p, error) && !std::filesystem::is_regular_file(p, error))
+    throw CalibrationFileError(path + ": (file): not a regular file (a FIFO or a device)");
+  if (std::filesystem::is_regular_file(p, error) && std::filesystem::file_size(p, error) > kMaxBytes)
+    throw CalibrationFileError(path + ": (file): more than " + std::to_string(kMaxBytes) +
+                               " bytes, larger than any calibration");
   if (std::filesystem::is_directory(p) || p.extension() == ".cameramodel") return FromMrcal(path);
   if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
   // widestereo's own: its header, or (a file edited by hand) its keys; a

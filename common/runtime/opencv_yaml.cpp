@@ -2,9 +2,6 @@
 
 #include <sys/stat.h>
 
-#include <cerrno>
-#include <cstring>
-
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -73,7 +70,7 @@ void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path, size_t ma
   // Sized before a byte is read: a FIFO would block the read, a device
   // (/dev/zero) never end it.
   struct stat info;
-  if (stat(path.c_str(), &info) != 0) throw YamlFileError(std::string("cannot open the file: ") + std::strerror(errno));
+  if (stat(path.c_str(), &info) != 0) throw YamlFileError("cannot open the file");
   if (!S_ISREG(info.st_mode)) throw YamlFileError("not a regular file (a folder, a FIFO or a device)");
   if (uint64_t(info.st_size) > max_bytes)
     throw YamlFileError(std::to_string(info.st_size) + " bytes: more than " + std::to_string(max_bytes) +

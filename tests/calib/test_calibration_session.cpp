@@ -2,6 +2,9 @@
 // duplicates skipped, the coverage and hint, and the state file that brings
 // the views back after a crash, even one in the middle of a write.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
 
 #include <cmath>
 #include <filesystem>
@@ -133,6 +136,46 @@ TEST_F(CalibSession, TheStateFileBringsTheViewsBackAfterACrashMidWrite) {
   const StereoData data = session.Data();
   ASSERT_EQ(data.size(), 6);
   EXPECT_EQ(data.left.views[5].image, rig.data.left.views[5].image);
+}
+
+// The disk fills while a view is saved (a file size limit stands in for
+// it: EFBIG where ENOSPC would be): the view is accepted and the failure
+// said; a restart while the disk is still full recovers every view on
+// disk and starts (it once refused to).
+TEST_F(CalibSession, AFullDiskIsSaidAndARestartRecoversWhatIsOnDisk) {
+  const std::string state = ws::test::TempDir("calib-session-full") + "/views.lcmlog";
+  SessionOptions options;
+  options.state_path = state;
+  rlimit before;
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
+  const auto handler = std::signal(SIGXFSZ, SIG_IGN);
+  auto limit = [&](rlim_t bytes) {
+    rlimit small = before;
+    small.rlim_cur = bytes;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  };
+  size_t on_disk = 0;
+  {
+    CalibrationSession session(options);
+    EXPECT_EQ(session.Restore(), 0);
+    for (int v = 0; v < 3; ++v) session.Add(Message(rig, v, board));
+    on_disk = std::filesystem::file_size(state);
+    limit(on_disk + on_disk / 6);  // half a view more
+    std::string why;
+    EXPECT_EQ(session.Add(Message(rig, 3, board), &why), CalibrationSession::Outcome::kAccepted);
+    EXPECT_NE(why.find("could not save the view to " + state), std::string::npos) << why;
+  }
+  limit(on_disk / 2);  // still full: the state cannot be written again
+  {
+    CalibrationSession session(options);
+    EXPECT_EQ(session.Restore(), 3);
+    EXPECT_NE(session.StateDamage().find("it could not be written again"), std::string::npos)
+        << session.StateDamage();
+  }
+  setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, handler);
+  CalibrationSession session(options);
+  EXPECT_EQ(session.Restore(), 3);  // the damage passed over again, nothing lost
 }
 
 // A state file with nothing recoverable is archived all the same, never

@@ -1,5 +1,7 @@
 """widestereo.Rig: R and T as the file holds them, triangulation of raw pixel
 pairs, and both rectifications' maps as cv2.remap uses them."""
+import os
+
 import cv2
 import numpy as np
 import pytest
@@ -54,3 +56,18 @@ def test_disparity_triangulation_meets_the_raw_pixel_one(rig):
     d = rect.f * rect.baseline / in_rect[2]
     found = rect.triangulate([u, v, d])
     np.testing.assert_allclose(rect.R_left.T @ found, point, atol=1e-9)
+
+
+def test_bad_input_is_refused_before_any_work(rig, sim_calibration, tmp_path):
+    rect = rig.rectification("pinhole")
+    with pytest.raises(ValueError, match="an image of 640x480, where the cameras' are 1280x960"):
+        rect.rectify(np.zeros((480, 640), np.uint8), np.zeros((480, 640), np.uint8))
+    with pytest.raises(ValueError, match="size must be two positive numbers"):
+        rig.rectification("pinhole", size=(-5, -5))
+    with pytest.raises(ValueError, match="NUL"):
+        widestereo.Rig.load(sim_calibration + "\0.ignored")
+    fifo = str(tmp_path / "calib.yaml")
+    os.mkfifo(fifo)
+    for path in (fifo, "/dev/zero"):  # a FIFO blocked the reader; /dev/zero was read for 2 GB
+        with pytest.raises(RuntimeError, match="not a regular file"):
+            widestereo.Camera.load(path)

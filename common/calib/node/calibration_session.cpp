@@ -82,12 +82,20 @@ int CalibrationSession::ReadStateLocked(int64_t wall_us) {
   state_damage_.clear();
   if (!fs::exists(path)) return 0;
   const LcmLogRecovery log = RecoverLcmLog(path, IsCornersEvent);
-  std::string archive;
+  std::string archive, not_rewritten;
   if (!log.intact()) {
     // The damaged file is kept as it is, and the views continue in a new
     // one holding every intact event: what follows the damage is not lost.
+    // Where the new one cannot be written (the disk that cut the old one
+    // short is still full), the views continue after the damage, which the
+    // next start passes over again: the process starts all the same.
     archive = ArchiveLocked(kDamaged, wall_us);
-    WriteFileAtomically(path, EncodeLcmLog(log.events));
+    try {
+      WriteFileAtomically(path, EncodeLcmLog(log.events));
+    } catch (const std::runtime_error& e) {
+      not_rewritten = std::string("; it could not be written again without the damage (") + e.what() +
+                      "): new views follow the damage";
+    }
   }
   int restored = 0;
   for (const LcmLogEvent& event : log.events) {
@@ -99,7 +107,8 @@ int CalibrationSession::ReadStateLocked(int64_t wall_us) {
     state_damage_ = "the views file " + Quoted(path) + " was damaged (" + log.first_damage + ") and is kept as " +
                     Quoted(archive) + ": intact events recovered: " + std::to_string(log.events.size()) + " (" +
                     std::to_string(restored) + " views restored); events lost: " + std::to_string(log.lost_events) +
-                    " (" + std::to_string(log.lost_bytes) + " of " + std::to_string(log.file_bytes) + " bytes)";
+                    " (" + std::to_string(log.lost_bytes) + " of " + std::to_string(log.file_bytes) + " bytes)" +
+                    not_rewritten;
   return restored;
 }
 

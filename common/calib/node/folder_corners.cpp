@@ -88,7 +88,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     if (!pair) break;
     if (pair->left.empty()) {
       result.unreadable.push_back(pair->label);
-      log.Error("cannot read " + pair->label + ": left out");
+      log.Error(pair->label + ": left out");
       continue;
     }
     ++result.read;
