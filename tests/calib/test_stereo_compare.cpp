@@ -165,4 +165,19 @@ TEST(StereoCompare, RefusesCamerasOfAnotherSize) {
   EXPECT_NE(run.output.find("differ in size"), std::string::npos) << run.output;
 }
 
+// Where no grid point projects into both cameras' images (the second's
+// principal point two image widths across: every ray lands right of its
+// image), there is nothing to compare: an error, not 0 px over 0 points.
+TEST(StereoCompare, RefusesToReportADifferenceOverNothing) {
+  const Files& f = RigFiles();
+  Rig shifted = f.calibration_file;
+  for (CameraModel* camera : {&shifted.left, &shifted.right}) camera->cx = 2.0 * camera->image_width;
+  const std::string path = f.dir + "/elsewhere.yaml";
+  WriteCalibrationFile(path, shifted);
+  const auto run = RunCommand({BinDir() + "/stereo-compare", f.calibration, path, "--no-rotation"});
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("nothing to compare"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("over 0 grid points"), std::string::npos) << run.output;
+}
+
 }  // namespace
