@@ -155,4 +155,20 @@ TEST(CalibrateOutputs, HostileImagesAreNamedAndLeftOutAndTheRunGoesOn) {
   }
 }
 
+// Where no image shows the board, the advice tries other sizes on the
+// folder's images: never on one it left out (a FIFO would block the run,
+// a bomb take gigabytes).
+TEST(CalibrateOutputs, NoBoardAdviceNeverOpensWhatTheFolderLeftOut) {
+  const std::string images = TempDir("outputs-noboard-images");
+  for (const char* side : {"left", "right"})
+    for (int i = 1; i <= 3; ++i)
+      cv::imwrite(images + "/" + side + std::to_string(i) + ".png", cv::Mat(240, 320, CV_8UC1, cv::Scalar(40 * i)));
+  ASSERT_EQ(mkfifo((images + "/left4.png").c_str(), 0644), 0);
+  cv::imwrite(images + "/right4.png", cv::Mat(240, 320, CV_8UC1, cv::Scalar(9)));
+  const CommandResult r = Calibrate(images, TempDir("outputs-noboard") + "/c.yaml");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("left4.png: not a regular file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no 9x6 board in any image"), std::string::npos) << r.output;
+}
+
 }  // namespace

@@ -16,16 +16,25 @@
 #include "runtime/ordered_pipeline.h"
 #include "runtime/stop_request.h"
 #include "source/dir_source.h"
+#include "source/image_header.h"
 
 namespace ws::calib {
 namespace {
 
-// Every image of the folder, left ones first: where a board size is looked for.
+// Every image of the folder that may be decoded (image_header.h: a
+// regular file of at most kDefaultMaxImagePixels; the reader left the
+// others out, naming them), left ones first: where a board size is looked
+// for.
 std::vector<std::string> AllImages(const ImageFolder& folder) {
   std::vector<std::string> images;
-  for (const auto& pair : folder.pairs) images.push_back(pair.left);
+  auto add = [&](const std::string& path) {
+    std::string why;
+    const auto size = ImageHeaderSize(path, &why);
+    if (size && int64_t(size->width) * size->height <= kDefaultMaxImagePixels) images.push_back(path);
+  };
+  for (const auto& pair : folder.pairs) add(pair.left);
   for (const auto& pair : folder.pairs)
-    if (!pair.right.empty()) images.push_back(pair.right);
+    if (!pair.right.empty()) add(pair.right);
   return images;
 }
 
@@ -47,7 +56,10 @@ std::string NoBoardAdvice(const ImageFolder& folder, const BoardSpec& board) {
     if (!shown) continue;
     int found = 0;
     const auto all = AllImages(folder);
-    for (const std::string& path : all) found += ShowsChessboard(cv::imread(path, cv::IMREAD_GRAYSCALE), size);
+    for (const std::string& path : all) {
+      const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
+      found += !image.empty() && ShowsChessboard(image, size);
+    }
     return advice + "; " + std::to_string(size.width) + "x" + std::to_string(size.height) +
            " boards are found in " + std::to_string(found) + " of " + std::to_string(all.size()) +
            " images: --board " + WithSize(board, size) +
