@@ -6,7 +6,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -54,20 +56,41 @@ std::string Get(int port, const std::string& path) {
 
 class HttpServerTest : public ::testing::Test {
  protected:
+  // Sets stop_ as EventHub::Close does for the page's streams.
+  void Stop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+    changed_.notify_all();
+  }
+  // Waits up to `seconds` for a stream to end; how many have.
+  int StreamsEnded(int seconds) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait_for(lock, std::chrono::seconds(seconds), [this] { return streams_ended_ > 0; });
+    return streams_ended_;
+  }
+  // Before the server, so that they outlive its stream threads.
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool stop_ = false;
+  int streams_ended_ = 0;
   HttpServer server_{"127.0.0.1", 0,
                      [this](const HttpRequest& req, HttpResponse& res) {
                        if (req.head.path == "/stream") {
                          res.stream = [this](const HttpResponse::Write& write) {
-                           while (!stop_ && write("data: x\n\n")) usleep(10000);
+                           // An event every 10 ms until stopped or the browser goes.
+                           while (write("data: x\n\n")) {
+                             std::unique_lock<std::mutex> lock(mutex_);
+                             if (changed_.wait_for(lock, std::chrono::milliseconds(10), [this] { return stop_; })) break;
+                           }
+                           std::lock_guard<std::mutex> lock(mutex_);
                            streams_ended_ += 1;
+                           changed_.notify_all();
                          };
                          return;
                        }
                        res.Text(200, req.head.path + ":" + req.body + ";");
                      },
                      HttpServer::Limits{}};
-  std::atomic<bool> stop_{false};
-  std::atomic<int> streams_ended_{0};
 };
 
 TEST_F(HttpServerTest, AnswersPipelinedRequestsOnOneConnection) {
@@ -103,8 +126,7 @@ TEST_F(HttpServerTest, AStreamRunsOnItsOwnThreadUntilTheBrowserGoes) {
   EXPECT_NE(Exchange(other, Get(server_.port(), "/a"), "/a:;").find("/a:;"), std::string::npos);
   close(other);
   close(fd);
-  for (int i = 0; i < 1000 && streams_ended_ == 0; ++i) usleep(10000);
-  EXPECT_EQ(streams_ended_, 1);
+  EXPECT_EQ(StreamsEnded(10), 1);
 }
 
 TEST_F(HttpServerTest, IdleSocketsDoNotKeepARequestFromBeingAnswered) {
@@ -122,7 +144,7 @@ TEST_F(HttpServerTest, IdleSocketsDoNotKeepARequestFromBeingAnswered) {
 TEST_F(HttpServerTest, StopsWithAStreamOpen) {
   const int fd = Connect(server_.port());
   EXPECT_NE(Exchange(fd, Get(server_.port(), "/stream"), "data: x\n\n").find("data: x"), std::string::npos);
-  stop_ = true;  // what EventHub::Close does for the page's streams
+  Stop();
   close(fd);
 }
 
