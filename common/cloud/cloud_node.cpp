@@ -124,7 +124,7 @@ void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
     try {
       Save(*newest_, PeriodicPath(*newest_));
     } catch (const std::exception& e) {
-      process_.ReportError(e.what());
+      process_.ReportRecurring(e.what());
     }
   }
 }

@@ -64,7 +64,7 @@ void CornerStage::Deliver(const widestereo::stereo_corners_t& corners, int unref
 
 void CornerStage::Reject(int64_t frame_id, const std::string& why) {
   images_.rejected++;
-  process_.ReportError(std::string(channel::kStereoImages) + ": frame " + std::to_string(frame_id) +
+  process_.ReportRecurring(std::string(channel::kStereoImages) + ": frame " + std::to_string(frame_id) +
                        " rejected: " + why);
 }
 

@@ -9,6 +9,8 @@
 #include "interop/mrcal_cameramodel.h"
 #include "interop/opencv_stereo_file.h"
 #include "rig/rig_file.h"
+#include "runtime/bounded_file.h"
+#include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
@@ -80,17 +82,18 @@ bool IsRotation(const Eigen::Matrix3d& R) {
 AnyRig LoadAnyRig(const std::string& path) {
   const std::filesystem::path p(path);
   if (!std::filesystem::exists(p)) throw CalibrationFileError(path + ": (file): missing");
-  // Sized before a byte is read: a FIFO would block the first read, a
-  // device (/dev/zero) never end it; no calibration of any format is
-  // larger than the largest file any of the readers takes.
-  constexpr uintmax_t kMaxBytes = uintmax_t(64) << 20;
   std::error_code error;
-  if (!std::filesystem::is_directory(p, error) && !std::filesystem::is_regular_file(p, error))
-    throw CalibrationFileError(path + ": (file): not a regular file (a FIFO or a device)");
-  if (std::filesystem::is_regular_file(p, error) && std::filesystem::file_size(p, error) > kMaxBytes)
-    throw CalibrationFileError(path + ": (file): more than " + std::to_string(kMaxBytes) +
-                               " bytes, larger than any calibration");
-  if (std::filesystem::is_directory(p) || p.extension() == ".cameramodel") return FromMrcal(path);
+  if (std::filesystem::is_directory(p, error)) return FromMrcal(path);
+  // Checked before the format is sniffed: no calibration of any format is
+  // larger than the largest file any of the readers takes, and each reader
+  // checks its own file again.
+  static_assert(kMaxCameraModelBytes <= kMaxYamlFileBytes);
+  try {
+    RequireBoundedFile(path, kMaxYamlFileBytes);
+  } catch (const BoundedFileError& e) {
+    throw CalibrationFileError(path + ": (file): " + e.what());
+  }
+  if (p.extension() == ".cameramodel") return FromMrcal(path);
   if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
   // widestereo's own: its header, or (a file edited by hand) its keys; a
   // file of ours cut short is then refused by our reader, saying so.

@@ -10,6 +10,7 @@
 #include "interop/number_text.h"
 #include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
+#include "runtime/bounded_file.h"
 #include "runtime/opencv_yaml.h"
 
 namespace ws {
@@ -82,15 +83,16 @@ std::string List(const double* values, int count) { return "[" + NumberList(valu
 
 AnyRig ReadKalibrCamchain(const std::string& path) {
   const Reader in(path);
-  std::ifstream file(path);
-  if (!file) in.Fail("(file)", "cannot be read");
-  if (std::filesystem::file_size(path) > (1 << 20)) in.Fail("(file)", "larger than 1 MB, not a camchain");
-  std::stringstream text;
-  text << file.rdbuf();
+  std::string text;
+  try {
+    text = ReadBoundedFile(path, size_t(1) << 20);  // a camchain is a few kB
+  } catch (const BoundedFileError& e) {
+    in.Fail("(file)", e.what());
+  }
   YAML::Node root;
   try {
-    CheckOpenCvYamlLayout(text.str());  // no nesting deep enough to exhaust the stack
-    root = YAML::Load(text.str());
+    CheckOpenCvYamlLayout(text);  // no nesting deep enough to exhaust the stack
+    root = YAML::Load(text);
   } catch (const std::exception& e) {
     in.Fail("(file)", std::string("not YAML: ") + e.what());
   }

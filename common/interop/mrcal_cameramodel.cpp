@@ -14,12 +14,12 @@
 #include "interop/python_literal.h"
 #include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
+#include "runtime/bounded_file.h"
 
 namespace ws {
 namespace {
 
 // mrcal's own files, optimization_inputs and all, are about a megabyte.
-constexpr uintmax_t kMaxFileBytes = 64 << 20;
 
 std::vector<double> Numbers(const std::string& path, const PyLiteral& dict, const std::string& key) {
   const auto found = dict.entries.find(key);
@@ -44,15 +44,15 @@ Eigen::Matrix3d RotationOf(const double* r) {
 }  // namespace
 
 MrcalCameraModel ReadMrcalCameraModel(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw CalibrationFileError(path + ": (file): cannot be read");
-  if (std::filesystem::file_size(path) > kMaxFileBytes)
-    throw CalibrationFileError(path + ": (file): larger than 64 MB, not a camera model");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = ReadBoundedFile(path, kMaxCameraModelBytes);
+  } catch (const BoundedFileError& e) {
+    throw CalibrationFileError(path + ": (file): " + e.what());
+  }
   PyLiteral dict;
   try {
-    dict = ParsePyLiteral(text.str());
+    dict = ParsePyLiteral(text);
   } catch (const std::invalid_argument& e) {
     throw CalibrationFileError(path + ": (file): not a mrcal .cameramodel (a Python dict): " +
                                e.what());

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,8 +30,13 @@ struct MrcalCameraModel {
   int width = 0, height = 0;
 };
 
+// The largest .cameramodel read (runtime/bounded_file.h): a splined model of
+// 160 x 120 control points is 1.1 MB.
+constexpr size_t kMaxCameraModelBytes = size_t(64) << 20;
+
 // Throws CalibrationFileError "FILE: FIELD: REASON" for a file that is
-// not one, a missing field, a wrong count or a number that is not finite.
+// not one (not a regular file of at most kMaxCameraModelBytes included), a
+// missing field, a wrong count or a number that is not finite.
 MrcalCameraModel ReadMrcalCameraModel(const std::string& path);
 
 // Writes the file with every number at full precision, `comments` first as

@@ -260,7 +260,7 @@ void MatchNode::Publish(MatchedFrame& matched) {
                               {{"disparity", view::WithLegend(view::ColourDisparity(ImageToMat(disparity->disparity), legend), legend)}});
     }
   } catch (const std::exception& e) {
-    process_.ReportError(e.what());
+    process_.ReportRecurring(e.what());
   }
 }
 

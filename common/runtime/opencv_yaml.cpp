@@ -1,5 +1,7 @@
 #include "runtime/opencv_yaml.h"
 
+#include "runtime/bounded_file.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -67,24 +69,12 @@ void CheckOpenCvYamlLayout(const std::string& text) {
 }
 
 void OpenOpenCvYaml(cv::FileStorage& storage, const std::string& path, size_t max_bytes) {
-  // Sized before a byte is read: a FIFO would block the read, a device
-  // (/dev/zero) never end it.
-  struct stat info;
-  if (stat(path.c_str(), &info) != 0) throw YamlFileError("cannot open the file");
-  if (!S_ISREG(info.st_mode)) throw YamlFileError("not a regular file (a folder, a FIFO or a device)");
-  if (uint64_t(info.st_size) > max_bytes)
-    throw YamlFileError(std::to_string(info.st_size) + " bytes: more than " + std::to_string(max_bytes) +
-                        " bytes, larger than such a file can be");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw YamlFileError("cannot open the file");
   std::string text;
-  char chunk[1 << 16];
-  while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
-    text.append(chunk, size_t(file.gcount()));
-    if (text.size() > max_bytes)
-      throw YamlFileError("more than " + std::to_string(max_bytes) + " bytes, larger than such a file can be");
+  try {
+    text = ReadBoundedFile(path, max_bytes);
+  } catch (const BoundedFileError& e) {
+    throw YamlFileError(e.what());
   }
-  if (file.bad()) throw YamlFileError("cannot read the file");
   CheckOpenCvYamlLayout(text);
   try {
     storage.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);

@@ -50,7 +50,6 @@ std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url, const char* role) {
 }
 
 constexpr int64_t kStatusPeriodUs = 1000000;
-constexpr int64_t kRejectLogPeriodUs = 1000000;
 
 // " (a newer pair came 9, stereo-cloud had a cloud waiting 3)"; "" without reasons.
 std::string SkipReasons(const std::map<std::string, int64_t>& reasons) {
@@ -248,20 +247,17 @@ ChannelCounters& Process::Counters(const std::string& channel) {
   return *slot;
 }
 
+void Process::ReportRecurring(const std::string& error) {
+  log_.Recurring(error);
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_error_ = error;
+}
+
 void Process::HandleRejected(const std::string& channel, const std::string& why) {
-  Counters(channel).rejected++;
-  const int64_t wall = WallMicros();
-  bool log_it;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    last_error_ = channel + ": " + why;
-    int64_t& last = last_reject_log_us_[channel];
-    log_it = wall - last >= kRejectLogPeriodUs;
-    if (log_it) last = wall;
-  }
-  if (log_it)
-    log_.Error("rejected on " + channel + " (" +
-               std::to_string(Counters(channel).rejected.load()) + " so far): " + why);
+  const int64_t so_far = ++Counters(channel).rejected;
+  log_.Recurring("rejected on " + channel + " (" + std::to_string(so_far) + " so far): " + why);
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_error_ = channel + ": " + why;
 }
 
 // Frame ids as unsigned, wrap-safe counters: the frames missed between two
@@ -287,7 +283,7 @@ void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
     last_frame_id_[channel] = frame_id;
   }
   if (reset)
-    ReportError(channel + ": frame id jumped from " + std::to_string(last) + " to " + std::to_string(frame_id) +
+    ReportRecurring(channel + ": frame id jumped from " + std::to_string(last) + " to " + std::to_string(frame_id) +
                 ": counted as the sender's reset, not as lost frames");
 }
 
@@ -312,7 +308,7 @@ void Process::PublishBytes(const std::string& channel, const std::vector<uint8_t
   }
   if (rc < 0) {
     counters.dropped++;
-    ReportError(channel + ": publish failed (" + std::to_string(bytes.size()) + " bytes)");
+    ReportRecurring(channel + ": publish failed (" + std::to_string(bytes.size()) + " bytes)");
   } else {
     counters.published++;
   }

@@ -128,14 +128,17 @@ class Process {
   void SetState(const std::string& state);
   // Logs an error and keeps it as the status's last_error.
   void ReportError(const std::string& error);
+  // The same for an error that can come once a message or a frame: logged
+  // at most once every TextLog::kRepeatPeriodUs a shape, with the count.
+  void ReportRecurring(const std::string& error);
   ChannelCounters& Counters(const std::string& channel);
   // Counts a frame on `channel` as skipped on purpose (whole, before work
   // was spent on it) and why: the progress line and the final log line
   // give each reason's count, "skipped 12 (a newer pair came 9, stereo-cloud
   // had a cloud waiting 3)". Thread-safe.
   void CountSkipped(const std::string& channel, const std::string& reason);
-  // Counts a message on `channel` as rejected and logs why (at most once a
-  // second a channel); for handlers that work on another thread.
+  // Counts a message on `channel` as rejected and logs why (as
+  // ReportRecurring); for handlers that work on another thread.
   void HandleRejected(const std::string& channel, const std::string& why);
   TextLog& log() { return log_; }
   // The per-frame time of each stage, reported in PROCESS_STATUS. Receiving
@@ -192,7 +195,6 @@ class Process {
   std::map<std::string, int64_t> last_frame_id_;
   std::map<std::string, int64_t> undecoded_skips_;  // since the channel's last frame id
   std::map<std::string, std::map<std::string, int64_t>> skip_reasons_;  // channel -> reason -> count
-  std::map<std::string, int64_t> last_reject_log_us_;
   std::vector<Timer> timers_;
   std::vector<std::function<void()>> at_end_;
   std::vector<std::function<void()>> at_exit_;
@@ -270,7 +272,7 @@ void Process::Publish(const std::string& channel, const Msg& msg) {
       bytes = EncodeMessage(msg);
   } catch (const std::invalid_argument& e) {
     Counters(channel).dropped++;
-    ReportError(channel + ": " + e.what());
+    ReportRecurring(channel + ": " + e.what());
     return;
   }
   PublishBytes(channel, bytes);

@@ -26,6 +26,11 @@ std::string WallClockText() {
   return text;
 }
 
+int64_t SteadyMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
 TextLog::TextLog(const std::string& name, const std::string& log_dir, bool quiet)
@@ -36,16 +41,27 @@ TextLog::TextLog(const std::string& name, const std::string& log_dir, bool quiet
   if (!file_) throw std::runtime_error("cannot open log file " + path_);
 }
 
+TextLog::~TextLog() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const std::string& untold : repeats_.Flush()) EmitLocked("error", untold);
+}
+
 void TextLog::Info(const std::string& line) { Write("info", line); }
 void TextLog::Detail(const std::string& line) {
   std::lock_guard<std::mutex> lock(mutex_);
   file_ << WallClockText() << " detail " << Escaped(line) << '\n';
 }
 void TextLog::Error(const std::string& line) { Write("error", line); }
+void TextLog::Recurring(const std::string& line) { Write("error", line, true); }
 
-void TextLog::Write(const char* level, const std::string& text) {
-  const std::string line = Escaped(text);
+void TextLog::Write(const char* level, const std::string& text, bool limited) {
+  std::string line = Escaped(text), repeats;
   std::lock_guard<std::mutex> lock(mutex_);
+  if (limited && !repeats_.Admit(line, SteadyMicros(), &repeats)) return;
+  EmitLocked(level, line + repeats);
+}
+
+void TextLog::EmitLocked(const char* level, const std::string& line) {
   file_ << WallClockText() << ' ' << level << ' ' << line << std::endl;
   if (quiet_ && std::string(level) == "info") return;
   if (progress_shown_) std::fputs("\n", stderr);

@@ -19,6 +19,8 @@
 #include "models/lens_table.h"
 #include "models/model_registry.h"
 #include "models/theia_lens.h"
+#include "runtime/bounded_file.h"
+#include "runtime/opencv_yaml.h"
 #include "sim/ray_map.h"
 
 namespace ws {
@@ -467,12 +469,14 @@ SimConfig ParseSimConfig(const std::string& yaml, const std::string& source, con
 }
 
 SimConfig LoadSimConfig(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SimConfigError(path + ": cannot read the simulator config");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = ReadBoundedFile(path, kMaxYamlFileBytes);
+  } catch (const BoundedFileError& e) {
+    throw SimConfigError(path + ": cannot read the simulator config: " + e.what());
+  }
   const fs::path parent = fs::path(path).parent_path();
-  return ParseSimConfig(text.str(), path, parent.empty() ? "." : parent.string());
+  return ParseSimConfig(text, path, parent.empty() ? "." : parent.string());
 }
 
 CameraModel SimDefaultCamera(double scale) {

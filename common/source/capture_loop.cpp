@@ -48,7 +48,7 @@ void RunCapture(Process& process, StereoSource& source, const CaptureOptions& op
     process.SetState("capturing");
     const int64_t id = frame_id++;
     if (pair->left.empty() || (pair->right.empty() && !source.Mono())) {
-      process.ReportError("frame " + std::to_string(id) + " lost: " + pair->label);
+      process.ReportRecurring("frame " + std::to_string(id) + " lost: " + pair->label);
       process.Tick();
       continue;
     }

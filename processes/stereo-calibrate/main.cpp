@@ -26,6 +26,9 @@ std::string Beside(const std::string& file, const std::string& suffix) {
   return path.replace_extension(suffix).string();
 }
 
+// The corners' log of a run not yet done, beside where it goes.
+constexpr const char* kPending = ".partial";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -45,7 +48,7 @@ int main(int argc, char** argv) {
   ws::calib::CalibrationOptions& calib = node.calibration;
   std::string model = "all", flow = "joint", loss = "none", state, knots = "auto";
   std::string outliers = "auto", warp = "auto", nonradial = "auto";
-  std::string images, board;
+  std::string images, board, corners_log;
   bool mono = false;
   auto& app = cli.app();
   app.add_option("--images", images,
@@ -169,8 +172,10 @@ int main(int argc, char** argv) {
       if (node.out_yaml.empty()) throw std::invalid_argument("--images needs --out CALIB.yaml");
       if (node.report_json.empty()) node.report_json = Beside(node.out_yaml, ".report.json");
       if (node.plot_dir.empty()) node.plot_dir = Beside(node.out_yaml, ".plots");
-      options.in_url = "file://" + std::filesystem::absolute(Beside(node.out_yaml, ".corners.lcmlog")).string() +
-                       "?speed=0";
+      // The corners are solved from a name of their own, put in place when
+      // the run succeeds: until then an older NAME.corners.lcmlog stands.
+      corners_log = std::filesystem::absolute(Beside(node.out_yaml, ".corners.lcmlog")).string();
+      options.in_url = "file://" + corners_log + kPending + "?speed=0";
       node.once = true;
       if (app.get_option("--log-dir")->count() == 0)  // the text log beside the calibration too
         options.log_dir = std::filesystem::path(node.out_yaml).parent_path().string();
@@ -187,7 +192,7 @@ int main(int argc, char** argv) {
     ws::RequireWritableFolderOf("--out", node.out_yaml);
     ws::RequireWritableFolderOf("--report", node.report_json);
     ws::calib::RunOutputs outputs{node.out_yaml, {}, node.report_json, node.plot_dir,
-                                  ws::LcmFileUrlPath(images.empty() ? "" : options.in_url), options.batch_out};
+                                  corners_log, options.batch_out};
     if (!node.out_yaml.empty() && node.models.size() > 1)
       for (ws::ModelKind kind : node.models) outputs.model_yamls.push_back(ws::calib::ModelFilePath(node.out_yaml, kind));
     ws::calib::RequireSafeOutputs(outputs, images);
@@ -199,27 +204,28 @@ int main(int argc, char** argv) {
 
     // A run that fails or is stopped leaves no log of its own behind, and
     // the old ones whole (the calibration and report are put in place only
-    // when all are written: atomic_file.h; the messages' log by the process).
+    // when all are written: atomic_file.h; the messages' log by the process;
+    // the corners' log here).
     options.batch_out_when_done = true;
-    const bool corners_existed = ws::PathExists(outputs.corners_log);
-    auto remove_new_corners = [&] {
-      if (!outputs.corners_log.empty() && !corners_existed) std::filesystem::remove(outputs.corners_log);
+    const std::string corners_pending = corners_log.empty() ? "" : corners_log + kPending;
+    auto remove_pending_corners = [&] {
+      if (!corners_pending.empty()) std::filesystem::remove(corners_pending);
     };
     auto run = [&]() -> int {
       ws::Process process(options);
       if (finder) {
-        const std::string corners = outputs.corners_log;
         ws::calib::FolderCorners found;
         try {
           found = ws::calib::DetectFolder(images, mono, *finder, std::max(1, int(std::thread::hardware_concurrency())),
-                                          corners, process.log());
+                                          corners_pending, process.log());
         } catch (const ws::Stopped&) {
           process.DiscardBatchOutput();
           return process.Finish();  // SIGTERM or Ctrl-C: nothing solved, nothing written
         }
         node.frame_names = found.names;
-        process.log().Info("corners in " + corners + " (to solve them again with other options: --in-url 'file://" +
-                           corners + "?speed=0' --once)");
+        process.log().Info("corners in " + corners_log +
+                           " (to solve them again with other options: --in-url 'file://" + corners_log +
+                           "?speed=0' --once)");
       }
       ws::calib::CalibrateNode calibrate(process, node);
       calibrate.Start();
@@ -229,10 +235,14 @@ int main(int argc, char** argv) {
     try {
       rc = run();
     } catch (...) {
-      remove_new_corners();
+      remove_pending_corners();
       throw;
     }
-    if (rc != 0) remove_new_corners();
+    if (rc != 0) {
+      remove_pending_corners();
+    } else if (!corners_pending.empty()) {
+      std::filesystem::rename(corners_pending, corners_log);  // throws naming both files
+    }
     return rc;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stereo-calibrate: %s\n", e.what());

@@ -78,7 +78,7 @@ TEST(CalibrateOutputs, AnOutThatWouldDestroyIsRefusedBeforeAnyWork) {
 
 // The disk fills while the report is written (a file size limit stands in
 // for it: EFBIG where ENOSPC would be): the run fails naming the file, and
-// the calibration and report of the run before stand, whole.
+// the calibration, report and corners of the run before stand, whole.
 TEST(CalibrateOutputs, AWriteThatFailsLeavesTheOldSetWhole) {
   const std::string images = OpenCvPairs("outputs-full-images");
   const std::string dir = TempDir("outputs-full");
@@ -86,6 +86,8 @@ TEST(CalibrateOutputs, AWriteThatFailsLeavesTheOldSetWhole) {
   const std::string yaml = ReadFileText(dir + "/c.yaml"), report = ReadFileText(dir + "/c.report.json"),
                     messages = ReadFileText(dir + "/c.lcmlog");
   ASSERT_LT(yaml.size() + 4096, report.size()) << "the limit must fall between the two files";
+  // Corners unlike those this run finds: the old ones must stand all the same.
+  fs::copy_file(dir + "/c.lcmlog", dir + "/c.corners.lcmlog", fs::copy_options::overwrite_existing);
 
   rlimit before;
   ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
@@ -104,8 +106,11 @@ TEST(CalibrateOutputs, AWriteThatFailsLeavesTheOldSetWhole) {
   EXPECT_EQ(ReadFileText(dir + "/c.yaml"), yaml) << "the old calibration must stand";
   EXPECT_EQ(ReadFileText(dir + "/c.report.json"), report) << "the old report must stand";
   EXPECT_EQ(ReadFileText(dir + "/c.lcmlog"), messages) << "the old messages' log must stand";
-  for (const auto& entry : fs::directory_iterator(dir))
+  EXPECT_EQ(ReadFileText(dir + "/c.corners.lcmlog"), messages) << "the old corners' log must stand";
+  for (const auto& entry : fs::directory_iterator(dir)) {
     EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << "a temporary left: " << entry.path();
+    EXPECT_NE(entry.path().extension(), ".partial") << "a pending log left: " << entry.path();
+  }
 }
 
 TEST(CalibrateOutputs, AFailedRunLeavesNothingBehind) {

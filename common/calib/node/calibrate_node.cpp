@@ -114,7 +114,7 @@ void CalibrateNode::OnCorners(const widestereo::stereo_corners_t& msg) {
   std::string why;
   switch (session_.Add(msg, &why)) {
     case CalibrationSession::Outcome::kAccepted:
-      if (!why.empty()) process_.ReportError(why);
+      if (!why.empty()) process_.ReportRecurring(why);
       process_.log().Detail("view " + std::to_string(session_.views()) + " from frame " +
                             std::to_string(msg.frame_id));
       break;
