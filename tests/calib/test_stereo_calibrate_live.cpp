@@ -2,11 +2,14 @@
 // with coverage and a hint, near-duplicate views skipped, the accepted views
 // kept in the state file so that a SIGKILLed process resumes with them, and
 // a 'solve' command answered with STEREO_CALIBRATION; a damaged state file
-// kept as an archive and every intact view after the damage recovered.
+// kept as an archive and every intact view after the damage recovered; a
+// views file that cannot be written said on the terminal under --quiet.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -227,6 +230,63 @@ TEST(StereoCalibrateLive, ADamagedViewsFileIsKeptAndEveryIntactViewRecovered) {
   EXPECT_EQ(views[4].frame_id, 4);
   EXPECT_EQ(views[5].frame_id, 6);  // the damaged 6th event is the one lost
   EXPECT_EQ(views[29].frame_id, 30);
+}
+
+// The disk fills under the views file (a file size limit stands in for it:
+// EFBIG where ENOSPC would be). Under --quiet the terminal says so once,
+// with the count of the views not saved after it when the process stops;
+// a restart recovers every view on disk.
+TEST(StereoCalibrateLive, AViewsFileThatCannotBeWrittenIsSaidUnderQuietAndARestartRecovers) {
+  const std::string dir = ws::test::TempDir("calibrate-views-full");
+  const std::string url = ws::test::UniqueUdpmUrl(7);
+  const std::string state = dir + "/views.lcmlog";
+  SyntheticRigOptions options = BarrelRig();
+  options.views = 16;
+  const SyntheticRig rig = MakeSyntheticRig(options);
+  std::vector<ws::test::LogEvent> events;
+  for (int v = 0; v < 10; ++v) events.push_back(ws::test::Event(ws::channel::kStereoCorners, CornersMessage(rig, v)));
+  ws::test::WriteLog(state, events);
+  const std::vector<std::string> argv = {"stereo-calibrate", "--in-url", url, "--out-url", url, "--log-dir", dir,
+                                         "--state", state, "--model", "poly6", "--quiet"};
+  Bus bus(url);
+  ASSERT_TRUE(bus.lcm.good());
+  {
+    rlimit before;
+    ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &before), 0);
+    const auto handler = std::signal(SIGXFSZ, SIG_IGN);  // inherited: the write fails instead
+    rlimit full = before;
+    full.rlim_cur = std::filesystem::file_size(state) + 100;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &full), 0);
+    Running calibrate(argv, &bus);
+    const bool started = bus.Until(10, [&] { return bus.pid != 0 && !bus.statuses.empty(); });
+    setrlimit(RLIMIT_FSIZE, &before);  // the child keeps its own
+    std::signal(SIGXFSZ, handler);
+    ASSERT_TRUE(started) << "no status from stereo-calibrate";
+    for (int v = 10; v < 16; ++v) {
+      const widestereo::stereo_corners_t msg = CornersMessage(rig, v);
+      bus.lcm.publish(ws::channel::kStereoCorners, &msg);
+    }
+    ASSERT_TRUE(bus.Until(10, [&] { return bus.statuses.back().views_left == 16; }))
+        << "views_left " << bus.statuses.back().views_left;
+    calibrate.Stop(SIGINT);
+    EXPECT_EQ(calibrate.result.exit_code, 0) << calibrate.result.output;
+    const std::string& terminal = calibrate.result.output;
+    const std::string said = "could not save the view to " + state;
+    const std::string line = "stereo-calibrate: " + said + "\n";
+    ASSERT_NE(terminal.find(line), std::string::npos) << terminal;
+    EXPECT_EQ(terminal.find(line, terminal.find(line) + 1), std::string::npos) << "said once:\n" << terminal;
+    EXPECT_NE(terminal.find("5 lines like '" + said + "' not shown"), std::string::npos) << terminal;
+  }
+  bus.statuses.clear();
+  bus.pid = 0;
+  Running restarted(argv, &bus);
+  ASSERT_TRUE(bus.Until(10, [&] { return bus.pid != 0 && !bus.statuses.empty(); }))
+      << "no status from the restarted stereo-calibrate";
+  EXPECT_EQ(bus.statuses.front().views_left, 10);
+  restarted.Stop(SIGINT);
+  EXPECT_EQ(restarted.result.exit_code, 0) << restarted.result.output;
+  EXPECT_NE(restarted.result.output.find("intact events recovered: 10 (10 views restored)"), std::string::npos)
+      << restarted.result.output;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
@@ -385,6 +386,21 @@ TEST(HostilePeer, CornerFloodsAreRefusedAndTheSessionCapped) {
   for (const LogEvent& e : ReadLog(state)) kept += e.channel == ch::kStereoCorners;
   EXPECT_EQ(kept, 5);
   EXPECT_LT(fs::file_size(state), 100000u) << "a flooded view (4.4 MB) was kept";
+
+  // The log does not flood: the refusals of one shape are written once
+  // (sent within a second: within the 10 s of the limit), the others counted.
+  std::istringstream log(ReadFileText(dir + "/stereo-calibrate.log"));
+  int written = 0, counted = 0;
+  for (std::string line; std::getline(log, line);) {
+    if (line.find("maximum of 5 views") == std::string::npos) continue;
+    if (const size_t like = line.find(" lines like '"); like != std::string::npos) {
+      counted += std::stoi(line.substr(line.rfind(' ', like - 1) + 1));
+    } else {
+      ++written;
+    }
+  }
+  EXPECT_EQ(written, 1);
+  EXPECT_EQ(written + counted, beyond) << "every refusal is written or counted";
 }
 
 // The views of a peer without the key, sent before the real ones: every
