@@ -83,10 +83,13 @@ struct PyCamera {
     d["knots"] = m.distortion.knots;
     d["coeffs"] = m.distortion.coeffs;
     if (!m.nonradial.empty()) {
-      py::dict field;
-      field["cols"] = m.nonradial.cols, field["rows"] = m.nonradial.rows;
-      field["domain"] = m.nonradial.domain;
-      field["coeffs"] = m.nonradial.coeffs;
+      py::dict field;  // the calibration file's nonradial map, tilt included
+      if (m.nonradial.cols > 0) {
+        field["cols"] = m.nonradial.cols, field["rows"] = m.nonradial.rows;
+        field["domain"] = m.nonradial.domain;
+        field["coeffs"] = m.nonradial.coeffs;
+      }
+      if (m.nonradial.tilted()) field["tilt"] = m.nonradial.tilt;
       d["nonradial"] = field;
     }
     return d;

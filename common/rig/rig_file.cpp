@@ -42,6 +42,17 @@ const std::string kHeader[] = {
     "      M = [cx 0 0; -sx sy cy 0; sy -cy sx cy cx], cx = cos tau_x, sx = sin tau_x, cy, sy of tau_y.",
     "Stereo: X_right = R X_left + T (metres)."};
 
+// A coefficient vector as a 1 x N !!opencv-matrix: `fs["left"]["k"] >> D`
+// gives OpenCV its cv::Mat D (an empty one stays an empty list).
+void WriteVector(cv::FileStorage& fs, const std::string& key, const std::vector<double>& values) {
+  fs << key;
+  if (values.empty()) {
+    fs << values;
+  } else {
+    fs << cv::Mat(1, int(values.size()), CV_64F, const_cast<double*>(values.data()));
+  }
+}
+
 void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel& m, double rms,
                  int views) {
   fs << name << "{";
@@ -49,15 +60,16 @@ void WriteCamera(cv::FileStorage& fs, const std::string& name, const CameraModel
   fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
   const ModelTraits& traits = Traits(m.distortion.kind);
   fs << "model" << traits.name << "degree" << m.distortion.degree;
-  if (traits.spline) fs << "knots" << m.distortion.knots;
-  fs << traits.coeff_key << m.distortion.coeffs;
+  if (traits.spline) WriteVector(fs, "knots", m.distortion.knots);
+  WriteVector(fs, traits.coeff_key, m.distortion.coeffs);
   fs << "p1" << m.p1 << "p2" << m.p2 << "rms" << rms << "views" << views;
   if (!m.nonradial.empty()) {
     const NonRadial& f = m.nonradial;
     fs << "nonradial" << "{";
-    if (f.cols > 0)
-      fs << "cols" << f.cols << "rows" << f.rows << "domain"
-         << std::vector<double>(f.domain.begin(), f.domain.end()) << "coeffs" << f.coeffs;
+    if (f.cols > 0) {
+      fs << "cols" << f.cols << "rows" << f.rows << "domain" << std::vector<double>(f.domain.begin(), f.domain.end());
+      WriteVector(fs, "coeffs", f.coeffs);
+    }
     if (f.tilted()) fs << "tilt" << std::vector<double>(f.tilt.begin(), f.tilt.end());
     fs << "}";
   }
@@ -100,12 +112,26 @@ class Reader {
     if (!node.isString()) Fail(field, "not a string");
     return static_cast<std::string>(node);
   }
-  // A list of at most `max_count` numbers, read in one pass (FileNode's
+  // At most `max_count` numbers: a 1 x N or N x 1 !!opencv-matrix of
+  // doubles or floats (as written since the coefficient vectors load into
+  // a cv::Mat), or a list (as written before). Its size is checked before
+  // any is read, and the numbers are read in one pass (FileNode's
   // operator[] walks the list from its start: a long list read by index
   // took quadratic time).
   std::vector<double> Reals(const cv::FileNode& parent, const std::string& key, const std::string& field,
                             size_t max_count) const {
-    const cv::FileNode node = Required(parent, key, field);
+    cv::FileNode node = Required(parent, key, field);
+    if (node.isMap()) {
+      const std::string vector = "not a 1 x N !!opencv-matrix of numbers";
+      const cv::FileNode rows = node["rows"], cols = node["cols"], dt = node["dt"];
+      if (!rows.isInt() || !cols.isInt() || !dt.isString() || (int(rows) != 1 && int(cols) != 1) ||
+          int(rows) < 0 || int(cols) < 0 || (std::string(dt) != "d" && std::string(dt) != "f"))
+        Fail(field, vector);
+      const size_t count = size_t(int(rows)) * size_t(int(cols));
+      if (count > max_count) Fail(field, "more than " + std::to_string(max_count) + " numbers");
+      node = node["data"];
+      if (!node.isSeq() || node.size() != count) Fail(field, vector);
+    }
     if (!node.isSeq()) Fail(field, "not a list of numbers");
     if (node.size() > max_count) Fail(field, "more than " + std::to_string(max_count) + " numbers");
     std::vector<double> values;

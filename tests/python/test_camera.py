@@ -88,3 +88,16 @@ def test_mrcal_models_project_and_unproject_as_mrcal_does(tmp_path, lensmodel):
     rays = camera.unproject(theirs)
     expected = mrcal.unproject(theirs, *model.intrinsics(), normalize=True)
     assert np.abs(rays - expected).max() < 1e-9
+
+
+def test_parameters_carry_the_tilt(tmp_path, sim_calibration):
+    text = open(sim_calibration).read()
+    tilted = text.replace("   views: 27\nright:", "   views: 27\n   nonradial:\n      tilt: [ 1.0e-02, -2.0e-02 ]\nright:", 1)
+    assert tilted != text
+    path = tmp_path / "tilted.yaml"
+    path.write_text(tilted)
+    camera = widestereo.Camera.load(str(path), "left")
+    assert camera.parameters["nonradial"] == {"tilt": [0.01, -0.02]}
+    assert "nonradial" not in widestereo.Camera.load(sim_calibration, "left").parameters
+    ray = np.array([0.3, -0.2, 1.0])
+    assert np.abs(camera.project(ray) - widestereo.Camera.load(sim_calibration, "left").project(ray)).max() > 0.1

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include <fstream>
+#include <regex>
 #include <set>
 #include <cmath>
 #include <opencv2/calib3d.hpp>
@@ -69,6 +70,15 @@ Rig SampleRig(ModelKind model) {
 
 void Spit(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
+// What OpenCV reads from a coefficient vector: a cv::Mat, as a list.
+std::vector<double> VectorOf(const cv::FileNode& node) {
+  cv::Mat mat;
+  node >> mat;
+  EXPECT_EQ(mat.rows, 1);
+  EXPECT_EQ(mat.type(), CV_64F);
+  return std::vector<double>(mat.begin<double>(), mat.end<double>());
+}
+
 void ExpectSameCamera(const CameraModel& a, const CameraModel& b) {
   EXPECT_EQ(a.image_width, b.image_width);
   EXPECT_EQ(a.image_height, b.image_height);
@@ -117,6 +127,25 @@ TEST(RigFile, ANonRadialFieldReadsBackBitForBit) {
   const Camera a(read.left), b(written.left);
   const Eigen::Vector3d ray(0.3, -0.2, 1.0);
   EXPECT_EQ(*a.Project(ray), *b.Project(ray));
+}
+
+// Files written before the coefficient vectors were matrices hold them as
+// lists: they load to the same cameras, bit for bit.
+TEST(RigFile, FilesWithListsLoadAsBefore) {
+  const std::string dir = test::TempDir("calib-file-lists");
+  Rig written = SampleRig(ModelKind::kBspline);
+  written.left.nonradial = {5, 4, {-2.1, 2.2, -1.6, 1.5}, std::vector<double>(40, 1e-3)};
+  WriteCalibrationFile(dir + "/matrices.yaml", written);
+  const std::string text = test::ReadFileText(dir + "/matrices.yaml");
+  // "KEY: !!opencv-matrix / rows: 1 / cols: N / dt: d / data: [" -> "KEY: ["
+  const std::string lists =
+      std::regex_replace(text, std::regex(R"(!!opencv-matrix\n +rows: 1\n +cols: \d+\n +dt: d\n +data: \[)"), "[");
+  ASSERT_EQ(lists.find("rows: 1\n"), std::string::npos) << lists;
+  ASSERT_NE(lists.find("   alpha: [ 0.,"), std::string::npos) << lists;
+  Spit(dir + "/lists.yaml", lists);
+  const Rig read = ReadCalibrationFile(dir + "/lists.yaml");
+  ExpectSameCamera(read.left, written.left);
+  ExpectSameCamera(read.right, written.right);
 }
 
 // A sensor tilt (models/sensor_tilt.h) alone, and with a field, reads back.
@@ -172,8 +201,7 @@ TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
         EXPECT_EQ(!in_file[key].empty(), in_report.contains(key)) << at << ": " << key;
       const std::string key = Traits(model).coeff_key;
       ASSERT_TRUE(in_report.contains(key)) << at;
-      std::vector<double> coeffs;
-      in_file[key] >> coeffs;
+      const std::vector<double> coeffs = VectorOf(in_file[key]);
       EXPECT_EQ(in_report[key].get<std::vector<double>>(), coeffs) << at;
       EXPECT_EQ(coeffs, camera.distortion.coeffs) << at;
       EXPECT_EQ(in_report["knots"].get<std::vector<double>>(), camera.distortion.knots) << at;
@@ -197,9 +225,7 @@ TEST(RigFile, OpenCvReadsTheMatricesDirectly) {
   EXPECT_EQ(K.at<double>(1, 2), f.left.cy);
   EXPECT_EQ(R.at<double>(0, 2), f.R(0, 2));
   EXPECT_EQ(T.at<double>(0), f.T.x());
-  std::vector<double> alpha;
-  fs["right"]["alpha"] >> alpha;
-  EXPECT_EQ(alpha, f.right.distortion.coeffs);
+  EXPECT_EQ(VectorOf(fs["right"]["alpha"]), f.right.distortion.coeffs);
   EXPECT_EQ(static_cast<std::string>(fs["right"]["model"]), "bspline");
   EXPECT_EQ(static_cast<double>(fs["stereo"]["baseline_m"]), f.T.norm());
 }
@@ -212,11 +238,10 @@ TEST(RigFile, Kb4LoadsIntoOpenCvFisheye) {
   WriteCalibrationFile(path, f);
   cv::FileStorage fs(path, cv::FileStorage::READ);
   ASSERT_TRUE(fs.isOpened());
-  cv::Mat K;
-  std::vector<double> D;
+  cv::Mat K, D;
   fs["left"]["camera_matrix"] >> K;
-  fs["left"]["k"] >> D;
-  ASSERT_EQ(D.size(), 4u);
+  fs["left"]["k"] >> D;  // docs/models.md
+  ASSERT_EQ(D.total(), 4u);
   std::vector<cv::Point3d> points;
   for (double deg = 0; deg < 89; deg += 4)
     for (double phi = 0; phi < 6.28; phi += 0.7)
@@ -246,10 +271,17 @@ TEST(RigFile, EachDamagedFieldIsNamed) {
       {"rows: 3\n      cols: 3", "rows: 2000000000\n      cols: 3", "left.camera_matrix", "3x3"},
       {"   model: bspline\n", "   model: fisheye\n", "left.model", "unknown model"},
       {"   degree: 3\n", "   degree: 0\n", "left.degree", "below 1"},
-      {"   knots: [ 0., 0., 0., 0.,", "   knots: [ 0., 0., 0., 1.,", "left.knots",
-       "must not decrease"},
-      {"   alpha: [ 0.,", "   alpha: [ .Nan,", "left.alpha[0]", "not finite"},
-      {"   alpha: [ 0.,", "   alpha: [", "left.alpha", "coefficients"},
+      {"cols: 39\n      dt: d\n      data: [ 0., 0., 0., 0.,", "cols: 39\n      dt: d\n      data: [ 0., 0., 0., 1.,",
+       "left.knots", "must not decrease"},
+      {"cols: 35\n      dt: d\n      data: [ 0.,", "cols: 35\n      dt: d\n      data: [ .Nan,", "left.alpha[0]",
+       "not finite"},
+      {"cols: 35\n      dt: d\n      data: [ 0.,", "cols: 34\n      dt: d\n      data: [", "left.alpha",
+       "coefficients"},
+      {"cols: 35\n      dt: d\n", "cols: 36\n      dt: d\n", "left.alpha", "not a 1 x N !!opencv-matrix"},
+      {"cols: 35\n      dt: d\n", "cols: 35\n      dt: u\n", "left.alpha", "not a 1 x N !!opencv-matrix"},
+      {"rows: 1\n      cols: 35\n", "rows: 2\n      cols: 35\n", "left.alpha", "not a 1 x N !!opencv-matrix"},
+      // Refused from the size it claims, before its numbers are read.
+      {"cols: 35\n      dt: d\n", "cols: 2000000000\n      dt: d\n", "left.alpha", "more than 512 numbers"},
       {"   p1: ", "   p1: abc\n   p1_was: ", "left.p1", "not a number"},
       {"   rms: 1.234", "   rms: -1.234", "left.rms", "negative"},
       {"right:", "rigth:", "right", "missing"},
@@ -259,9 +291,10 @@ TEST(RigFile, EachDamagedFieldIsNamed) {
   };
   // A knot list far longer than any lens needs is refused before it is read
   // (it was read in quadratic time: 10^7 knots hung the loader).
-  std::string many_knots = "   knots: [ 0., 0., 0., 0.,";
+  const std::string knots = "   knots: !!opencv-matrix\n      rows: 1\n      cols: 39\n      dt: d\n      data: [";
+  std::string many_knots = "   knots: [";
   for (int i = 0; i < 100000; ++i) many_knots += " 0.5,";
-  damages.push_back({"   knots: [ 0., 0., 0., 0.,", many_knots, "left.knots", "more than 512 numbers"});
+  damages.push_back({knots, many_knots, "left.knots", "more than 512 numbers"});
   for (const Damage& d : damages) {
     const size_t at = text.find(d.from);
     ASSERT_NE(at, std::string::npos) << d.from;
