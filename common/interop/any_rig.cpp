@@ -8,6 +8,7 @@
 #include "interop/kalibr_camchain.h"
 #include "interop/mrcal_cameramodel.h"
 #include "interop/opencv_stereo_file.h"
+#include "interop/ros_camera_info.h"
 #include "rig/rig_file.h"
 #include "runtime/bounded_file.h"
 #include "runtime/opencv_yaml.h"
@@ -48,7 +49,8 @@ AnyRig FromMrcal(const std::string& path) {
   const std::string left_path = path + "/camera-0.cameramodel", right_path = path + "/camera-1.cameramodel";
   if (!std::filesystem::exists(left_path))
     throw CalibrationFileError(path + ": camera-0.cameramodel: missing (a folder is read as "
-                                      "mrcal-calibrate-cameras' output)");
+                                      "mrcal-calibrate-cameras' output, or stereo-export's for ROS: left.yaml "
+                                      "and right.yaml)");
   const MrcalCameraModel left = ReadMrcalCameraModel(left_path);
   rig.left = MrcalCamera(left);
   rig.mono = !std::filesystem::exists(right_path);
@@ -57,6 +59,52 @@ AnyRig FromMrcal(const std::string& path) {
   rig.right = MrcalCamera(right);
   MrcalRelativePose(left, right, &rig.R, &rig.T);
   return rig;
+}
+
+// One camera_info file: a one-camera rig.
+AnyRig FromRos(const std::string& path) {
+  AnyRig rig;
+  rig.format = "ros";
+  rig.mono = true;
+  rig.left = std::make_shared<WidestereoProjection>(RosCameraModel(ReadRosCameraInfo(path), path));
+  return rig;
+}
+
+// A folder of left.yaml and right.yaml (what stereo-export --format ros
+// writes): each camera rotated by its rectification_matrix R1, R2 into a
+// common rectified frame, in which the right one sits at t = (P[0][3] / P[0][0],
+// P[1][3] / P[1][1], P[2][3]) (ROS: Tx = -fx' B). So X_right = R2^T (R1 X_left + t).
+AnyRig FromRosPair(const std::string& folder) {
+  const std::string left_path = folder + "/left.yaml", right_path = folder + "/right.yaml";
+  const RosCameraInfo left = ReadRosCameraInfo(left_path), right = ReadRosCameraInfo(right_path);
+  AnyRig rig;
+  rig.format = "ros";
+  rig.left = std::make_shared<WidestereoProjection>(RosCameraModel(left, left_path));
+  rig.right = std::make_shared<WidestereoProjection>(RosCameraModel(right, right_path));
+  Eigen::Matrix3d R1, R2;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) R1(r, c) = left.R(r, c), R2(r, c) = right.R(r, c);
+  for (const auto& [R, path] : {std::pair{&R1, &left_path}, std::pair{&R2, &right_path}})
+    if (!IsRotation(*R)) throw CalibrationFileError(*path + ": rectification_matrix: not a rotation");
+  const cv::Matx34d& P = right.P;
+  if (!(P(0, 0) > 0) || !(P(1, 1) > 0))
+    throw CalibrationFileError(right_path + ": projection_matrix: focal lengths not positive");
+  const Eigen::Vector3d t(P(0, 3) / P(0, 0), P(1, 3) / P(1, 1), P(2, 3));
+  rig.R = R2.transpose() * R1;
+  rig.T = R2.transpose() * t;
+  if (rig.T.norm() == 0)
+    throw CalibrationFileError(right_path + ": projection_matrix: no baseline (Tx = 0): not the right camera "
+                                            "of a pair");
+  return rig;
+}
+
+// A folder: mrcal-calibrate-cameras' (camera-0.cameramodel) or
+// stereo-export's for ROS (left.yaml and right.yaml).
+AnyRig FromFolder(const std::string& folder) {
+  if (!std::filesystem::exists(folder + "/camera-0.cameramodel") && std::filesystem::exists(folder + "/left.yaml") &&
+      std::filesystem::exists(folder + "/right.yaml"))
+    return FromRosPair(folder);
+  return FromMrcal(folder);
 }
 
 }  // namespace
@@ -83,7 +131,7 @@ AnyRig LoadAnyRig(const std::string& path) {
   const std::filesystem::path p(path);
   if (!std::filesystem::exists(p)) throw CalibrationFileError(path + ": (file): missing");
   std::error_code error;
-  if (std::filesystem::is_directory(p, error)) return FromMrcal(path);
+  if (std::filesystem::is_directory(p, error)) return FromFolder(path);
   // Checked before the format is sniffed: no calibration of any format is
   // larger than the largest file any of the readers takes, and each reader
   // checks its own file again.
@@ -95,6 +143,8 @@ AnyRig LoadAnyRig(const std::string& path) {
   }
   if (p.extension() == ".cameramodel") return FromMrcal(path);
   if (HasLineStartingWith(path, "cam0:")) return ReadKalibrCamchain(path);
+  if (HasLineStartingWith(path, "distortion_model:") && HasLineStartingWith(path, "projection_matrix:"))
+    return FromRos(path);
   // widestereo's own: its header, or (a file edited by hand) its keys; a
   // file of ours cut short is then refused by our reader, saying so.
   if (HasLineStartingWith(path, std::string("# ") + kCalibrationFileTitle) ||

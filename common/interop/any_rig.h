@@ -12,10 +12,15 @@
 //               T or M1 D1 M2 D2 R T of a pair, camera_matrix
 //               distortion_coefficients of one camera; image_width and
 //               image_height; distortion_model pinhole or fisheye) opencv_stereo_file.h
+//   ros         a camera_info YAML (one camera: plumb_bob or equidistant),
+//               or a folder of left.yaml and right.yaml (a pair, as
+//               stereo-export --format ros writes them)   ros_camera_info.h
 //
-// The format is told by the path: a folder or *.cameramodel is mrcal's; a
-// YAML file is Kalibr's when it has cam0, widestereo's when it has left and
-// model, OpenCV's otherwise.
+// The format is told by the path: a folder is ROS's when it holds left.yaml
+// and right.yaml and no camera-0.cameramodel, mrcal's otherwise;
+// *.cameramodel is mrcal's; a YAML file is Kalibr's when it has cam0, ROS's
+// when it has distortion_model and projection_matrix, widestereo's when it
+// has left and model, OpenCV's otherwise.
 #pragma once
 
 #include <memory>
@@ -29,7 +34,7 @@
 namespace ws {
 
 struct AnyRig {
-  std::string format;  // "widestereo", "mrcal", "kalibr", "opencv"
+  std::string format;  // "widestereo", "mrcal", "kalibr", "opencv", "ros"
   bool mono = false;   // one camera: left only
   std::shared_ptr<const CameraProjection> left, right;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // X_right = R X_left + T

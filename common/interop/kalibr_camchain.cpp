@@ -8,42 +8,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include "interop/number_text.h"
+#include "interop/yaml_fields.h"
 #include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
-#include "runtime/bounded_file.h"
-#include "runtime/opencv_yaml.h"
 
 namespace ws {
 namespace {
 
-class Reader {
- public:
-  explicit Reader(std::string path) : path_(std::move(path)) {}
-  [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
-    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
-  }
-  std::vector<double> Numbers(const YAML::Node& node, const std::string& field, size_t count) const {
-    if (!node || !node.IsSequence() || node.size() != count)
-      Fail(field, "missing or not a list of " + std::to_string(count) + " numbers");
-    std::vector<double> out;
-    for (const YAML::Node& item : node) {
-      double value = NAN;
-      if (!item.IsScalar() || !YAML::convert<double>::decode(item, value) || !std::isfinite(value))
-        Fail(field, "not a list of finite numbers");
-      out.push_back(value);
-    }
-    return out;
-  }
-  std::string Text(const YAML::Node& node, const std::string& field) const {
-    if (!node || !node.IsScalar()) Fail(field, "missing or not a string");
-    return node.as<std::string>();
-  }
-
- private:
-  std::string path_;
-};
-
-CameraModel ReadCamera(const Reader& in, const YAML::Node& cam, const std::string& name) {
+CameraModel ReadCamera(const YamlFields& in, const YAML::Node& cam, const std::string& name) {
   if (!cam.IsMap()) in.Fail(name, "not a map of camera fields");
   const std::string model = in.Text(cam["camera_model"], name + ".camera_model");
   if (model != "pinhole")
@@ -82,20 +54,8 @@ std::string List(const double* values, int count) { return "[" + NumberList(valu
 }  // namespace
 
 AnyRig ReadKalibrCamchain(const std::string& path) {
-  const Reader in(path);
-  std::string text;
-  try {
-    text = ReadBoundedFile(path, size_t(1) << 20);  // a camchain is a few kB
-  } catch (const BoundedFileError& e) {
-    in.Fail("(file)", e.what());
-  }
-  YAML::Node root;
-  try {
-    CheckOpenCvYamlLayout(text);  // no nesting deep enough to exhaust the stack
-    root = YAML::Load(text);
-  } catch (const std::exception& e) {
-    in.Fail("(file)", std::string("not YAML: ") + e.what());
-  }
+  const YamlFields in(path);
+  const YAML::Node root = in.Load(size_t(1) << 20);  // a camchain is a few kB
   if (!root.IsMap() || !root["cam0"]) in.Fail("cam0", "missing (not a Kalibr camchain)");
   AnyRig rig;
   rig.format = "kalibr";

@@ -16,6 +16,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "models/camera_model.h"
+
 namespace ws {
 
 struct RosCameraInfo {
@@ -32,5 +34,15 @@ struct RosCameraInfo {
 // line. Throws std::runtime_error when it cannot write.
 void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
                         const std::vector<std::string>& comments);
+
+// Reads a camera_info file (what WriteRosCameraInfo and ROS's
+// camera_calibration write), every field checked. Throws
+// CalibrationFileError "FILE: FIELD: REASON".
+RosCameraInfo ReadRosCameraInfo(const std::string& path);
+
+// The camera `info` describes as widestereo's model: plumb_bob (k1 k2 p1 p2
+// k3, or no coefficients) as poly6, equidistant (k1 k2 k3 k4) as kb4.
+// Throws CalibrationFileError naming `path` for another distortion model.
+CameraModel RosCameraModel(const RosCameraInfo& info, const std::string& path);
 
 }  // namespace ws

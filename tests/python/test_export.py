@@ -112,6 +112,41 @@ def test_opencv_maps_rectify_as_stereo_match_saves(tmp_path, sim_calibration):
 
 
 @pytest.mark.parametrize("kind", KINDS)
+def test_ros_export_loads_back(kinds, kind, tmp_path):
+    """Camera.load and Rig.load read what stereo-export --to ros writes: the
+    raw cameras where ROS has their model (projecting as the calibration
+    does, R and T the same), the rectified pair where it has not."""
+    calibration = str(kinds / ("rig-%s.yaml" % kind))
+    _, error = export(calibration, "ros", tmp_path)
+    rig = widestereo.Rig.load(calibration)
+    back = widestereo.Rig.load(str(tmp_path))
+    for side in ("left", "right"):
+        camera = widestereo.Camera.load(str(tmp_path / (side + ".yaml")))
+        assert camera.parameters == getattr(back, side).parameters
+        if error == 0:
+            pixels, rays = image_pixels(getattr(rig, side), in_front=True)
+            assert np.abs(camera.project(rays) - pixels).max() < 1e-6
+    if error == 0:
+        np.testing.assert_allclose(back.R, rig.R, atol=1e-12)
+        np.testing.assert_allclose(back.T, rig.T, atol=1e-12)
+    else:  # the rectified pair: side by side, the rig's baseline apart
+        np.testing.assert_allclose(back.R, np.eye(3), atol=1e-12)
+        assert abs(np.linalg.norm(back.T) - np.linalg.norm(rig.T)) < 1e-9 and back.T[0] < 0
+
+
+def test_a_damaged_ros_file_is_refused_naming_the_field(kinds, tmp_path):
+    export(str(kinds / "rig-kb4.yaml"), "ros", tmp_path)
+    text = open(tmp_path / "left.yaml").read()
+    for old, new, field in [("cols: 4\n", "cols: 99\n", "distortion_coefficients.cols"),
+                            ("equidistant", "rational_polynomial", "distortion_model"),
+                            ("image_width: ", "image_width: -", "image_width")]:
+        damaged = tmp_path / "damaged.yaml"
+        damaged.write_text(text.replace(old, new, 1))
+        with pytest.raises(RuntimeError, match=re.escape(str(damaged) + ": " + field + ": ")):
+            widestereo.Camera.load(str(damaged))
+
+
+@pytest.mark.parametrize("kind", KINDS)
 def test_ros_camera_info_by_its_documented_fields(kinds, kind, tmp_path):
     calibration = str(kinds / ("rig-%s.yaml" % kind))
     text, error = export(calibration, "ros", tmp_path)
