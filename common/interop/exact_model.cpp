@@ -1,5 +1,6 @@
 #include "interop/exact_model.h"
 
+#include <array>
 #include <stdexcept>
 
 namespace ws {
@@ -37,8 +38,16 @@ ExportFormat ParseExportFormat(const std::string& name) {
 }
 
 std::optional<TargetModel> ExactTargetModel(const CameraModel& camera, ExportFormat format) {
-  if (!camera.nonradial.empty()) return std::nullopt;  // no other format has a non-radial field
+  if (camera.nonradial.cols > 0) return std::nullopt;  // no other format has a non-radial field
   const double p1 = camera.p1, p2 = camera.p2;
+  if (camera.nonradial.tilted()) {
+    // OpenCV's 14 coefficients k1 k2 p1 p2 k3 k4 k5 k6 s1 s2 s3 s4 tauX tauY
+    // (CALIB_TILTED_MODEL), the same tilt after the same distortion.
+    const auto k = Brown(camera);
+    if (!k || format != ExportFormat::kOpenCv) return std::nullopt;
+    const std::array<double, 2>& tau = camera.nonradial.tilt;
+    return TargetModel{"pinhole", {(*k)[0], (*k)[1], p1, p2, (*k)[2], 0, 0, 0, 0, 0, 0, 0, tau[0], tau[1]}};
+  }
   if (const auto k = Brown(camera)) {
     const std::vector<double> opencv{(*k)[0], (*k)[1], p1, p2, (*k)[2]};
     switch (format) {

@@ -5,9 +5,11 @@
 //   poly6        pinhole (5 coeffs)   plumb_bob         radtan if k3 = 0      LENSMODEL_OPENCV5
 //   kb4          fisheye              equidistant       equidistant           -
 //   poly12       as poly6 when k4 = k5 = k6 = 0, else -
+//   poly6 + tilt pinhole (14 coeffs)  -              -                     -
 //   bspline, bspline_theta: -
 //
-// and never with a non-radial field (models/nonradial_field.h).
+// and never with a non-radial field (models/nonradial_field.h) beyond the
+// tilt.
 // (OpenCV's, ROS's and mrcal's 8-coefficient model is rational, not poly12;
 // mrcal 2.2 has no Kannala-Brandt model.) Everything else is exported
 // another way, and says so: the rectification maps (OpenCV, ROS) or a

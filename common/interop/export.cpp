@@ -46,6 +46,14 @@ std::string Header(const Rig& file, ExportFormat format) {
          ExportFormatName(format);
 }
 
+// The camera's model as the messages name it: "poly6", "poly6 with a
+// sensor tilt", "kb4 with a non-radial field".
+std::string Described(const CameraModel& m) {
+  return ModelName(m.distortion.kind) + (m.nonradial.cols > 0   ? " with a non-radial field"
+                                         : m.nonradial.tilted() ? " with a sensor tilt"
+                                                                : "");
+}
+
 void RequireStereo(const Rig& file, const std::string& why) {
   if (file.mono) throw std::invalid_argument("a one-camera calibration " + why);
 }
@@ -68,10 +76,11 @@ void OpenCv(const Rig& file, const std::string& out, ExportReport* report) {
   } else {
     report->exact = false;
     report->max_error_px = kMapErrorPx;
-    report->lines.push_back(ModelName(file.kind()) + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
+    const std::string model = Described(exact[0] ? file.right : file.left);
+    report->lines.push_back(model + " is not an OpenCV model: stereo.yaml holds K, R, T, R1, R2, "
                             "P1, P2, Q and no D; the cameras are maps.yml.gz's remap tables (within " +
                             Px(kMapErrorPx) + ", OpenCV's 1/32 px fixed point)");
-    comments.push_back("NOT EXACT: " + ModelName(file.kind()) + " is not an OpenCV model; no D: rectify with "
+    comments.push_back("NOT EXACT: " + model + " is not an OpenCV model; no D: rectify with "
                        "maps.yml.gz (cv::remap), not with K and D");
   }
   WriteOpenCvStereoFile(out + "/stereo.yaml", c.rig, rect, exact, comments);
@@ -85,7 +94,7 @@ void Ros(const Rig& file, const std::string& out, ExportReport* report) {
   for (const CameraModel* m : c.models) exact.push_back(ExactTargetModel(*m, ExportFormat::kRos));
   const bool all_exact = std::all_of(exact.begin(), exact.end(), [](const auto& e) { return e.has_value(); });
   if (!all_exact)
-    RequireStereo(file, "of a " + ModelName(file.kind()) + " camera has neither a ROS model nor a rectification: "
+    RequireStereo(file, "of a " + Described(file.left) + " camera has neither a ROS model nor a rectification: "
                         "use --to mrcal or kalibr");
   std::optional<Rectification> rect;
   if (!file.mono) rect = PinholeRectification(c.rig);
@@ -114,12 +123,15 @@ void Ros(const Rig& file, const std::string& out, ExportReport* report) {
       info.distortion_model = "plumb_bob";
       info.D.assign(5, 0.0);
       info.R = cv::Matx33d::eye();
-      comments.push_back("NOT THE RAW CAMERA: " + ModelName(file.kind()) + " is not a ROS distortion model. This is "
-                         "the " + info.name + " rectified camera: remap the raw images with maps.yml.gz "
-                         "(cv::remap, map1_" + info.name + ", map2_" + info.name + ") and publish those");
-      report->lines.push_back(info.name + ": " + ModelName(file.kind()) + " is not a ROS distortion model: wrote the "
-                              "rectified camera; remap the raw images with maps.yml.gz first (within " +
-                              Px(kMapErrorPx) + ")");
+      // A camera ROS has a model for is rectified too when its pair has none.
+      const size_t inexact = exact[i] ? 1 - i : i;
+      const std::string not_ros = (exact[i] ? std::string("the ") + kNames[inexact] + " camera's " : "") +
+                                  Described(*c.models[inexact]) + " is not a ROS distortion model";
+      comments.push_back("NOT THE RAW CAMERA: " + not_ros + ". This is the " + info.name +
+                         " rectified camera: remap the raw images with maps.yml.gz (cv::remap, map1_" + info.name +
+                         ", map2_" + info.name + ") and publish those");
+      report->lines.push_back(info.name + ": " + not_ros + ": wrote the rectified camera; remap the raw images " +
+                              "with maps.yml.gz first (within " + Px(kMapErrorPx) + ")");
     }
     WriteRosCameraInfo(out + "/" + info.name + ".yaml", info, comments);
     report->files.push_back(info.name + ".yaml");
@@ -151,7 +163,7 @@ void Kalibr(const Rig& file, const std::string& out, ExportReport* report) {
     cameras.push_back({&fitted[i], *ExactTargetModel(fit.model, ExportFormat::kKalibr)});
     report->exact = false;
     report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
-    const std::string what = std::string(kNames[i]) + ": " + ModelName(m.distortion.kind) +
+    const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                              " is not a Kalibr model: wrote the closest pinhole-" +
                              cameras.back().distortion.name + ", off by up to " + Px(fit.error.max_px) +
                              " (RMS " + Px(fit.error.rms_px) + ") over the observed field";
@@ -179,7 +191,7 @@ void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
       model = fit.model;
       report->exact = false;
       report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
-      const std::string what = std::string(kNames[i]) + ": " + ModelName(m.distortion.kind) +
+      const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
                                ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
                                Px(fit.error.rms_px) + ") over " + std::to_string(fit.error.points) +

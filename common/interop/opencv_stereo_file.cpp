@@ -1,5 +1,6 @@
 #include "interop/opencv_stereo_file.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/core/eigen.hpp>
@@ -84,8 +85,17 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
       m.p1 = d[2], m.p2 = d[3];
       return std::make_shared<WidestereoProjection>(m);
     }
+    if (d.size() == 14) {  // CALIB_TILTED_MODEL: widestereo's poly6 + tilt when it has no other term
+      if (std::any_of(d.begin() + 5, d.begin() + 12, [](double v) { return v != 0; }))
+        in.Fail(d_key, "14 coefficients with a rational or thin-prism part (k4 to k6, s1 to s4): only a "
+                       "tilted sensor over k1 k2 p1 p2 k3 is read");
+      m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], d[4]}};
+      m.p1 = d[2], m.p2 = d[3];
+      m.nonradial.tilt = {d[12], d[13]};
+      return std::make_shared<WidestereoProjection>(m);
+    }
     if (d.size() != 8 && d.size() != 12)
-      in.Fail(d_key, std::to_string(d.size()) + " coefficients: 4, 5, 8 or 12 are read");
+      in.Fail(d_key, std::to_string(d.size()) + " coefficients: 4, 5, 8, 12 or 14 are read");
     std::vector<double> k{d[0], d[1], d[4], d[5], d[6], d[7], 0, 0, 0, 0};
     if (d.size() == 12) std::copy(d.begin() + 8, d.end(), k.begin() + 6);
     return std::make_shared<ForeignCamera<OpenCvLens>>(

@@ -134,6 +134,30 @@ def test_ros_export_loads_back(kinds, kind, tmp_path):
         assert abs(np.linalg.norm(back.T) - np.linalg.norm(rig.T)) < 1e-9 and back.T[0] < 0
 
 
+def test_a_tilted_poly6_exports_to_opencv_exactly(kinds, tmp_path):
+    """poly6 with a sensor tilt is OpenCV's 14-coefficient model
+    (CALIB_TILTED_MODEL): cv2 projects with the exported K and D as the
+    calibration does, and the file loads back as the same camera."""
+    text = open(kinds / "rig-poly6.yaml").read()
+    left, right = text.split("\nright:", 1)
+    tilted = tmp_path / "tilted.yaml"
+    tilted.write_text(left.replace("   views:", "   nonradial:\n      tilt: [ 1.0e-02, -2.0e-02 ]\n   views:", 1)
+                      + "\nright:" + right)
+    out = tmp_path / "opencv"
+    _, error = export(str(tilted), "opencv-stereo", out)
+    assert error == 0
+    rig = widestereo.Rig.load(str(tilted))
+    assert rig.left.parameters["nonradial"] == {"tilt": [0.01, -0.02]}
+    fs = cv2.FileStorage(str(out / "stereo.yaml"), cv2.FILE_STORAGE_READ)
+    K, D = fs.getNode("K1").mat(), fs.getNode("D1").mat().ravel()
+    assert D.size == 14 and list(D[12:]) == [0.01, -0.02]
+    pixels, rays = image_pixels(rig.left, in_front=True)
+    assert np.abs(opencv_project("pinhole", K, D, rays) - pixels).max() < 1e-6
+    back = widestereo.Rig.load(str(out / "stereo.yaml"))
+    assert back.left.parameters["nonradial"] == {"tilt": [0.01, -0.02]}
+    assert np.abs(back.left.project(rays) - pixels).max() < 1e-9
+
+
 def test_a_damaged_ros_file_is_refused_naming_the_field(kinds, tmp_path):
     export(str(kinds / "rig-kb4.yaml"), "ros", tmp_path)
     text = open(tmp_path / "left.yaml").read()
