@@ -88,11 +88,6 @@ OutlierRule ParseOutlierRule(const std::string& value, double* sigma) {
 
 namespace {
 
-// The wall-clock seconds since `start`.
-double Seconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // One camera with the model of `plan`.
 CameraCalibration SolveCamera(const CameraData& data, const CalibrationOptions& options,
                               const ModelPlan& plan) {
@@ -272,9 +267,8 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
       std::lock_guard<std::mutex> lock(done_mutex);
       const int finished = ++done;
       Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
-                       " solved (" + ModelName(kinds[size_t(k)]) + "), about " +
-                       Fixed(Seconds(start) / finished * double(int(kinds.size()) - finished), 0) +
-                       " s left" + (field_after ? " before the chosen model's non-radial part" : ""));
+                       " solved (" + ModelName(kinds[size_t(k)]) + "), " +
+                       TimeLeft(start, finished, int(kinds.size())) + (field_after ? " before the chosen model's non-radial part" : ""));
     }
   }, double(kinds.size()));
   if (stopped) std::rethrow_exception(stopped);

@@ -1,6 +1,7 @@
 #include "calib/mono_solve.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iterator>
 
@@ -313,6 +314,8 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
   // the candidate of its lowest held-out RMS (0: none solved). With
   // `one_grid` (the weights of one grid), each from the one before.
   int fields = 0;  // solved so far, for the progress lines
+  const int most_fields = int(std::size(kFieldSmoothnessLadder) + std::size(kFieldLadder) - 1);
+  const auto fields_start = std::chrono::steady_clock::now();
   auto climb = [&](const std::vector<FieldTrial>& ladder, bool one_grid) {
     size_t best = 0;
     int worse_in_a_row = 0;
@@ -323,10 +326,11 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
       Restore(start, s);
       if (!tried(candidates[base].camera, t, warm ? &start.camera : nullptr)) break;
       const FinalSolve& newest = candidates.back();
+      ++fields;
       Say(options, what + " with " + name(t) + ": held-out " + Fixed(newest.heldout.rms_px[0]) +
-                       " px (field " + std::to_string(++fields) + " of at most " +
-                       std::to_string(std::size(kFieldSmoothnessLadder) + std::size(kFieldLadder) - 1) +
-                       "; " + newest.outcome.message + ")");
+                       " px (field " + std::to_string(fields) + " of at most " + std::to_string(most_fields) +
+                       ", " + TimeLeft(fields_start, fields, most_fields) + " at most; " + newest.outcome.message +
+                       ")");
       if (best == 0) {
         best = candidates.size() - 1;
         continue;
@@ -379,6 +383,7 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
   size_t best = 0;
   double best_fit = INFINITY;  // the lowest fitted RMS so far
   int saturated = 0;           // counts in a row that fit about as well as the best fit
+  const auto knots_start = std::chrono::steady_clock::now();
   for (int knots : kKnotLadder) {
     const SplineOptions spline{knots, asked.degree, asked.smoothness};
     s->poses = poses;
@@ -391,8 +396,10 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
     if (cv.folds == 0) throw CalibrationError(what + ": too few views to cross-validate the knots");
     s->knot_curve.push_back(
         {knots, Rms(Residuals(s->problem, 0)), cv.rms_px[0], cv.fold_rms_px[0]});
-    Say(options, trial + ": rms " + Fixed(s->knot_curve.back().rms_px) + " px, held-out " +
-                     Fixed(cv.rms_px[0]) + " px");
+    const int tried = int(solves.size()) + 1, most = int(std::size(kKnotLadder));
+    Say(options, trial + ": rms " + Fixed(s->knot_curve.back().rms_px) + " px, held-out " + Fixed(cv.rms_px[0]) +
+                     " px (count " + std::to_string(tried) + " of at most " + std::to_string(most) + ", " +
+                     TimeLeft(knots_start, tried, most) + " at most)");
     solves.push_back(s->problem.cameras[0]);
     cvs.push_back(cv);
     if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;

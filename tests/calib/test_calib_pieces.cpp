@@ -5,7 +5,8 @@
 // pinhole and fisheye past 90 degrees (start/pose_fit.h, start/ray_pose.h),
 // the angle models' start (start/angle_start.h),
 // and the solver's problem (solver/problem.h): its shape and a solve from a
-// perturbed start back to the truth.
+// perturbed start back to the truth; the progress lines' time left
+// (solver/stage_log.h).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -16,6 +17,7 @@
 
 #include "calib/solver/camera_block.h"
 #include "calib/solver/problem.h"
+#include "calib/solver/stage_log.h"
 #include "calib/start/angle_start.h"
 #include "calib/start/homography.h"
 #include "calib/start/initialise.h"
@@ -493,4 +495,13 @@ TEST(Problem, SolveFromAPerturbedStartConvergesToTheTruth) {
 }
 
 }  // namespace
+// The seconds so far per item done, times the items to go: 10 s for 2 of 5
+// leaves about 15 s; nothing done yet says nothing.
+TEST(StageLog, TimeLeftIsTheTimePerItemTimesTheItemsToGo) {
+  const auto ten_seconds_ago = std::chrono::steady_clock::now() - std::chrono::seconds(10);
+  EXPECT_EQ(TimeLeft(ten_seconds_ago, 2, 5), "about 15 s left");
+  EXPECT_EQ(TimeLeft(ten_seconds_ago, 5, 5), "about 0 s left");
+  EXPECT_EQ(TimeLeft(ten_seconds_ago, 0, 5), "");
+}
+
 }  // namespace ws::calib
