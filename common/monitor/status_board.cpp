@@ -122,7 +122,7 @@ std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condense
     const int64_t silent_us = now_us - entry.heard_us;
     if (silent_us > kForgetAfterUs) continue;
     const bool gone = silent_us > kGoneAfterUs;
-    const bool ended = s.state == "exited" || s.state == "failed";
+    const bool ended = s.state == "exited" || s.state == "stopped" || s.state == "failed";
     const std::string state = gone && !ended ? "gone" : s.state;
     const std::string uptime = gone ? Format("gone %llds", (long long)(silent_us / 1000000)) : Format("%.0fs", s.uptime_s);
     std::string line = Format("%-*s %-14.14s %7d %8s", w, Who(s).c_str(), state.c_str(), s.pid, uptime.c_str());

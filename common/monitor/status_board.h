@@ -4,7 +4,7 @@
 //
 // It stays true: a process whose heartbeats stopped (killed, its host gone)
 // is shown as gone after kGoneAfterUs, one that ended says so from its last
-// heartbeat ("exited", "failed"); names are never cut; frames skipped for a
+// heartbeat ("exited": its work done, "stopped": by a signal, "failed"); names are never cut; frames skipped for a
 // newer one (the newest-frame policy) are shown apart from frames lost; and
 // the table fits the screen it is given, condensing before it cuts.
 #pragma once
