@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -58,6 +59,13 @@ Blob Jpeg(const cv::Mat& image, int max_width) {
   Blob jpeg{"image/jpeg", {}};
   cv::imencode(".jpg", shown, jpeg.bytes, {cv::IMWRITE_JPEG_QUALITY, 80});
   return jpeg;
+}
+
+std::string Arrived(std::string event, int64_t at_us) {
+  if (event.size() < 2 || event.front() != '{' || event.back() != '}')
+    throw std::logic_error("an event is a JSON object");
+  event.insert(event.size() - 1, std::string(event.size() > 2 ? "," : "") + "\"at_us\":" + std::to_string(at_us));
+  return event;
 }
 
 std::string FrameEvent(const widestereo::stereo_frame_t& frame, int max_width, BlobStore& blobs) {

@@ -48,6 +48,10 @@ std::string CloudStatsEvent(const widestereo::cloud_stats_t& stats);
 // Topic "health": stereo-health's verdict and |dy| figures.
 std::string HealthEvent(const widestereo::calibration_health_t& health);
 
+// `event` (a JSON object) with "at_us": when stereo-view received what it
+// shows (its own clock), so that the page can show its age.
+std::string Arrived(std::string event, int64_t at_us);
+
 // An 8-bit image (gray or BGR) scaled to at most max_width across, as a JPEG blob.
 Blob Jpeg(const cv::Mat& image, int max_width);
 

@@ -3,6 +3,7 @@ the simulated rig's processes on a bus of their own (udpm, ttl 0), lcm-logger
 recording it, and the page checked against what the bus carried."""
 import json
 import os
+import signal
 import socket
 import time
 import urllib.error
@@ -206,3 +207,49 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     rate = (sent[-1] - sent[0]) / ((captured[-1][0] - captured[0][0]) * 1e-6)
     assert received >= 0.8 * rate * window * 1e-6, (received, rate, window)
     assert images_after.dropped == images_before.dropped
+
+
+def shown(driver, selector):
+    return driver.find_element(By.CSS_SELECTOR, selector).is_displayed()
+
+
+@pytest.mark.recorded("PROCESS_STATUS")
+def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, browser):
+    capture = bus.start("stereo-capture", ["--source", "sim:config/sim/wall.yaml", "--rate", "3", "--loop"])
+    port = free_port()
+    view = bus.start("stereo-view", ["--port", str(port), "--calib", CALIBRATION, "--first-view", "depth"])
+    browser.get(bus.page(port, view))
+
+    # The page opens on the launch's view; what it has not got explains itself.
+    until(lambda: "active" in attribute(browser, "#tab-depth", "class"), 30, "the depth tab, as --first-view says")
+    until(lambda: attribute(browser, "#connection", "data-state") == "live", 60, "live once images flow")
+    until(lambda: attribute(browser, "#rect-right .age", "data-age-s"), 60, "the rectified pair's age")
+    assert float(attribute(browser, "#rect-right .age", "data-age-s")) < 3
+    assert shown(browser, "#disparity-figure .empty") and not shown(browser, "#disparity"), \
+        "without stereo-match the disparity panel says why, and shows no broken image"
+    assert "stereo-match" in browser.find_element(By.CSS_SELECTOR, "#disparity-figure .empty").text
+    assert shown(browser, "#cloud-figure .empty")
+    assert not shown(browser, "#stale")
+    screenshot(browser, bus, "depth-without-match.png")
+
+    # The source stops (SIGTERM: it exits 0): the banner names it, the page is not live, ages grow.
+    capture.send_signal(signal.SIGTERM)
+    assert capture.wait(timeout=20) == 0
+    stopped_at = time.time()
+    until(lambda: "STEREO_IMAGES" in (attribute(browser, "#stale", "data-channels") or ""), 30,
+          "the banner names STEREO_IMAGES as stale")
+    banner = browser.find_element(By.ID, "stale").text
+    assert "stereo-capture" in banner and "since" in banner, banner
+    assert attribute(browser, "#connection", "data-state") == "stale"
+    assert browser.find_element(By.ID, "connection").text != "live"
+    until(lambda: float(attribute(browser, "#rect-right .age", "data-age-s")) >= 3, 10, "the images' age grows")
+    assert "old" in attribute(browser, "#rect-right .age", "class")
+    # Its last heartbeat says how it ended: stopped, not done.
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-capture" and s.state == "stopped"],
+          10, "stereo-capture's last heartbeat says stopped")
+    row = until(lambda: browser.find_elements(By.CSS_SELECTOR, "#processes tbody.ended[data-state=stopped]"), 10,
+                "the process table shows stereo-capture stopped")[0]
+    assert row.get_attribute("data-process").startswith("stereo-capture")
+    assert row.find_element(By.CSS_SELECTOR, ".state").text == "stopped"  # whole, not cut to 14 characters
+    assert time.time() - stopped_at < 60
+    screenshot(browser, bus, "stale.png")

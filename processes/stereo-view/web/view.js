@@ -3,17 +3,69 @@
 "use strict";
 
 const $ = (selector) => document.querySelector(selector);
-const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0 };
+const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0, tabPicked: false };
 
 // ---- tabs -------------------------------------------------------------------
-for (const tab of document.querySelectorAll(".tab")) {
-  tab.addEventListener("click", () => {
-    for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t === tab);
-    for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== tab.dataset.view;
-    if (tab.dataset.view === "depth") cloudView.resize();
-    connect();  // stereo-view makes only the shown view's images
-  });
+function showTab(view) {
+  for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t.dataset.view === view);
+  for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== view;
+  if (view === "depth") cloudView.resize();
+  connect();  // stereo-view makes only the shown view's images
 }
+for (const tab of document.querySelectorAll(".tab")) {
+  tab.addEventListener("click", () => { state.tabPicked = true; showTab(tab.dataset.view); });
+}
+
+// ---- freshness ----------------------------------------------------------------
+// Every panel shows how old what it shows is, on stereo-view's clock (each
+// event's at_us; the status event, every second, gives that clock's now).
+// A channel stereo-view no longer hears is named in the banner; "live" means
+// the stream is open and what it carries is flowing.
+const STALE_MS = 3000;
+const clock = { offsetMs: 0, statusAt: 0, freshness: {} };
+const serverNowMs = () => Date.now() + clock.offsetMs;
+
+// Marks `element` as showing what stereo-view received at at_us.
+function stamp(element, atUs) {
+  if (!element || atUs === undefined) return;
+  element.dataset.at = atUs;
+  const figure = element.closest("figure");
+  if (figure) figure.dataset.filled = "1";
+  refreshAge(element);
+}
+
+function refreshAge(element) {
+  const seconds = Math.max(0, (serverNowMs() - element.dataset.at / 1000) / 1000);
+  element.dataset.ageS = seconds.toFixed(1);
+  element.textContent = seconds < 1 ? "just now" : `${seconds.toFixed(0)} s ago`;
+  element.classList.toggle("old", seconds * 1000 > STALE_MS);
+}
+
+const clockTime = (serverUs) => new Date(serverUs / 1000 - clock.offsetMs).toLocaleTimeString();
+
+function showFreshness() {
+  for (const element of document.querySelectorAll(".age[data-at]")) refreshAge(element);
+  const open = source && source.readyState === EventSource.OPEN;
+  const lines = [];
+  if (open && clock.statusAt && Date.now() - clock.statusAt > STALE_MS)
+    lines.push(`stereo-view has sent nothing since ${new Date(clock.statusAt).toLocaleTimeString()}: what the page shows is from then`);
+  const stale = Object.entries(clock.freshness).filter(([, f]) => f.stale);
+  for (const [channel, f] of stale)
+    lines.push(`Stale: no ${channel} from ${f.source || "its sender"} since ${clockTime(f.last_us)} ` +
+               `(${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
+  const banner = $("#stale");
+  banner.replaceChildren(...lines.map((text) => Object.assign(document.createElement("div"), { textContent: text })));
+  banner.hidden = lines.length === 0;
+  banner.dataset.channels = stale.map(([channel]) => channel).join(" ");
+  const flowing = Object.values(clock.freshness).some((f) => !f.stale);
+  const [text, className, name] = !open ? [source ? "reconnecting…" : "connecting…", "off", "off"]
+    : lines.length ? ["stale", "warn", "stale"] : flowing ? ["live", "on", "live"] : ["no data yet", "warn", "waiting"];
+  const connection = $("#connection");
+  connection.textContent = text;
+  connection.className = className;
+  connection.dataset.state = name;
+}
+setInterval(showFreshness, 1000);
 
 // ---- drawing helpers --------------------------------------------------------
 // An image an event names (blob/ID), or null when stereo-view no longer
@@ -34,6 +86,9 @@ function scaleColour(t) {
   const i = Math.min(stops.length - 2, Math.floor(t)), f = t - i;
   return stops[i].map((c, k) => Math.round(c + (stops[i + 1][k] - c) * f));
 }
+
+// Relative luminance of an [r, g, b] colour, 0 (black) to 1 (white).
+const luminance = ([r, g, b]) => (0.2126 * r + 0.7152 * g + 0.0722 * b) / 255;
 
 function fmt(value, digits = 3) { return value === null || value === undefined ? "—" : Number(value).toFixed(digits); }
 
@@ -77,6 +132,7 @@ function drawCamera(side) {
   }
   figure.dataset.corners = drawn;
   figure.dataset.frameId = state.frame.frame_id;
+  stamp(figure.querySelector(".age"), state.frame.at_us);
   figure.querySelector(".info").textContent =
     `frame ${state.frame.frame_id}, ${image.width}×${image.height}, ${drawn} corners` +
     (state.corners ? "" : " (waiting for stereo-detect's corners of a frame)");
@@ -113,6 +169,7 @@ function showCoverage(cov) {
   $("#calib-rms").textContent = fmt(cov.rms);
   $("#calib-heldout").textContent = fmt(cov.heldout_rms);
   $("#hint").textContent = cov.hint || "—";
+  stamp($("#coverage-age"), cov.at_us);
   drawPair();
 }
 
@@ -144,6 +201,7 @@ function drawMap(title, rows, unit) {
 function showResult(result) {
   $("#result").hidden = false;
   $("#chosen-model").textContent = result.chosen;
+  stamp($("#result-age"), result.at_us);
   const body = $("#models tbody");
   body.replaceChildren();
   for (const m of result.models) {
@@ -171,14 +229,57 @@ function showResult(result) {
 }
 
 function showStatus(status) {
-  $("#rates").textContent = status.table;
+  clock.offsetMs = status.now_us / 1000 - Date.now();
+  clock.statusAt = Date.now();
+  clock.freshness = status.freshness;
+  if (!state.tabPicked && status.first_view !== document.querySelector(".tab.active").dataset.view) {
+    state.tabPicked = true;  // once: then the user's choice
+    showTab(status.first_view);
+  }
+  showFreshness();
+  showProcesses(status.processes);
+  stamp($("#processes-age"), status.now_us);
   const why = status.commands_refused;
   for (const button of document.querySelectorAll("button.command")) {
     button.disabled = why !== "";
     button.title = why;
   }
-  if (why) $("#command-why").textContent = why;
+  if (why) setCommandNote(why, "error");
   document.body.dataset.browserSkipped = status.counters.browsers.skipped;
+}
+
+// stereo-status's table as HTML: a body per process (a row per channel,
+// then its stage times and last error, wrapped), ended ones greyed.
+function showProcesses(processes) {
+  const table = $("#processes");
+  for (const body of table.querySelectorAll("tbody")) body.remove();
+  const cell = (row, text, className) =>
+    row.appendChild(Object.assign(document.createElement("td"), { textContent: text, className: className || "" }));
+  for (const p of processes) {
+    const body = document.createElement("tbody");
+    body.className = p.ended ? "ended" : p.gone ? "gone" : "";
+    body.dataset.process = p.who;
+    body.dataset.state = p.state;
+    const channels = p.channels.length ? p.channels : [null];
+    channels.forEach((c, i) => {
+      const row = body.insertRow();
+      for (const [text, name] of i === 0 ? [[p.who, "who"], [p.state, "state"], [p.pid, "pid"], [p.uptime, "uptime"]]
+                                         : [["", ""], ["", ""], ["", ""], ["", ""]])
+        cell(row, text, name);
+      if (!c) return;
+      row.dataset.channel = c.channel;
+      cell(row, c.channel);
+      for (const key of ["in", "out", "rate", "lost", "skipped", "rejected"])
+        cell(row, key === "rate" ? (c.rate === null ? "-" : c.rate.toFixed(1)) : c[key], key);
+    });
+    const note = (text, className) => {
+      const td = cell(body.insertRow(), text, "note " + className);
+      td.colSpan = 11;
+    };
+    if (p.stages.length) note("ms per frame, median/p99: " + p.stages.join(", "), "stages");
+    if (p.last_error) note("last error: " + p.last_error, "error");
+    table.append(body);
+  }
 }
 
 for (const button of document.querySelectorAll("button.command")) {
@@ -189,8 +290,15 @@ for (const button of document.querySelectorAll("button.command")) {
       body: JSON.stringify({ command: button.dataset.command }),
     });
     const body = await reply.json();
-    $("#command-why").textContent = reply.ok ? `${button.dataset.command} sent` : body.error;
+    if (reply.ok) setCommandNote(`${button.dataset.command} sent`, "sent");
+    else setCommandNote(body.error, "error");
   });
+}
+
+function setCommandNote(text, kind) {
+  const note = $("#command-why");
+  note.textContent = text;
+  note.className = kind;
 }
 
 // ---- depth view ---------------------------------------------------------------
@@ -209,6 +317,7 @@ async function showRectified(event) {
     }
   }
   $("#rect-right .info").textContent = `frame ${event.frame_id}, ${event.width}×${event.height}`;
+  for (const side of ["left", "right"]) stamp($(`#rect-${side} .age`), event.at_us);
 }
 
 function showDisparity(event) {
@@ -221,6 +330,7 @@ function showDisparity(event) {
     span.dataset.disparity = tick.disparity;
     span.dataset.metres = tick.metres;
     span.style.background = `rgb(${tick.rgb.join(",")})`;
+    span.style.color = luminance(tick.rgb) < 0.5 ? "#fff" : "#000";  // readable on every colour
     span.textContent = `${fmt(tick.metres, 2)} m`;
     legend.append(span);
   }
@@ -229,6 +339,7 @@ function showDisparity(event) {
   legend.dataset.rectification = event.rectification;
   $("#disparity-figure .info").textContent =
     `frame ${event.frame_id}, ${event.rectification}, disparities ${event.min_disparity} to ${event.max_disparity} px (far to near)`;
+  stamp($("#disparity-figure .age"), event.at_us);
 }
 
 function showCloudStats(stats) {
@@ -242,6 +353,7 @@ function showCloudStats(stats) {
   panel.dataset.frameId = stats.frame_id;
   panel.dataset.points = stats.points;
   panel.dataset.planeOffset = stats.plane_offset;
+  stamp($("#cloud-stats-age"), stats.at_us);
 }
 
 function showHealth(health) {
@@ -249,6 +361,7 @@ function showHealth(health) {
   $("#health-verdict").dataset.verdict = health.verdict;
   $("#health-dy").textContent = fmt(health.dy_median_px, 3);
   $("#health-matches").textContent = `${health.matches} matches in ${health.frames} frames`;
+  stamp($("#health-age"), health.at_us);
 }
 
 // The filtered cloud in 3-D (three.js), in the left rectified frame: x right,
@@ -293,6 +406,9 @@ const cloudView = (() => {
     container.dataset.frameId = last.frame_id;
     container.dataset.shown = xyz.length / 3;
     $("#cloud-figure .info").textContent = `frame ${last.frame_id}: ${last.npoints} points, ${xyz.length / 3} shown`;
+    const wasEmpty = !$("#cloud-figure").dataset.filled;
+    stamp($("#cloud-figure .age"), last.at_us);
+    if (wasEmpty) resize();
     if (!renderer) return;
     const byRange = $("#colour-by").value === "range";
     const values = new Float32Array(xyz.length / 3);
@@ -339,8 +455,8 @@ function connect() {
   if (source) source.close();
   source = new EventSource("events?view=" + document.querySelector(".tab.active").dataset.view);
   const on = (topic, fn) => source.addEventListener(topic, (e) => fn(JSON.parse(e.data)));
-  source.onopen = () => { $("#connection").textContent = "live"; $("#connection").className = "on"; };
-  source.onerror = () => { $("#connection").textContent = "reconnecting…"; $("#connection").className = "off"; };
+  source.onopen = showFreshness;  // "live" only once data is seen flowing
+  source.onerror = showFreshness;
   on("frame", (e) => showFrame(e, null));
   on("detected", (e) => showFrame(e.frame, e.corners));
   on("coverage", showCoverage);
