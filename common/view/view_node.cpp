@@ -88,6 +88,7 @@ void ViewNode::SetRig(const Rig& rig, const std::string& source) {
     rig_source_ = source;
     rect_.reset();  // rebuilt by the frame thread for the next frame
   }
+  Show("calibration", CalibrationEvent(MessageFromRig(rig, 0), source));
   process_.log().Info("depth view: rectifying with " + source);
 }
 
@@ -170,6 +171,8 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
+  if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
+    Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
   const auto frame = recent_.find(corners.frame_id);
   if (frame != recent_.end())
@@ -241,6 +244,11 @@ void ViewNode::Start() {
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
   SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
+    if (m.views_left + m.views_right < views_) {  // stereo-calibrate was reset: its views are gone
+      spread_.Clear();
+      Show("spread", spread_.Json().dump());
+    }
+    views_ = m.views_left + m.views_right;
     Show("coverage", CoverageEvent(m));
   });
   process_.Subscribe<widestereo::calibration_result_t>(

@@ -4,12 +4,17 @@
 //  - STEREO_IMAGES at most `image_hz` (JPEG, both images; with a calibration
 //    also the rectified pair); STEREO_CORNERS with the image they were found
 //    in (when that frame was one of the last kRecentFrames shown: the
-//    corners of other frames are not drawn), CALIBRATION_STATUS,
+//    corners of other frames are not drawn), and every board's measures
+//    (view/board_spread.h: camera_calibration's bars), CALIBRATION_STATUS,
 //    CALIBRATION_RESULT: the calibration view;
+//  - STEREO_CALIBRATION (and --calib): the calibration in use, K, the
+//    distortion, R, T, the baseline;
 //  - STEREO_DISPARITY (colours and legend, at most image_hz),
 //    STEREO_CLOUD_FILTERED (at most image_hz), CLOUD_STATS,
 //    CALIBRATION_HEALTH: the depth view;
-//  - PROCESS_STATUS and the rest: stereo-status's table, every second.
+//  - PROCESS_STATUS and the rest: stereo-status's table, every second, with
+//    each channel's freshness (view/freshness.h); every event carries when
+//    it was received (view/page_events.h Arrived).
 //
 // The images, disparities and clouds are turned into events on threads of
 // their own (runtime/newest_first.h), so the input thread only hands them
@@ -36,6 +41,7 @@
 #include "runtime/process.h"
 #include "view/audience.h"
 #include "view/blob_store.h"
+#include "view/board_spread.h"
 #include "view/event_hub.h"
 #include "view/freshness.h"
 #include "view/page_events.h"
@@ -105,6 +111,8 @@ class ViewNode {
   ViewOptions options_;
   StatusBoard board_;
   Freshness freshness_;
+  BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
+  int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)
   std::optional<Rig> rig_;

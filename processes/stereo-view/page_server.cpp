@@ -34,6 +34,7 @@ PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, 
       assets_{{"/", {kIndexHtml, "text/html; charset=utf-8"}},
               {"/view.js", {kViewJs, "text/javascript"}},
               {"/view.css", {kViewCss, "text/css"}},
+              {"/cloud3d.js", {kCloud3dJs, "text/javascript"}},
               {"/three.min.js", {ReadFile(three_dir + "/build/three.min.js"), "text/javascript"}},
               {"/OrbitControls.js",
                {ReadFile(three_dir + "/examples/js/controls/OrbitControls.js"), "text/javascript"}}} {
