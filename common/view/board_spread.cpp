@@ -54,6 +54,7 @@ std::optional<BoardMeasures> MeasureBoard(const widestereo::camera_corners_t& co
 }
 
 bool BoardSpread::Add(const BoardMeasures& m) {
+  if (kept_.size() >= kMaxBoards) return false;
   for (const BoardMeasures& k : kept_) {
     double distance = 0;
     for (size_t i = 0; i < m.size(); ++i) distance += std::abs(m[i] - k[i]);

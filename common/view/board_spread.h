@@ -33,9 +33,11 @@ std::optional<BoardMeasures> MeasureBoard(const widestereo::camera_corners_t& co
 class BoardSpread {
  public:
   static constexpr int kEnoughBoards = 40;
+  static constexpr size_t kMaxBoards = 1000;  // bounds what a peer sending corners can make it keep
   static constexpr std::array<double, 4> kWantedRange = {0.7, 0.7, 0.4, 0.5};
 
-  // Keeps `m` unless a kept board is within 0.2 of it; whether it was kept.
+  // Keeps `m` unless a kept board is within 0.2 of it or kMaxBoards are
+  // kept; whether it was kept.
   bool Add(const BoardMeasures& m);
   void Clear() { kept_.clear(); }
   // Each bar's progress in [0, 1] (all 0 before any board).

@@ -73,6 +73,9 @@ TEST(BoardSpread, KeepsOnlyDifferentBoardsAndIsEnoughWhenEveryBarIsFull) {
   EXPECT_TRUE(j["enough"]);
   spread.Clear();
   EXPECT_FALSE(spread.Enough());
+  for (size_t i = 0; i < 2 * BoardSpread::kMaxBoards; ++i) spread.Add({double(i), 0, 0, 0});
+  EXPECT_EQ(spread.Json()["boards"], BoardSpread::kMaxBoards) << "bounded";
+  spread.Clear();
   EXPECT_TRUE(spread.Json()["bars"][0]["low"].is_null());
 }
 

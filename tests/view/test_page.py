@@ -157,7 +157,7 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     until(lambda: attribute(browser, "#cloud-points", "data-frame-id"), 60, "the cloud's statistics")
     until(lambda: attribute(browser, "#cloud", "data-shown"), 60, "the cloud in 3-D")
     # As rviz: axes, a grid, both cameras' frustums; a clicked point's coordinates and range; the cloud's rate.
-    until(lambda: {"axes", "grid", "frustum-left", "frustum-right"} <=
+    until(lambda: {"axes", "grid", "frustum-left", "frustum-right", "plane"} <=
           set((attribute(browser, "#cloud", "data-helpers") or "").split()), 30, "axes, grid and frustums")
     ActionChains(browser).move_to_element(browser.find_element(By.CSS_SELECTOR, "#cloud canvas")).click().perform()
     until(lambda: attribute(browser, "#picked", "data-range"), 10, "the point under the click picked")

@@ -2,8 +2,9 @@
 // libjs-three), in the left rectified frame: x right, y down, z ahead, seen
 // from behind the cameras. Around the cloud, as rviz draws them: the frame's
 // axes (x red, y green, z blue; 0.5 m), a grid of 1 m cells in the cameras'
-// x-z plane, and both cameras' frustums once the rig is known. A click (not
-// a drag) picks the cloud's point under the pointer.
+// x-z plane, both cameras' frustums once the rig is known, and the plane
+// stereo-cloud fitted. A click (not a drag) picks the cloud's point under
+// the pointer.
 "use strict";
 
 function CloudScene(container) {
@@ -28,7 +29,7 @@ function CloudScene(container) {
   grid.name = "grid";
   helpers.add(axes, grid);
   scene.add(helpers);
-  let frustums = null, points = null, xyz = null, pointSize = 0.01;
+  let frustums = null, plane = null, points = null, xyz = null, pointSize = 0.01;
   const marker = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8), new THREE.MeshBasicMaterial({ color: 0xffffff }));
   marker.visible = false;
   scene.add(marker);
@@ -59,6 +60,25 @@ function CloudScene(container) {
       frustums.add(frustum("frustum-left", 0, tanX, tanY, depth, 0x4fc3f7),
                    frustum("frustum-right", baseline, tanX, tanY, depth, 0xffb74d));
       helpers.add(frustums);
+      render();
+    },
+    // The plane n·p + offset = 0 (n a unit normal), as a square of side
+    // `size` about the point of it nearest `near`; none for a null normal.
+    setPlane(normal, offset, near, size) {
+      if (plane) { helpers.remove(plane); dispose(plane); plane = null; }
+      if (normal) {
+        const n = new THREE.Vector3(...normal).normalize(), c = new THREE.Vector3(...near);
+        c.addScaledVector(n, -(n.dot(c) + offset));
+        const square = new THREE.PlaneGeometry(size, size);
+        plane = new THREE.Group();
+        plane.add(new THREE.Mesh(square, new THREE.MeshBasicMaterial({
+                    color: 0x80deea, transparent: true, opacity: 0.18, side: THREE.DoubleSide, depthWrite: false })),
+                  new THREE.LineSegments(new THREE.EdgesGeometry(square), new THREE.LineBasicMaterial({ color: 0x80deea })));
+        plane.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), n);
+        plane.position.copy(c);
+        plane.name = "plane";
+        helpers.add(plane);
+      }
       render();
     },
     // The points (float32 x y z) with their colours (float32 r g b, 0 to 1).

@@ -425,6 +425,7 @@ function showCloudStats(stats) {
   panel.dataset.points = stats.points;
   panel.dataset.planeOffset = stats.plane_offset;
   stamp($("#cloud-stats-age"), stats.at_us);
+  cloudView.setPlane(stats);
 }
 
 function showHealth(health) {
@@ -438,7 +439,7 @@ function showHealth(health) {
 // The filtered cloud in 3-D (cloud3d.js), its age and rate, the point picked.
 const cloudView = (() => {
   const container = $("#cloud");
-  let scene = null, last = null, xyz = null, framed = false, pointSize = 0.01;
+  let scene = null, last = null, xyz = null, framed = false, pointSize = 0.01, extent = null, stats = null;
   try {
     scene = CloudScene(container);
   } catch (e) {
@@ -475,17 +476,27 @@ const cloudView = (() => {
       const rgb = scaleColour(hi > lo ? (v - lo) / (hi - lo) : 0.5);
       for (let k = 0; k < 3; ++k) colours[3 * i + k] = rgb[k] / 255;
     });
+    const c = [0, 0, 0];
+    for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
+    let r = 0;
+    for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
+    extent = { centre: c, radius: Math.max(r, 0.1) };
     if (!framed) {  // the first cloud: its centre and extent frame the view
       framed = true;
-      const c = [0, 0, 0];
-      for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
-      let r = 0;
-      for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
-      r = Math.max(r, 0.1);
-      scene.frame(c, r);
-      pointSize = r / 120;
+      scene.frame(extent.centre, extent.radius);
+      pointSize = extent.radius / 120;
     }
     scene.setCloud(xyz, colours, pointSize);
+    drawPlane();
+  }
+  // stereo-cloud's plane, about the cloud shown (CLOUD_STATS).
+  function setPlane(cloudStats) {
+    stats = cloudStats;
+    drawPlane();
+  }
+  function drawPlane() {
+    if (!scene || !extent || !stats) return;
+    scene.setPlane(stats.plane_found ? stats.plane_normal : null, stats.plane_offset, extent.centre, 1.5 * extent.radius);
     container.dataset.helpers = scene.helperNames().join(" ");
   }
   // A click, not a drag (which orbits): the point under it, its coordinates and range.
@@ -511,7 +522,7 @@ const cloudView = (() => {
     container.dataset.helpers = scene.helperNames().join(" ");
   }
   $("#colour-by").addEventListener("change", draw);
-  return { show, resize, setRig };
+  return { show, resize, setRig, setPlane };
 })();
 
 // ---- the event stream ---------------------------------------------------------
