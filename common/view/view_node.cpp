@@ -77,7 +77,9 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       })),
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
         Show("cloud", CloudEvent(c, options_.cloud_points, blobs_));
-      })) {}
+      })) {
+  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6);
+}
 
 ViewNode::~ViewNode() = default;
 
@@ -196,12 +198,14 @@ void ViewNode::PublishView() {
     rig = rig_source_;
   }
   const int64_t now = Clock();
+  if (recording_ && recording_->Check(now)) process_.ReportError(recording_->StoppedText());  // stereo-status shows it
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},
                                         {"counters", counters},
                                         {"now_us", now},
                                         {"first_view", options_.first_view},
                                         {"freshness", freshness_.Json(now)},
+                                        {"recording", recording_ ? recording_->Json() : nlohmann::json()},
                                         {"processes", ProcessTable(board_.Rows(now))}}
                              .dump());
 }

@@ -45,6 +45,7 @@
 #include "view/event_hub.h"
 #include "view/freshness.h"
 #include "view/page_events.h"
+#include "view/recording_watch.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -56,6 +57,8 @@ struct ViewOptions {
   int max_width = 640;      // pixels across of the images sent to the page
   int cloud_points = 20000; // points of a cloud sent to the page at most
   std::string first_view = "calibration";  // the tab a page opens on (the launch's purpose)
+  std::string recording;        // the launch's LCM log ("": none), its size shown against...
+  double recording_cap_mb = 500;  // ...the size at which the launcher stops it
 };
 
 // The pseudo-channel of PROCESS_STATUS counting the page's events: published
@@ -111,6 +114,7 @@ class ViewNode {
   ViewOptions options_;
   StatusBoard board_;
   Freshness freshness_;
+  std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
   int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;

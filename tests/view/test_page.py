@@ -253,7 +253,9 @@ def shown(driver, selector):
 def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, browser):
     capture = bus.start("stereo-capture", ["--source", "sim:config/sim/wall.yaml", "--rate", "3", "--loop"])
     port = free_port()
-    view = bus.start("stereo-view", ["--port", str(port), "--calib", CALIBRATION, "--first-view", "depth"])
+    recording = os.path.join(bus.folder, "launch.lcmlog")  # as the launcher passes its recording
+    view = bus.start("stereo-view", ["--port", str(port), "--calib", CALIBRATION, "--first-view", "depth",
+                                     "--recording", recording, "--recording-cap-mb", "0.001"])
     browser.get(bus.page(port, view))
 
     # The page opens on the launch's view; what it has not got explains itself.
@@ -290,3 +292,17 @@ def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, 
     assert row.find_element(By.CSS_SELECTOR, ".state").text == "stopped"  # whole, not cut to 14 characters
     assert time.time() - stopped_at < 60
     screenshot(browser, bus, "stale.png")
+
+    # The recording: its size against the cap, then that it stopped, on the page and in stereo-view's heartbeat.
+    with open(recording, "wb") as f:
+        f.write(b"x" * 500)
+    until(lambda: "recording 0 of 0.001 MB" in browser.find_element(By.ID, "recording").text, 10, "the recording's size")
+    assert attribute(browser, "#stale", "data-recording-capped") == "false"
+    with open(recording, "ab") as f:
+        f.write(b"x" * 1000)
+    until(lambda: attribute(browser, "#stale", "data-recording-capped") == "true", 10, "the cap reached, on the page")
+    assert "Recording stopped: " + recording + " reached its cap of 0.001 MB" in browser.find_element(By.ID, "stale").text
+    assert "recording stopped" in browser.find_element(By.ID, "recording").text
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and
+                   s.last_error.startswith("recording stopped: " + recording + " reached its cap")], 10,
+          "stereo-view's heartbeat says the recording stopped (stereo-status shows it)")

@@ -22,7 +22,7 @@ for (const tab of document.querySelectorAll(".tab")) {
 // A channel stereo-view no longer hears is named in the banner; "live" means
 // the stream is open and what it carries is flowing.
 const STALE_MS = 3000;
-const clock = { offsetMs: 0, statusAt: 0, freshness: {} };
+const clock = { offsetMs: 0, statusAt: 0, freshness: {}, recording: null };
 const serverNowMs = () => Date.now() + clock.offsetMs;
 
 // Marks `element` as showing what stereo-view received at at_us.
@@ -54,9 +54,14 @@ function showFreshness() {
   for (const [channel, f] of stale)
     lines.push(`Stale: no ${channel} from ${f.source || "its sender"} since ${clockTime(f.last_us)} ` +
                `(${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
+  const rec = clock.recording, notes = [];
+  if (rec && rec.capped)
+    notes.push(`Recording stopped: ${rec.path} reached its cap of ${rec.cap_mb} MB at ${clockTime(rec.capped_us)}; ` +
+               "nothing after is recorded (the processes go on; more: --max-log-mb)");
   const banner = $("#stale");
-  banner.replaceChildren(...lines.map((text) => Object.assign(document.createElement("div"), { textContent: text })));
-  banner.hidden = lines.length === 0;
+  banner.replaceChildren(...lines.concat(notes).map((text) => Object.assign(document.createElement("div"), { textContent: text })));
+  banner.hidden = lines.length + notes.length === 0;
+  banner.dataset.recordingCapped = Boolean(rec && rec.capped);
   banner.dataset.channels = stale.map(([channel]) => channel).join(" ");
   const flowing = Object.values(clock.freshness).some((f) => !f.stale);
   const [text, className, name] = !open ? [source ? "reconnecting…" : "connecting…", "off", "off"]
@@ -300,6 +305,14 @@ function showStatus(status) {
   clock.offsetMs = status.now_us / 1000 - Date.now();
   clock.statusAt = Date.now();
   clock.freshness = status.freshness;
+  clock.recording = status.recording;
+  const rec = status.recording, recording = $("#recording");
+  recording.hidden = !rec;
+  if (rec) {
+    recording.textContent = rec.capped ? `recording stopped at ${fmt(rec.mb, 0)} MB` :
+      rec.mb === null ? "not recording yet" : `recording ${fmt(rec.mb, 0)} of ${rec.cap_mb} MB`;
+    recording.className = rec.capped ? "warn" : "";
+  }
   if (!state.tabPicked && status.first_view !== document.querySelector(".tab.active").dataset.view) {
     state.tabPicked = true;  // once: then the user's choice
     showTab(status.first_view);
