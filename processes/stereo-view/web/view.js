@@ -3,7 +3,7 @@
 "use strict";
 
 const $ = (selector) => document.querySelector(selector);
-const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0, tabPicked: false };
+const state = { frame: null, images: {}, corners: null, coverage: null, spread: null, detectedAt: 0, tabPicked: false };
 
 // ---- tabs -------------------------------------------------------------------
 function showTab(view) {
