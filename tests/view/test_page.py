@@ -290,6 +290,8 @@ def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, 
                 "the process table shows stereo-capture stopped")[0]
     assert row.get_attribute("data-process").startswith("stereo-capture")
     assert row.find_element(By.CSS_SELECTOR, ".state").text == "stopped"  # whole, not cut to 14 characters
+    until(lambda: "no STEREO_IMAGES from stereo-capture (stopped) since" in browser.find_element(By.ID, "stale").text,
+          10, "the banner says how its sender ended")
     assert time.time() - stopped_at < 60
     screenshot(browser, bus, "stale.png")
 

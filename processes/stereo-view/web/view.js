@@ -22,7 +22,7 @@ for (const tab of document.querySelectorAll(".tab")) {
 // A channel stereo-view no longer hears is named in the banner; "live" means
 // the stream is open and what it carries is flowing.
 const STALE_MS = 3000;
-const clock = { offsetMs: 0, statusAt: 0, freshness: {}, recording: null };
+const clock = { offsetMs: 0, statusAt: 0, freshness: {}, recording: null, processes: [] };
 const serverNowMs = () => Date.now() + clock.offsetMs;
 
 // Marks `element` as showing what stereo-view received at at_us.
@@ -42,6 +42,15 @@ function refreshAge(element) {
   element.classList.toggle("old", !element.classList.contains("once") && seconds * 1000 > STALE_MS);
 }
 
+// What the sender's heartbeats say of it: " (stopped)", " (gone)", " (running,
+// but sends nothing)"; "" when no heartbeat of it was heard.
+function senderState(name) {
+  const mine = clock.processes.filter((p) => p.who === name || p.who.startsWith(name + "@"));
+  if (!name || !mine.length) return "";
+  const live = mine.find((p) => !p.ended && !p.gone);
+  return live ? ` (${live.state}, but sends nothing)` : ` (${mine[mine.length - 1].state})`;
+}
+
 const clockTime = (serverUs) => new Date(serverUs / 1000 - clock.offsetMs).toLocaleTimeString();
 
 function showFreshness() {
@@ -52,8 +61,8 @@ function showFreshness() {
     lines.push(`stereo-view has sent nothing since ${new Date(clock.statusAt).toLocaleTimeString()}: what the page shows is from then`);
   const stale = Object.entries(clock.freshness).filter(([, f]) => f.stale);
   for (const [channel, f] of stale)
-    lines.push(`Stale: no ${channel} from ${f.source || "its sender"} since ${clockTime(f.last_us)} ` +
-               `(${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
+    lines.push(`Stale: no ${channel} from ${f.source || "its sender"}${senderState(f.source)} since ` +
+               `${clockTime(f.last_us)} (${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
   const rec = clock.recording, notes = [];
   if (rec && rec.capped)
     notes.push(`Recording stopped: ${rec.path} reached its cap of ${rec.cap_mb} MB at ${clockTime(rec.capped_us)}; ` +
@@ -306,6 +315,7 @@ function showStatus(status) {
   clock.statusAt = Date.now();
   clock.freshness = status.freshness;
   clock.recording = status.recording;
+  clock.processes = status.processes;
   const rec = status.recording, recording = $("#recording");
   recording.hidden = !rec;
   if (rec) {
