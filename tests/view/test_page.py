@@ -155,6 +155,8 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     browser.find_element(By.ID, "tab-depth").click()
     until(lambda: browser.find_elements(By.CSS_SELECTOR, "#legend span"), 60, "the disparity's legend")
     until(lambda: attribute(browser, "#cloud-points", "data-frame-id"), 60, "the cloud's statistics")
+    assert not browser.find_element(By.CSS_SELECTOR, "#cloud-stats-age + .waiting").is_displayed(), \
+        "what the panel waited for has come"
     until(lambda: attribute(browser, "#cloud", "data-shown"), 60, "the cloud in 3-D")
     # As rviz: axes, a grid, both cameras' frustums; a clicked point's coordinates and range; the cloud's rate.
     until(lambda: {"axes", "grid", "frustum-left", "frustum-right", "plane"} <=
@@ -267,6 +269,7 @@ def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, 
         "without stereo-match the disparity panel says why, and shows no broken image"
     assert "stereo-match" in browser.find_element(By.CSS_SELECTOR, "#disparity-figure .empty").text
     assert shown(browser, "#cloud-figure .empty")
+    assert "stereo-health publishes" in browser.find_element(By.CSS_SELECTOR, "#health-age + .waiting").text
     # No banner while images flow (a loaded machine may starve the simulator for 3 s: then it is due).
     until(lambda: not shown(browser, "#stale"), 20, "no stale banner while images flow")
     screenshot(browser, bus, "depth-without-match.png")

@@ -31,6 +31,8 @@ function stamp(element, atUs) {
   element.dataset.at = atUs;
   const figure = element.closest("figure");
   if (figure) figure.dataset.filled = "1";
+  const waiting = element.parentElement.querySelector(".waiting");  // what it waited for has come
+  if (waiting) waiting.hidden = true;
   refreshAge(element);
 }
 
