@@ -78,7 +78,8 @@ std::vector<std::string> Wrapped(const std::string& prefix, const std::string& t
 // A process's latency budget: each stage's time per frame, median / p99.
 std::vector<std::string> StageLines(const StatusBoard::ProcessRow& row, int cols) {
   std::vector<std::string> items;
-  for (size_t i = 0; i < row.stages.size(); ++i) items.push_back(row.stages[i] + (i + 1 < row.stages.size() ? "," : ""));
+  for (size_t i = 0; i < row.stages.size(); ++i)
+    items.push_back(row.stages[i] + (i + 1 < row.stages.size() ? "," : ""));
   return Packed("    ms median/p99: ", items, cols);
 }
 
@@ -143,7 +144,9 @@ std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condense
                                      "PID", "UPTIME", "CHANNEL", "IN", "OUT", "RATE/s", "LOST", "SKIPPED",
                                      "REJECTED"));
   for (const auto& row : rows) {
-    std::string line = Format("%-*s %-14.14s %7d %8s", w, row.who.c_str(), row.state.c_str(), row.pid, row.uptime.c_str());
+    // The state whole (the process's own word), even past its column.
+    std::string line =
+        Format("%-*s %-14s %7d %8s", w, row.who.c_str(), row.state.c_str(), row.pid, row.uptime.c_str());
     if (condensed) {
       ChannelRow total;
       for (const auto& c : row.channels) {

@@ -31,7 +31,8 @@ std::optional<BoardMeasures> MeasureBoard(const widestereo::camera_corners_t& co
     int best = 0;
     double best_d = INFINITY;
     for (int i = 0; i < n; ++i) {
-      const double d = std::hypot(corners.object_points[i][0] - targets[t][0], corners.object_points[i][1] - targets[t][1]);
+      const double d =
+          std::hypot(corners.object_points[i][0] - targets[t][0], corners.object_points[i][1] - targets[t][1]);
       if (d < best_d) best_d = d, best = i;
     }
     outline[t] = corners.image_points[best].data();
