@@ -35,6 +35,8 @@ PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, 
               {"/view.js", {kViewJs, "text/javascript"}},
               {"/view.css", {kViewCss, "text/css"}},
               {"/cloud3d.js", {kCloud3dJs, "text/javascript"}},
+              {"/freshness.js", {kFreshnessJs, "text/javascript"}},
+              {"/process_table.js", {kProcessTableJs, "text/javascript"}},
               {"/three.min.js", {ReadFile(three_dir + "/build/three.min.js"), "text/javascript"}},
               {"/OrbitControls.js",
                {ReadFile(three_dir + "/examples/js/controls/OrbitControls.js"), "text/javascript"}}} {

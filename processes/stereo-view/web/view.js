@@ -16,74 +16,6 @@ for (const tab of document.querySelectorAll(".tab")) {
   tab.addEventListener("click", () => { state.tabPicked = true; showTab(tab.dataset.view); });
 }
 
-// ---- freshness ----------------------------------------------------------------
-// Every panel shows how old what it shows is, on stereo-view's clock (each
-// event's at_us; the status event, every second, gives that clock's now).
-// A channel stereo-view no longer hears is named in the banner; "live" means
-// the stream is open and what it carries is flowing.
-const STALE_MS = 3000;
-const clock = { offsetMs: 0, statusAt: 0, freshness: {}, recording: null, processes: [] };
-const serverNowMs = () => Date.now() + clock.offsetMs;
-
-// Marks `element` as showing what stereo-view received at at_us.
-function stamp(element, atUs) {
-  if (!element || atUs === undefined) return;
-  element.dataset.at = atUs;
-  const figure = element.closest("figure");
-  if (figure) figure.dataset.filled = "1";
-  const waiting = element.parentElement.querySelector(".waiting");  // what it waited for has come
-  if (waiting) waiting.hidden = true;
-  refreshAge(element);
-}
-
-function refreshAge(element) {
-  const seconds = Math.max(0, (serverNowMs() - element.dataset.at / 1000) / 1000);
-  element.dataset.ageS = seconds.toFixed(1);
-  element.textContent = seconds < 1 ? "just now" : `${seconds.toFixed(0)} s ago`;
-  // What comes once (a solve, a calibration) is not stale for being old.
-  element.classList.toggle("old", !element.classList.contains("once") && seconds * 1000 > STALE_MS);
-}
-
-// What the sender's heartbeats say of it: " (stopped)", " (gone)", " (running,
-// but sends nothing)"; "" when no heartbeat of it was heard.
-function senderState(name) {
-  const mine = clock.processes.filter((p) => p.who === name || p.who.startsWith(name + "@"));
-  if (!name || !mine.length) return "";
-  const live = mine.find((p) => !p.ended && !p.gone);
-  return live ? ` (${live.state}, but sends nothing)` : ` (${mine[mine.length - 1].state})`;
-}
-
-const clockTime = (serverUs) => new Date(serverUs / 1000 - clock.offsetMs).toLocaleTimeString();
-
-function showFreshness() {
-  for (const element of document.querySelectorAll(".age[data-at]")) refreshAge(element);
-  const open = source && source.readyState === EventSource.OPEN;
-  const lines = [];
-  if (open && clock.statusAt && Date.now() - clock.statusAt > STALE_MS)
-    lines.push(`stereo-view has sent nothing since ${new Date(clock.statusAt).toLocaleTimeString()}: what the page shows is from then`);
-  const stale = Object.entries(clock.freshness).filter(([, f]) => f.stale);
-  for (const [channel, f] of stale)
-    lines.push(`Stale: no ${channel} from ${f.source || "its sender"}${senderState(f.source)} since ` +
-               `${clockTime(f.last_us)} (${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
-  const rec = clock.recording, notes = [];
-  if (rec && rec.capped)
-    notes.push(`Recording stopped: ${rec.path} reached its cap of ${rec.cap_mb} MB at ${clockTime(rec.capped_us)}; ` +
-               "nothing after is recorded (the processes go on; more: --max-log-mb)");
-  const banner = $("#stale");
-  banner.replaceChildren(...lines.concat(notes).map((text) => Object.assign(document.createElement("div"), { textContent: text })));
-  banner.hidden = lines.length + notes.length === 0;
-  banner.dataset.recordingCapped = Boolean(rec && rec.capped);
-  banner.dataset.channels = stale.map(([channel]) => channel).join(" ");
-  const flowing = Object.values(clock.freshness).some((f) => !f.stale);
-  const [text, className, name] = !open ? [source ? "reconnecting…" : "connecting…", "off", "off"]
-    : lines.length ? ["stale", "warn", "stale"] : flowing ? ["live", "on", "live"] : ["no data yet", "warn", "waiting"];
-  const connection = $("#connection");
-  connection.textContent = text;
-  connection.className = className;
-  connection.dataset.state = name;
-}
-setInterval(showFreshness, 1000);
-
 // ---- drawing helpers --------------------------------------------------------
 // An image an event names (blob/ID), or null when stereo-view no longer
 // keeps it (a newer event follows).
@@ -344,40 +276,6 @@ function showStatus(status) {
   document.body.dataset.browserSkipped = status.counters.browsers.skipped;
 }
 
-// stereo-status's table as HTML: a body per process (a row per channel,
-// then its stage times and last error, wrapped), ended ones greyed.
-function showProcesses(processes) {
-  const table = $("#processes");
-  for (const body of table.querySelectorAll("tbody")) body.remove();
-  const cell = (row, text, className) =>
-    row.appendChild(Object.assign(document.createElement("td"), { textContent: text, className: className || "" }));
-  for (const p of processes) {
-    const body = document.createElement("tbody");
-    body.className = p.ended ? "ended" : p.gone ? "gone" : "";
-    body.dataset.process = p.who;
-    body.dataset.state = p.state;
-    const channels = p.channels.length ? p.channels : [null];
-    channels.forEach((c, i) => {
-      const row = body.insertRow();
-      for (const [text, name] of i === 0 ? [[p.who, "who"], [p.state, "state"], [p.pid, "pid"], [p.uptime, "uptime"]]
-                                         : [["", ""], ["", ""], ["", ""], ["", ""]])
-        cell(row, text, name);
-      if (!c) return;
-      row.dataset.channel = c.channel;
-      cell(row, c.channel);
-      for (const key of ["in", "out", "rate", "lost", "skipped", "rejected"])
-        cell(row, key === "rate" ? (c.rate === null ? "-" : c.rate.toFixed(1)) : c[key], key);
-    });
-    const note = (text, className) => {
-      const td = cell(body.insertRow(), text, "note " + className);
-      td.colSpan = 11;
-    };
-    if (p.stages.length) note("ms per frame, median/p99: " + p.stages.join(", "), "stages");
-    if (p.last_error) note("last error: " + p.last_error, "error");
-    table.append(body);
-  }
-}
-
 for (const button of document.querySelectorAll("button.command")) {
   button.addEventListener("click", async () => {
     const reply = await fetch("command", {
@@ -527,11 +425,12 @@ const cloudView = (() => {
   // A click, not a drag (which orbits): the point under it, its coordinates and range.
   if (scene) {
     let down = null;
-    // The pointer's move on the screen, not on the canvas: the page may reflow between (a panel fills).
-    scene.canvas.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; });
+    // The pointer's move on the screen, not on the canvas: the page may reflow
+    // between (a panel fills); the point picked is the one pressed on.
+    scene.canvas.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY, e.offsetX, e.offsetY]; });
     scene.canvas.addEventListener("pointerup", (e) => {
       if (!down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
-      const point = scene.pick(e.offsetX, e.offsetY), picked = $("#picked");
+      const point = scene.pick(down[2], down[3]), picked = $("#picked");
       if (!point) { picked.textContent = "no point there: click on the cloud"; return; }
       const range = Math.hypot(...point);
       Object.assign(picked.dataset, { x: point[0], y: point[1], z: point[2], range });
