@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <thread>
 
@@ -48,7 +49,7 @@ std::vector<std::string> LocalIpv4Addresses() {
   return addresses;
 }
 
-GvcpPortClaim::GvcpPortClaim(const std::string& address, std::chrono::milliseconds wait)
+GvcpPortClaim::GvcpPortClaim(const std::string& address, std::chrono::milliseconds wait, const Waiting& waiting)
     : address_(address) {
   const auto local = LocalIpv4Addresses();
   if (std::find(local.begin(), local.end(), address) == local.end())
@@ -58,7 +59,13 @@ GvcpPortClaim::GvcpPortClaim(const std::string& address, std::chrono::millisecon
   lock_fd_ = open(path.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC, 0666);
   if (lock_fd_ < 0) throw CameraError("cannot open " + path + ": " + std::strerror(errno));
   const auto deadline = std::chrono::steady_clock::now() + wait;
-  while (flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+  for (bool told = false; flock(lock_fd_, LOCK_EX | LOCK_NB) != 0; told = true) {
+    if (!told && waiting && wait.count() > 0) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", wait.count() / 1000.0);
+      waiting("waiting up to " + std::string(seconds) + " s for " + address +
+              ": another fake camera serves there (it holds " + path + ")");
+    }
     if (std::chrono::steady_clock::now() >= deadline) {
       close(lock_fd_);
       throw CameraError("another fake camera serves at " + address + " (it holds " + path + ")");
@@ -84,6 +91,16 @@ void GvcpPortClaim::CheckPortFree() const {
                       (error == EADDRINUSE
                            ? std::string("is taken by another camera; ") + kAliasHint
                            : std::string(std::strerror(error))));
+}
+
+bool GvcpAddressFree(const std::string& address) {
+  try {
+    const GvcpPortClaim claim(address, std::chrono::milliseconds(0));
+    claim.CheckPortFree();
+    return true;
+  } catch (const CameraError&) {
+    return false;
+  }
 }
 
 }  // namespace ws

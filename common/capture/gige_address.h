@@ -11,6 +11,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,12 @@ std::vector<std::string> LocalIpv4Addresses();
 // Holds UDP port 3956 of one local address for one fake camera: an exclusive
 // lock file (/tmp/widestereo-gige-ADDRESS.lock), waited for up to `wait`, so
 // that fake cameras of concurrent processes (tests run in parallel) take
-// turns. Throws CameraError when the address is not local or the lock is not
-// free in time.
+// turns; `waiting`, if given, is told once what it waits for. Throws
+// CameraError when the address is not local or the lock is not free in time.
 class GvcpPortClaim {
  public:
-  GvcpPortClaim(const std::string& address, std::chrono::milliseconds wait);
+  using Waiting = std::function<void(const std::string& what)>;
+  GvcpPortClaim(const std::string& address, std::chrono::milliseconds wait, const Waiting& waiting = {});
   ~GvcpPortClaim();
   GvcpPortClaim(const GvcpPortClaim&) = delete;
   GvcpPortClaim& operator=(const GvcpPortClaim&) = delete;
@@ -40,5 +42,10 @@ class GvcpPortClaim {
   std::string address_;
   int lock_fd_ = -1;
 };
+
+// Whether a fake camera could serve at `address` now: a local address, no
+// other fake camera holding it and nothing bound to its UDP port 3956. A
+// moment's answer: another process may take it next.
+bool GvcpAddressFree(const std::string& address);
 
 }  // namespace ws

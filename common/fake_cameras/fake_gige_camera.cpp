@@ -59,7 +59,7 @@ struct FakeGigeCamera::Server {
 FakeGigeCamera::FakeGigeCamera(FakeGigeCameraConfig config, FrameSource source)
     : config_(Validated(std::move(config))),
       source_(std::move(source)),
-      claim_(config_.address, config_.address_wait) {
+      claim_(config_.address, config_.address_wait, config_.waiting) {
   Start();
 }
 

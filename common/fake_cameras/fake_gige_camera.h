@@ -37,6 +37,7 @@ struct FakeGigeCameraConfig {
   double trigger_poll_hz = 1000;
   // How long to wait for another process's fake camera to free the address.
   std::chrono::milliseconds address_wait{30000};
+  GvcpPortClaim::Waiting waiting;  // told once when it has to wait for the address
 };
 
 class FakeGigeCamera {

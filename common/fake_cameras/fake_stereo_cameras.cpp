@@ -44,6 +44,7 @@ FakeGigeCameraConfig FakeStereoCameras::CameraConfig(const FakeStereoCamerasConf
   camera.serial = side == Side::left ? config.left_serial : config.right_serial;
   camera.size = size_;
   camera.pixel_format = config.pixel_format;
+  camera.waiting = config.waiting;
   return camera;
 }
 

@@ -28,6 +28,7 @@ struct FakeStereoCamerasConfig {
   cv::Size size;  // empty: the size of the provider's first left image
   std::string pixel_format = "Mono8";
   double same_moment_ms = 40;  // under half the frame period
+  GvcpPortClaim::Waiting waiting;  // told when a camera waits for its address
 };
 
 class FakeStereoCameras {

@@ -92,7 +92,7 @@ void HealthNode::OnFrame(const widestereo::stereo_frame_t& frame) {
   const int64_t period_us = int64_t(config_.period_s * 1e6);
   if (frames_checked_ > 0 && last_check_utime_ != 0 && frame.utime - last_check_utime_ < period_us &&
       frame.utime >= last_check_utime_)
-    return;  // not due yet: the period is in message time
+    return process_.CountSkipped(channel::kStereoImages, "not due: one frame checked a period");  // message time
   Check(frame);
 }
 

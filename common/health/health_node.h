@@ -6,7 +6,8 @@
 //    forgets the matches of the one before); one larger than
 //    max_image_pixels is refused (rectify/calibration_size.h);
 //  - STEREO_IMAGES: a frame every `period_s` of message time (0: every
-//    frame) is rectified, matched (health/rectified_matches.h) and added to
+//    frame; the others are counted as skipped, by design) is rectified,
+//    matched (health/rectified_matches.h) and added to
 //    the verdict's window (health/verdict.h); CALIBRATION_HEALTH follows
 //    each checked frame. Frames before any calibration, and frames of
 //    another size, are counted (dropped, rejected);

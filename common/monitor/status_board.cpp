@@ -76,10 +76,10 @@ std::vector<std::string> Wrapped(const std::string& prefix, const std::string& t
 }
 
 // A process's latency budget: each stage's time per frame, median / p99.
-std::vector<std::string> StageLines(const widestereo::process_status_t& s, int cols) {
+std::vector<std::string> StageLines(const StatusBoard::ProcessRow& row, int cols) {
   std::vector<std::string> items;
-  for (const auto& t : s.stages)
-    items.push_back(t.stage + Format(" %.1f/%.1f", t.median_ms, t.p99_ms) + (&t == &s.stages.back() ? "" : ","));
+  for (size_t i = 0; i < row.stages.size(); ++i)
+    items.push_back(row.stages[i] + (i + 1 < row.stages.size() ? "," : ""));
   return Packed("    ms median/p99: ", items, cols);
 }
 
@@ -107,49 +107,68 @@ void StatusBoard::Add(const widestereo::cloud_stats_t& stats, int64_t received_u
   ++depth_->clouds;
 }
 
-std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condensed, int cols) const {
-  size_t width = 7;  // "PROCESS"
-  for (const auto& [key, entry] : processes_) width = std::max(width, Who(entry.latest).size());
-  const int w = int(width);
-  std::vector<std::string> lines;
-  lines.push_back(condensed ? Format("%-*s %-14s %7s %8s  %s", w, "PROCESS", "STATE", "PID", "UPTIME",
-                                     "IN / OUT / LOST / SKIPPED (newer frame) / REJECTED, all channels")
-                            : Format("%-*s %-14s %7s %8s  %-22s %9s %9s %8s %7s %8s %8s", w, "PROCESS", "STATE",
-                                     "PID", "UPTIME", "CHANNEL", "IN", "OUT", "RATE/s", "LOST", "SKIPPED",
-                                     "REJECTED"));
+std::vector<StatusBoard::ProcessRow> StatusBoard::Rows(int64_t now_us) const {
+  std::vector<ProcessRow> rows;
   for (const auto& [key, entry] : processes_) {
     const auto& s = entry.latest;
     const int64_t silent_us = now_us - entry.heard_us;
     if (silent_us > kForgetAfterUs) continue;
-    const bool gone = silent_us > kGoneAfterUs;
-    const bool ended = s.state == "exited" || s.state == "failed";
-    const std::string state = gone && !ended ? "gone" : s.state;
-    const std::string uptime = gone ? Format("gone %llds", (long long)(silent_us / 1000000)) : Format("%.0fs", s.uptime_s);
-    std::string line = Format("%-*s %-14.14s %7d %8s", w, Who(s).c_str(), state.c_str(), s.pid, uptime.c_str());
+    ProcessRow row;
+    row.who = Who(s);
+    row.pid = s.pid;
+    row.gone = silent_us > kGoneAfterUs;
+    row.ended = s.state == "exited" || s.state == "stopped" || s.state == "failed";
+    row.state = row.gone && !row.ended ? "gone" : s.state;
+    row.uptime = !row.gone ? Format("%.0fs", s.uptime_s)
+                 : Format(row.ended ? "ended %llds ago" : "gone %llds", (long long)(silent_us / 1000000));
+    for (const auto& c : s.channels)
+      row.channels.push_back({c.channel, c.received, c.published, c.dropped, c.skipped, c.rejected,
+                              row.gone ? -1 : Rate(c, s, entry.previous)});
+    if (!row.gone)
+      for (const auto& t : s.stages) row.stages.push_back(t.stage + Format(" %.1f/%.1f", t.median_ms, t.p99_ms));
+    row.last_error = s.last_error;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::vector<std::string> StatusBoard::ProcessLines(int64_t now_us, bool condensed, int cols) const {
+  const std::vector<ProcessRow> rows = Rows(now_us);
+  size_t width = 7;  // "PROCESS"
+  for (const auto& row : rows) width = std::max(width, row.who.size());
+  const int w = int(width);
+  std::vector<std::string> lines;
+  lines.push_back(condensed ? Format("%-*s %-14s %7s %8s  %s", w, "PROCESS", "STATE", "PID", "UPTIME",
+                                     "IN / OUT / LOST / SKIPPED (by design) / REJECTED, all channels")
+                            : Format("%-*s %-14s %7s %8s  %-22s %9s %9s %8s %7s %8s %8s", w, "PROCESS", "STATE",
+                                     "PID", "UPTIME", "CHANNEL", "IN", "OUT", "RATE/s", "LOST", "SKIPPED",
+                                     "REJECTED"));
+  for (const auto& row : rows) {
+    // The state whole (the process's own word), even past its column.
+    std::string line =
+        Format("%-*s %-14s %7d %8s", w, row.who.c_str(), row.state.c_str(), row.pid, row.uptime.c_str());
     if (condensed) {
-      int64_t in = 0, out = 0, lost = 0, skipped = 0, rejected = 0;
-      for (const auto& c : s.channels) {
-        in += c.received;
-        out += c.published;
-        lost += c.dropped;
-        skipped += c.skipped;
-        rejected += c.rejected;
+      ChannelRow total;
+      for (const auto& c : row.channels) {
+        total.in += c.in;
+        total.out += c.out;
+        total.lost += c.lost;
+        total.skipped += c.skipped;
+        total.rejected += c.rejected;
       }
-      line += Format("  %lld / %lld / %lld / %lld / %lld", (long long)in, (long long)out, (long long)lost,
-                     (long long)skipped, (long long)rejected);
+      line += Format("  %lld / %lld / %lld / %lld / %lld", (long long)total.in, (long long)total.out,
+                     (long long)total.lost, (long long)total.skipped, (long long)total.rejected);
     }
     lines.push_back(line);
     if (!condensed)
-      for (const auto& c : s.channels) {
-        const double rate = gone ? -1 : Rate(c, s, entry.previous);
+      for (const auto& c : row.channels)
         lines.push_back(Format("%-*s %-14s %7s %8s  %-22s %9lld %9lld %8s %7lld %8lld %8lld", w, "", "", "", "",
-                               c.channel.c_str(), (long long)c.received, (long long)c.published,
-                               rate < 0 ? "-" : Format("%.1f", rate).c_str(), (long long)c.dropped,
+                               c.channel.c_str(), (long long)c.in, (long long)c.out,
+                               c.rate < 0 ? "-" : Format("%.1f", c.rate).c_str(), (long long)c.lost,
                                (long long)c.skipped, (long long)c.rejected));
-      }
-    if (!condensed && !gone && !s.stages.empty())
-      for (const std::string& stage_line : StageLines(s, cols)) lines.push_back(stage_line);
-    if (!s.last_error.empty()) lines.push_back("    last error: " + s.last_error);
+    if (!condensed && !row.stages.empty())
+      for (const std::string& stage_line : StageLines(row, cols)) lines.push_back(stage_line);
+    if (!row.last_error.empty()) lines.push_back("    last error: " + row.last_error);
   }
   if (lines.size() == 1) lines.push_back("(no PROCESS_STATUS heard yet)");
   return lines;

@@ -4,7 +4,7 @@
 //
 // It stays true: a process whose heartbeats stopped (killed, its host gone)
 // is shown as gone after kGoneAfterUs, one that ended says so from its last
-// heartbeat ("exited", "failed"); names are never cut; frames skipped for a
+// heartbeat ("exited": its work done, "stopped": by a signal, "failed"); names are never cut; frames skipped for a
 // newer one (the newest-frame policy) are shown apart from frames lost; and
 // the table fits the screen it is given, condensing before it cuts.
 #pragma once
@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
@@ -30,6 +31,22 @@ struct Screen {
 
 class StatusBoard {
  public:
+  // One process as the tables show it (stereo-status's text, the page's HTML).
+  struct ChannelRow {
+    std::string channel;
+    int64_t in = 0, out = 0, lost = 0, skipped = 0, rejected = 0;
+    double rate = -1;  // messages per second; < 0: unknown
+  };
+  struct ProcessRow {
+    std::string who, state, uptime;  // state: "gone" once silent kGoneAfterUs
+    int pid = 0;
+    bool ended = false;  // its last heartbeat said so: exited, stopped or failed
+    bool gone = false;
+    std::vector<ChannelRow> channels;
+    std::vector<std::string> stages;  // "STAGE median/p99" (ms), while not gone
+    std::string last_error;
+  };
+
   // Each message with the time it was received (microseconds, the board's
   // own clock: the senders' clocks need not agree with it).
   void Add(const widestereo::process_status_t& status, int64_t received_us);
@@ -41,6 +58,8 @@ class StatusBoard {
   // rejections) and its latency budget (each stage's time per frame, median
   // and p99), then the depth, calibration and health lines, within `screen`.
   std::string Render(int64_t now_us, Screen screen = {}) const;
+  // Every process heard within the last kForgetAfterUs, by name.
+  std::vector<ProcessRow> Rows(int64_t now_us) const;
 
  private:
   struct Entry {

@@ -192,7 +192,8 @@ int Process::Run() {
 int Process::Finish() {
   for (auto& fn : at_exit_) fn();
   at_exit_.clear();
-  PublishStatus(exit_code_ ? "failed" : "exited");  // the last heartbeat says it ends
+  // The last heartbeat says it ends, and how: its work done, or stopped by a signal.
+  PublishStatus(exit_code_ ? "failed" : StopRequested() ? "stopped" : "exited");
   log_.Detail("final: " + ProgressLine());
   ShowProgress();
   log_.Info(exit_code_ ? "exiting on error" : StopRequested() ? "stopped" : "done");
@@ -266,7 +267,7 @@ void Process::HandleRejected(const std::string& channel, const std::string& why)
 // anew) starts the count again; one that jumps further than kMaxFrameGap
 // either way (a sender's reset, a peer's forged id) does too, and is
 // reported, not counted as lost frames.
-void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
+void Process::CountFrameGap(const std::string& channel, int64_t frame_id, FrameGaps gaps) {
   constexpr uint64_t kMaxFrameGap = 1'000'000;  // 9 h at 30 Hz
   bool reset = false;
   int64_t last = 0;
@@ -277,8 +278,14 @@ void Process::CountFrameGap(const std::string& channel, int64_t frame_id) {
     if (it != last_frame_id_.end()) {
       last = it->second;
       const uint64_t missed = uint64_t(frame_id) - uint64_t(last) - 1;
-      if (missed < kMaxFrameGap) counters_[channel]->dropped += int64_t(missed - std::min(missed, skipped));
-      else reset = missed < uint64_t(-1) - kMaxFrameGap;  // not a repeat or a small step back
+      if (missed >= kMaxFrameGap) {
+        reset = missed < uint64_t(-1) - kMaxFrameGap;  // not a repeat or a small step back
+      } else if (const int64_t gap = int64_t(missed - std::min(missed, skipped)); gaps == FrameGaps::skipped) {
+        counters_[channel]->skipped += gap;
+        if (gap > 0) skip_reasons_[channel][kPassedOverUpstream] += gap;
+      } else {
+        counters_[channel]->dropped += gap;
+      }
     }
     last_frame_id_[channel] = frame_id;
   }

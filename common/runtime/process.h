@@ -53,11 +53,17 @@ struct ChannelCounters {
 
 class Process {
  public:
-  // Whether a subscription counts the frame ids missing between its
-  // messages as dropped: not on a channel that by design carries only some
-  // frames (CLOUD_STATS read by stereo-match: the clouds of the pairs it
-  // matched, not those it skipped).
-  enum class FrameGaps { count, ignore };
+  // What the frame ids missing between a subscription's messages are:
+  //  - count: lost (dropped), on a channel that carries every frame;
+  //  - skipped: passed over by the sender by design, on a channel that
+  //    carries only the frames a newest-frame or once-a-second sender
+  //    looked at (STEREO_CORNERS, CALIBRATION_HEALTH): counted as skipped,
+  //    reason kPassedOverUpstream (a message lost in transit there cannot
+  //    be told from one not sent, and is counted so too);
+  //  - ignore: not counted at all (CLOUD_STATS read by stereo-match as
+  //    acknowledgements).
+  enum class FrameGaps { count, skipped, ignore };
+  static constexpr const char* kPassedOverUpstream = "passed over by the sender";
 
   // Opens the text log, the rig key (if any) and both LCM URLs; throws
   // std::runtime_error with the reason when one cannot be opened.
@@ -106,7 +112,9 @@ class Process {
 
   // Handles input until the end of a file:// input or a stop, then Finish().
   int Run();
-  // The last heartbeat and log line; returns the exit code. For processes
+  // The last heartbeat (state "exited": its work done; "stopped": by SIGINT
+  // or SIGTERM, its log's last line "stopped"; "failed") and log line;
+  // returns the exit code. For processes
   // that run their own loop (stereo-capture) instead of Run().
   int Finish();
   // Heartbeat, timers and progress; for processes that run their own loop.
@@ -163,7 +171,7 @@ class Process {
   void ShowProgress();
   // State, per-channel counters and the process's own progress, on one line.
   std::string ProgressLine();
-  void CountFrameGap(const std::string& channel, int64_t frame_id);
+  void CountFrameGap(const std::string& channel, int64_t frame_id, FrameGaps gaps);
   // Counts a message skipped before it was decoded (SubscribeSampled).
   void SkipUndecoded(const std::string& channel);
 
@@ -245,7 +253,7 @@ void Process::SubscribeSampled(const std::string& channel, std::function<bool()>
             if (self->auth_)
               self->auth_->Check(ch, msg, static_cast<const uint8_t*>(rbuf->data), rbuf->data_size, self->Now());
           if constexpr (detail::HasFrameId<Msg>::value)
-            if (ctx->gaps == FrameGaps::count) self->CountFrameGap(ch, msg.frame_id);
+            if (ctx->gaps != FrameGaps::ignore) self->CountFrameGap(ch, msg.frame_id, ctx->gaps);
           if (ctx->due && self->file_input_ && !ctx->due()) {
             self->Counters(ch).skipped++;
             return;

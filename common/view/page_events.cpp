@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -60,6 +61,13 @@ Blob Jpeg(const cv::Mat& image, int max_width) {
   return jpeg;
 }
 
+std::string Arrived(std::string event, int64_t at_us) {
+  if (event.size() < 2 || event.front() != '{' || event.back() != '}')
+    throw std::logic_error("an event is a JSON object");
+  event.insert(event.size() - 1, std::string(event.size() > 2 ? "," : "") + "\"at_us\":" + std::to_string(at_us));
+  return event;
+}
+
 std::string FrameEvent(const widestereo::stereo_frame_t& frame, int max_width, BlobStore& blobs) {
   json event = {
       {"frame_id", frame.frame_id}, {"utime", frame.utime}, {"left", Image(frame.left, max_width, blobs)}};
@@ -107,6 +115,31 @@ std::string ResultEvent(const widestereo::calibration_result_t& result) {
                        {"residual_rms_px", Rows(c.residual_rms_px)},
                        {"uncertainty_px", Rows(c.uncertainty_px)}});
   return json{{"utime", result.utime}, {"chosen", result.chosen}, {"models", models}, {"cameras", cameras}}.dump();
+}
+
+std::string CalibrationEvent(const widestereo::stereo_calibration_t& calibration, const std::string& source) {
+  json cameras = json::array();
+  for (const auto* c : {&calibration.left, &calibration.right}) {
+    if (c->image_width <= 0) continue;  // a one-camera rig
+    cameras.push_back({{"name", c->name},
+                       {"width", c->image_width},
+                       {"height", c->image_height},
+                       {"model", c->model},
+                       {"K", {{c->fx, 0, c->cx}, {0, c->fy, c->cy}, {0, 0, 1}}},
+                       {"coeffs", c->coeffs},
+                       {"p1", c->p1},
+                       {"p2", c->p2},
+                       {"rms", Figure(c->rms)}});
+  }
+  json R = json::array();
+  for (int r = 0; r < 3; ++r) R.push_back({calibration.R[3 * r], calibration.R[3 * r + 1], calibration.R[3 * r + 2]});
+  const auto& T = calibration.T;
+  return json{{"source", source},
+              {"cameras", cameras},
+              {"R", R},
+              {"T", {T[0], T[1], T[2]}},
+              {"baseline", std::sqrt(T[0] * T[0] + T[1] * T[1] + T[2] * T[2])}}
+      .dump();
 }
 
 std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat& right, int max_width,

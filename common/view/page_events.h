@@ -20,6 +20,7 @@
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
+#include "widestereo/stereo_calibration_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
 namespace ws::view {
@@ -36,6 +37,11 @@ std::string CornersEvent(const widestereo::stereo_corners_t& corners);
 std::string CoverageEvent(const widestereo::calibration_status_t& status);
 // Topic "result": the model table, the chosen model, its maps.
 std::string ResultEvent(const widestereo::calibration_result_t& result);
+// Topic "calibration": the calibration in use (`source`: where it came
+// from): each camera's model, K (fx, fy, cx, cy), its distortion
+// coefficients (the B-spline's alpha, or k1..kn) and p1, p2; R, T and the
+// baseline |T|.
+std::string CalibrationEvent(const widestereo::stereo_calibration_t& calibration, const std::string& source);
 // Topic "rectified": the rectified pair of a frame (rows are epipolar lines).
 std::string RectifiedEvent(int64_t frame_id, const cv::Mat& left, const cv::Mat& right, int max_width,
                            BlobStore& blobs);
@@ -47,6 +53,10 @@ std::string CloudEvent(const widestereo::point_cloud_t& cloud, int max_points, B
 std::string CloudStatsEvent(const widestereo::cloud_stats_t& stats);
 // Topic "health": stereo-health's verdict and |dy| figures.
 std::string HealthEvent(const widestereo::calibration_health_t& health);
+
+// `event` (a JSON object) with "at_us": when stereo-view received what it
+// shows (its own clock), so that the page can show its age.
+std::string Arrived(std::string event, int64_t at_us);
 
 // An 8-bit image (gray or BGR) scaled to at most max_width across, as a JPEG blob.
 Blob Jpeg(const cv::Mat& image, int max_width);

@@ -34,6 +34,32 @@ void Guarded(Process& process, const char* channel, Fn fn) {
   }
 }
 
+// The process table, for the page to draw as HTML.
+nlohmann::json ProcessTable(const std::vector<StatusBoard::ProcessRow>& rows) {
+  nlohmann::json table = nlohmann::json::array();
+  for (const auto& row : rows) {
+    nlohmann::json channels = nlohmann::json::array();
+    for (const auto& c : row.channels)
+      channels.push_back({{"channel", c.channel},
+                          {"in", c.in},
+                          {"out", c.out},
+                          {"rate", c.rate < 0 ? nlohmann::json() : nlohmann::json(c.rate)},
+                          {"lost", c.lost},
+                          {"skipped", c.skipped},
+                          {"rejected", c.rejected}});
+    table.push_back({{"who", row.who},
+                     {"state", row.state},
+                     {"pid", row.pid},
+                     {"uptime", row.uptime},
+                     {"ended", row.ended},
+                     {"gone", row.gone},
+                     {"channels", channels},
+                     {"stages", row.stages},
+                     {"last_error", row.last_error}});
+  }
+  return table;
+}
+
 }  // namespace
 
 ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audience& audience,
@@ -47,11 +73,13 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
         Guarded(process_, channel::kStereoDisparity,
-                [&] { hub_.Publish("disparity", DisparityEvent(d, options_.max_width, blobs_)); });
+                [&] { Show("disparity", DisparityEvent(d, options_.max_width, blobs_)); });
       })),
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
-        hub_.Publish("cloud", CloudEvent(c, options_.cloud_points, blobs_));
-      })) {}
+        Show("cloud", CloudEvent(c, options_.cloud_points, blobs_));
+      })) {
+  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6);
+}
 
 ViewNode::~ViewNode() = default;
 
@@ -62,6 +90,7 @@ void ViewNode::SetRig(const Rig& rig, const std::string& source) {
     rig_source_ = source;
     rect_.reset();  // rebuilt by the frame thread for the next frame
   }
+  Show("calibration", CalibrationEvent(MessageFromRig(rig, 0), source));
   process_.log().Info("depth view: rectifying with " + source);
 }
 
@@ -102,6 +131,12 @@ Rectification ShownRectification(const Rig& rig, int max_width) {
   return rect;
 }
 
+int64_t ViewNode::Clock() const { return process_.file_input() ? process_.Now() : WallMicros(); }
+
+void ViewNode::Show(const std::string& topic, std::string event) {
+  hub_.Publish(topic, Arrived(std::move(event), Clock()));
+}
+
 bool ViewNode::Due(int64_t& last_us) {
   const int64_t now = process_.Now();
   if (last_us != INT64_MIN && now - last_us < int64_t(1e6 / options_.image_hz)) return false;
@@ -112,7 +147,7 @@ bool ViewNode::Due(int64_t& last_us) {
 void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
   Guarded(process_, channel::kStereoImages, [&] {
     if (audience_.Watching(PageView::kCalibration)) {
-      std::string event = FrameEvent(frame, options_.max_width, blobs_);
+      std::string event = Arrived(FrameEvent(frame, options_.max_width, blobs_), Clock());
       {
         std::lock_guard<std::mutex> lock(recent_mutex_);
         recent_[frame.frame_id] = event;
@@ -133,11 +168,13 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
     const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
     cv::Mat left_rect, right_rect;
     RectifyPair(*rect, left, right, &left_rect, &right_rect);
-    hub_.Publish("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width, blobs_));
+    Show("rectified", RectifiedEvent(frame.frame_id, left_rect, right_rect, options_.max_width, blobs_));
   });
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
+  if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
+    Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
   const auto frame = recent_.find(corners.frame_id);
   if (frame != recent_.end())
@@ -160,51 +197,87 @@ void ViewNode::PublishView() {
     std::lock_guard<std::mutex> lock(rig_mutex_);
     rig = rig_source_;
   }
-  const int64_t now = process_.file_input() ? process_.Now() : WallMicros();
+  const int64_t now = Clock();
+  if (recording_ && recording_->Check(now)) process_.ReportError(recording_->StoppedText());  // stereo-status shows it
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},
                                         {"counters", counters},
-                                        {"table", board_.Render(now)}}
+                                        {"now_us", now},
+                                        {"first_view", options_.first_view},
+                                        {"freshness", freshness_.Json(now)},
+                                        {"recording", recording_ ? recording_->Json() : nlohmann::json()},
+                                        {"processes", ProcessTable(board_.Rows(now))}}
                              .dump());
 }
 
 template <class Msg>
 void ViewNode::SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us,
-                                NewestFirst<Msg>& stage) {
+                                NewestFirst<Msg>& stage, Process::FrameGaps gaps) {
   process_.SubscribeSampled<Msg>(
-      channel, [this, views, &last_us] { return audience_.Watching(views) && Due(last_us); },
+      channel,
+      [this, channel, views, &last_us] {
+        freshness_.Heard(channel, Clock());  // asked once for every message that comes
+        return audience_.Watching(views) && Due(last_us);
+      },
       [&stage](Msg& msg) { stage.Offer(std::move(msg)); },
-      2);  // LCM's queue holds two big messages at most: the stage takes the newest
+      2,  // LCM's queue holds two big messages at most: the stage takes the newest
+      gaps);
+}
+
+template <class Msg>
+void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
+                              Process::FrameGaps gaps) {
+  process_.Subscribe<Msg>(
+      channel,
+      [this, channel, show = std::move(show)](const Msg& msg) {
+        freshness_.Heard(channel, Clock());
+        show(msg);
+      },
+      0, gaps);
 }
 
 void ViewNode::Start() {
   const bool live = !process_.file_input();
-  auto received = [this] { return process_.file_input() ? process_.Now() : WallMicros(); };
   const Audience::Views both, depth{/*calibration=*/false, /*depth=*/true};
+  // The channels that carry only the frames their sender looked at (a
+  // newest-frame stage, a once-a-second check): gaps there are skips by
+  // design, not losses (runtime/process.h).
+  constexpr auto sparse = Process::FrameGaps::skipped;
   SubscribeSampled(channel::kStereoImages, both, last_frame_us_, frames_);
-  process_.Subscribe<widestereo::stereo_corners_t>(
-      channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); });
-  process_.Subscribe<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
+  SubscribeShown<widestereo::stereo_corners_t>(
+      channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
+  SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
-    hub_.Publish("coverage", CoverageEvent(m));
+    if (m.views_left + m.views_right < views_) {  // stereo-calibrate was reset: its views are gone
+      spread_.Clear();
+      Show("spread", spread_.Json().dump());
+    }
+    views_ = m.views_left + m.views_right;
+    Show("coverage", CoverageEvent(m));
   });
   process_.Subscribe<widestereo::calibration_result_t>(
-      channel::kCalibrationResult, [this](const auto& m) { hub_.Publish("result", ResultEvent(m)); });
+      channel::kCalibrationResult, [this](const auto& m) { Show("result", ResultEvent(m)); });
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(RigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });
-  SubscribeSampled(channel::kStereoDisparity, depth, last_disparity_us_, disparities_);
-  SubscribeSampled(channel::kStereoCloudFiltered, depth, last_cloud_us_, clouds_);
-  process_.Subscribe<widestereo::cloud_stats_t>(channel::kCloudStats, [this, received](const auto& m) {
-    board_.Add(m, received());
-    hub_.Publish("cloud_stats", CloudStatsEvent(m));
-  });
-  process_.Subscribe<widestereo::calibration_health_t>(channel::kCalibrationHealth, [this](const auto& m) {
-    board_.Add(m);
-    hub_.Publish("health", HealthEvent(m));
-  });
+  SubscribeSampled(channel::kStereoDisparity, depth, last_disparity_us_, disparities_, sparse);
+  SubscribeSampled(channel::kStereoCloudFiltered, depth, last_cloud_us_, clouds_, sparse);
+  SubscribeShown<widestereo::cloud_stats_t>(
+      channel::kCloudStats,
+      [this](const auto& m) {
+        board_.Add(m, Clock());
+        Show("cloud_stats", CloudStatsEvent(m));
+      },
+      sparse);
+  SubscribeShown<widestereo::calibration_health_t>(
+      channel::kCalibrationHealth,
+      [this](const auto& m) {
+        board_.Add(m);
+        Show("health", HealthEvent(m));
+      },
+      sparse);
   process_.Subscribe<widestereo::process_status_t>(
-      channel::kProcessStatus, [this, received](const auto& m) { board_.Add(m, received()); });
+      channel::kProcessStatus, [this](const auto& m) { board_.Add(m, Clock()); });
   process_.Every(1000000, [this] { PublishView(); });
   if (live) PublishView();
 }

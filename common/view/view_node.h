@@ -4,12 +4,17 @@
 //  - STEREO_IMAGES at most `image_hz` (JPEG, both images; with a calibration
 //    also the rectified pair); STEREO_CORNERS with the image they were found
 //    in (when that frame was one of the last kRecentFrames shown: the
-//    corners of other frames are not drawn), CALIBRATION_STATUS,
+//    corners of other frames are not drawn), and every board's measures
+//    (view/board_spread.h: camera_calibration's bars), CALIBRATION_STATUS,
 //    CALIBRATION_RESULT: the calibration view;
+//  - STEREO_CALIBRATION (and --calib): the calibration in use, K, the
+//    distortion, R, T, the baseline;
 //  - STEREO_DISPARITY (colours and legend, at most image_hz),
 //    STEREO_CLOUD_FILTERED (at most image_hz), CLOUD_STATS,
 //    CALIBRATION_HEALTH: the depth view;
-//  - PROCESS_STATUS and the rest: stereo-status's table, every second.
+//  - PROCESS_STATUS and the rest: stereo-status's table, every second, with
+//    each channel's freshness (view/freshness.h); every event carries when
+//    it was received (view/page_events.h Arrived).
 //
 // The images, disparities and clouds are turned into events on threads of
 // their own (runtime/newest_first.h), so the input thread only hands them
@@ -36,8 +41,11 @@
 #include "runtime/process.h"
 #include "view/audience.h"
 #include "view/blob_store.h"
+#include "view/board_spread.h"
 #include "view/event_hub.h"
+#include "view/freshness.h"
 #include "view/page_events.h"
+#include "view/recording_watch.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -48,6 +56,9 @@ struct ViewOptions {
   double image_hz = 3;      // images, disparities and clouds shown per second at most
   int max_width = 640;      // pixels across of the images sent to the page
   int cloud_points = 20000; // points of a cloud sent to the page at most
+  std::string first_view = "calibration";  // the tab a page opens on (the launch's purpose)
+  std::string recording;        // the launch's LCM log ("": none), its size shown against...
+  double recording_cap_mb = 500;  // ...the size at which the launcher stops it
 };
 
 // The pseudo-channel of PROCESS_STATUS counting the page's events: published
@@ -77,12 +88,21 @@ class ViewNode {
  private:
   static constexpr size_t kRecentFrames = kFramesKept;  // view/page_events.h
 
+  // stereo-view's clock: the wall clock live, the log's from a file.
+  int64_t Clock() const;
+  // Publishes an event stamped with when it was made (view/page_events.h Arrived).
+  void Show(const std::string& topic, std::string event);
   bool Due(int64_t& last_us);
   // Hands a message of `channel` to `stage` when a browser shows one of
   // `views` and at least 1 / image_hz has passed since `last_us`; else
-  // counts it as skipped.
+  // counts it as skipped. Every message is heard (freshness_).
   template <class Msg>
-  void SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us, NewestFirst<Msg>& stage);
+  void SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us, NewestFirst<Msg>& stage,
+                        Process::FrameGaps gaps = Process::FrameGaps::count);
+  // Subscribes `show` to `channel`, every message heard (freshness_).
+  template <class Msg>
+  void SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
+                      Process::FrameGaps gaps = Process::FrameGaps::count);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
   void PublishView();
@@ -93,6 +113,10 @@ class ViewNode {
   const Audience& audience_;
   ViewOptions options_;
   StatusBoard board_;
+  Freshness freshness_;
+  std::optional<RecordingWatch> recording_;
+  BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
+  int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)
   std::optional<Rig> rig_;

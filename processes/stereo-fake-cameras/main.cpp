@@ -1,6 +1,7 @@
 // stereo-fake-cameras: a simulated stereo rig served as two real GigE Vision
 // cameras on this host (Aravis's camera simulator), for
 // stereo-capture --source aravis:Aravis-Fake-LEFT,Aravis-Fake-RIGHT.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -29,13 +30,16 @@ cv::Size ParseSize(const std::string& text) {
   return {width, height};
 }
 
-// "auto" addresses become this host's first two IPv4 addresses (gige_address.h).
+// "auto" addresses become this host's first IPv4 addresses (gige_address.h)
+// where no other camera serves; when too few are free, the next ones, whose
+// camera then says what it waits for.
 void ResolveAddresses(ws::FakeStereoCamerasConfig* config) {
   const std::vector<std::string> local = ws::LocalIpv4Addresses();
   std::vector<std::string> unused;
   for (const std::string& address : local)
     if (address != config->left_address && address != config->right_address)
       unused.push_back(address);
+  std::stable_partition(unused.begin(), unused.end(), ws::GvcpAddressFree);
   for (std::string* address : {&config->left_address, &config->right_address}) {
     if (*address != "auto") continue;
     if (unused.empty())
@@ -90,6 +94,7 @@ int main(int argc, char** argv) {
   try {
     ws::Process process(cli.options());
     config.size = ParseSize(size);
+    config.waiting = [&process](const std::string& what) { process.log().Info(what); };
     ResolveAddresses(&config);
     const cv::Size pattern_size = config.size.empty() ? kPatternSize : config.size;
     ws::FakeStereoCameras cameras(config, ws::MakeFrameProvider(frames, pattern_size));

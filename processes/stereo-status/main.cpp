@@ -42,12 +42,15 @@ int main(int argc, char** argv) {
     auto received = [&] { return process.file_input() ? process.Now() : ws::WallMicros(); };
     process.Subscribe<widestereo::process_status_t>(
         ws::channel::kProcessStatus, [&](const auto& m) { board.Add(m, received()); });
-    process.Subscribe<widestereo::cloud_stats_t>(ws::channel::kCloudStats,
-                                                 [&](const auto& m) { board.Add(m, received()); });
+    // CLOUD_STATS and CALIBRATION_HEALTH carry only the frames their senders
+    // looked at: their frame-id gaps are skips by design, not losses.
+    constexpr auto sparse = ws::Process::FrameGaps::skipped;
+    process.Subscribe<widestereo::cloud_stats_t>(
+        ws::channel::kCloudStats, [&](const auto& m) { board.Add(m, received()); }, 0, sparse);
     process.Subscribe<widestereo::calibration_status_t>(
         ws::channel::kCalibrationStatus, [&](const auto& m) { board.Add(m); });
     process.Subscribe<widestereo::calibration_health_t>(
-        ws::channel::kCalibrationHealth, [&](const auto& m) { board.Add(m); });
+        ws::channel::kCalibrationHealth, [&](const auto& m) { board.Add(m); }, 0, sparse);
     const bool tty = isatty(STDOUT_FILENO);
     auto show = [&] {
       std::printf("%s%s", tty ? "\033[H\033[2J" : "", board.Render(received(), TerminalScreen()).c_str());

@@ -48,6 +48,16 @@ int main(int argc, char** argv) {
   app.add_option("--cloud-points", options.cloud_points, "Points of a cloud sent to the page, at most")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+  app.add_option("--first-view", options.first_view,
+                 "The tab a page opens on until its user picks one: calibration, or depth (the run launch)")
+      ->check(CLI::IsMember({"calibration", "depth"}))
+      ->capture_default_str();
+  app.add_option("--recording", options.recording,
+                 "The launch's LCM log: the page shows its size and says when it reached --recording-cap-mb "
+                 "(the launcher stops recording there); stereo-status says it too, as stereo-view's last error");
+  app.add_option("--recording-cap-mb", options.recording_cap_mb, "The recording's cap (the launch's max_log_mb)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--three-dir", three_dir, "Folder of three.js (Debian's libjs-three)")->capture_default_str();
   int niceness = 10;
   app.add_option("--nice", niceness,

@@ -5,7 +5,8 @@
 //   GET  /                 the page
 //   GET  /events?view=V    the event stream of a page showing view V
 //                          (calibration or depth; none: both), 400 for another
-//   GET  /view.js, /view.css, /three.min.js, /OrbitControls.js
+//   GET  /view.js, /view.css, /cloud3d.js, /freshness.js, /process_table.js,
+//        /three.min.js, /OrbitControls.js
 //   GET  /blob/ID          an image or a cloud an event names (view/blob_store.h);
 //                          404 once forgotten
 //   POST /command          {"command": "solve"}: 403 with the reason when

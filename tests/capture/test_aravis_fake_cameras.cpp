@@ -254,16 +254,27 @@ TEST_F(FakeCameras, AnAddressServesOneCameraAtATime) {
   ws::FakeGigeCameraConfig config;
   config.address = addresses_[0];
   config.serial = Serial("A");
-  ws::FakeGigeCamera first(config, black);
-  config.serial = Serial("B");
-  config.address_wait = 100ms;
-  try {
-    ws::FakeGigeCamera second(config, black);
-    ADD_FAILURE() << "two cameras at " << config.address;
-  } catch (const ws::CameraError& e) {
-    EXPECT_NE(std::string(e.what()).find("another fake camera serves at"), std::string::npos)
-        << e.what();
+  {
+    ws::FakeGigeCamera first(config, black);
+    EXPECT_FALSE(ws::GvcpAddressFree(config.address)) << "stereo-fake-cameras' auto passes it over";
+    config.serial = Serial("B");
+    config.address_wait = 100ms;
+    std::vector<std::string> told;
+    config.waiting = [&told](const std::string& what) { told.push_back(what); };
+    try {
+      ws::FakeGigeCamera second(config, black);
+      ADD_FAILURE() << "two cameras at " << config.address;
+    } catch (const ws::CameraError& e) {
+      EXPECT_NE(std::string(e.what()).find("another fake camera serves at"), std::string::npos)
+          << e.what();
+    }
+    ASSERT_EQ(told.size(), 1u) << "it says once what it waits for";
+    EXPECT_NE(told[0].find("waiting up to 0.1 s for " + config.address + ": another fake camera serves there"),
+              std::string::npos)
+        << told[0];
   }
+  EXPECT_TRUE(ws::GvcpAddressFree(config.address)) << "free again once the camera has gone";
+  config.waiting = nullptr;
   config.address = "192.0.2.254";  // TEST-NET-1, not ours
   EXPECT_THROW(ws::FakeGigeCamera(config, black), ws::CameraError);
 }

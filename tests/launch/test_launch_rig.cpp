@@ -8,6 +8,7 @@
 
 #include "launch_fixture.h"
 #include "lcm_io/channels.h"
+#include "lcm_io/lcm_log.h"
 #include "widestereo/disparity_t.hpp"
 
 namespace {
@@ -82,6 +83,31 @@ TEST(LaunchRig, RecordingStopsAtMaxLogMbAndTheProcessesGoOn) {
   EXPECT_NE(record.find("recording stopped: " + run_dir + "/calibrate.lcmlog reached"), std::string::npos) << record;
   EXPECT_LT(fs::file_size(run_dir + "/calibrate.lcmlog"), 30u * 1000 * 1000);
   EXPECT_NE(record.find("stereo-capture stopped (code 0)"), std::string::npos) << record;
+}
+
+// A rolling recording never stops: the newest max_log_mb in ten files
+// (each split once past a tenth of it, so one message more at most), each a
+// complete log, the oldest deleted.
+TEST(LaunchRig, ARollingRecordingKeepsTheNewestMaxLogMb) {
+  const std::string run_dir = TempDir("launch-rolling");
+  const CommandResult r = RunCommand(
+      LaunchCommand("config/launch/calibrate.yaml", UniqueUdpmUrl(2) + "&recv_buf_size=16777216", run_dir,
+                    {"--max-log-mb", "3", "--rolling-log", "--duration", "10", "--set", "stereo-capture.rate=3"}),
+      90);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string record = LaunchLog(run_dir);
+  EXPECT_EQ(record.find("recording stopped"), std::string::npos) << record;
+  EXPECT_NE(record.find("a rolling window of the last 3 MB"), std::string::npos) << record;
+  const std::string log = run_dir + "/calibrate.lcmlog";
+  EXPECT_TRUE(fs::exists(log + ".1")) << "a new file once one passed 0.3 MB";
+  EXPECT_FALSE(fs::exists(log + ".10")) << "ten files at most: the oldest deleted";
+  EXPECT_FALSE(fs::exists(log));
+  for (int i = 0; i <= 9; ++i) {
+    const std::string file = log + "." + std::to_string(i);
+    if (!fs::exists(file)) continue;
+    EXPECT_TRUE(ws::ScanLcmLog(file).complete()) << file;
+    EXPECT_LT(fs::file_size(file), 6u * 1000 * 1000) << file << ": 0.3 MB and one message at most";
+  }
 }
 
 }  // namespace

@@ -83,7 +83,9 @@ TEST(StatusBoard, SilentProcessesAreGoneAndEndedOnesSaySo) {
   board.Add(Status("stereo-detect", 1), 0);
   board.Add(Status("stereo-match", 2, "exited"), 0);
   board.Add(Status("stereo-cloud", 3), 9000000);
+  board.Add(Status("stereo-capture", 4, "stopped"), 0);  // by a signal: not "gone", not "exited"
   const std::string table = board.Render(10000000);
+  EXPECT_NE(LineWith(table, "stereo-capture@").find("stopped"), std::string::npos) << table;
   EXPECT_NE(LineWith(table, "stereo-detect@").find("gone"), std::string::npos) << table;
   EXPECT_NE(LineWith(table, "stereo-match@").find("exited"), std::string::npos) << table;
   EXPECT_NE(LineWith(table, "stereo-cloud@").find("running"), std::string::npos) << table;

@@ -57,13 +57,15 @@ TEST(ProcessLcm, ReplaysAFileLogToItsEndAndCountsRejections) {
   EXPECT_EQ(c.rejected, 3);
 }
 
-// A subscription on a channel that carries only some frames by design
-// counts no frame-id gap as lost; one that does not, does.
-TEST(ProcessLcm, ASubscriptionThatIgnoresFrameGapsCountsNoneAsDropped) {
+// A subscription on a channel that carries every frame counts a frame-id
+// gap as lost; one on a channel that carries only the frames its sender
+// looked at counts it as skipped, with the reason; one that ignores gaps
+// counts none.
+TEST(ProcessLcm, FrameGapsAreLostSkippedOrIgnoredAsTheSubscriptionSays) {
   const std::string dir = TempDir("frame-gaps");
   std::vector<LogEvent> events;
   for (int64_t id : {1, 2, 5, 9})
-    for (const char* channel : {"COUNTED", "SOME_FRAMES"}) {
+    for (const char* channel : {"COUNTED", "SPARSE", "SOME_FRAMES"}) {
       widestereo::stereo_frame_t frame{};
       frame.frame_id = id;
       frame.utime = 1000000 * id;
@@ -77,16 +79,27 @@ TEST(ProcessLcm, ASubscriptionThatIgnoresFrameGapsCountsNoneAsDropped) {
   options.out_url = "file://" + dir + "/out.lcmlog?mode=w";
   options.log_dir = dir;
   options.quiet = true;
-  ws::Process process(options);
-  int handled = 0;
-  process.Subscribe<widestereo::stereo_frame_t>("COUNTED", [&](widestereo::stereo_frame_t&) { ++handled; });
-  process.Subscribe<widestereo::stereo_frame_t>(
-      "SOME_FRAMES", [&](widestereo::stereo_frame_t&) { ++handled; }, 0, ws::Process::FrameGaps::ignore);
-  ASSERT_EQ(process.Run(), 0);
-  EXPECT_EQ(handled, 8);
-  EXPECT_EQ(process.Counters("COUNTED").dropped.load(), 5) << "3, 4, 6, 7 and 8";
-  EXPECT_EQ(process.Counters("SOME_FRAMES").dropped.load(), 0);
-  EXPECT_EQ(process.Counters("SOME_FRAMES").received.load(), 4);
+  {
+    ws::Process process(options);
+    int handled = 0;
+    using Gaps = ws::Process::FrameGaps;
+    auto count = [&](widestereo::stereo_frame_t&) { ++handled; };
+    process.Subscribe<widestereo::stereo_frame_t>("COUNTED", count);
+    process.Subscribe<widestereo::stereo_frame_t>("SPARSE", count, 0, Gaps::skipped);
+    process.Subscribe<widestereo::stereo_frame_t>("SOME_FRAMES", count, 0, Gaps::ignore);
+    ASSERT_EQ(process.Run(), 0);
+    EXPECT_EQ(handled, 12);
+    EXPECT_EQ(process.Counters("COUNTED").dropped.load(), 5) << "3, 4, 6, 7 and 8";
+    EXPECT_EQ(process.Counters("COUNTED").skipped.load(), 0);
+    EXPECT_EQ(process.Counters("SPARSE").dropped.load(), 0);
+    EXPECT_EQ(process.Counters("SPARSE").skipped.load(), 5) << "3, 4, 6, 7 and 8, passed over by the sender";
+    EXPECT_EQ(process.Counters("SOME_FRAMES").dropped.load(), 0);
+    EXPECT_EQ(process.Counters("SOME_FRAMES").skipped.load(), 0);
+    EXPECT_EQ(process.Counters("SOME_FRAMES").received.load(), 4);
+  }
+  std::ifstream log(dir + "/gaps.log");  // the final line gives each skip's reason
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(std::string(ws::Process::kPassedOverUpstream) + " 5"), std::string::npos) << text;
 }
 
 TEST(ProcessLcm, EmptyInputLogEndsAtOnce) {

@@ -3,6 +3,7 @@ the simulated rig's processes on a bus of their own (udpm, ttl 0), lcm-logger
 recording it, and the page checked against what the bus carried."""
 import json
 import os
+import signal
 import socket
 import time
 import urllib.error
@@ -13,6 +14,7 @@ import numpy as np
 import pytest
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
 from view_support import CALIBRATION, free_port, key_file, until
@@ -77,6 +79,23 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > first, 180, "the coverage grows")
     screenshot(browser, bus, "calibration-collecting.png")
 
+    # camera_calibration's bars: x, y, size, skew of the boards found; "enough" lights Solve.
+    until(lambda: int(browser.find_element(By.ID, "spread-boards").text) > 1, 60, "boards measured")
+    bars = browser.execute_script(
+        "return [...document.querySelectorAll('#spread .track')].map(t => [t.dataset.name, +t.dataset.progress]);")
+    assert [name for name, _ in bars] == ["x", "y", "size", "skew"]
+    assert all(0 <= p <= 1 for _, p in bars) and any(p > 0 for _, p in bars), bars
+    filled = browser.execute_script(
+        "return Math.max(...[...document.querySelectorAll('#spread .fill')].map(f => f.getBoundingClientRect().width));")
+    assert filled > 10, "the bars are drawn filled, not only counted"
+    boards = int(browser.find_element(By.ID, "spread-boards").text)
+    views_stereo = browser.execute_script("return state.coverage && state.coverage.views_stereo")
+    enough = (all(p >= 1 for _, p in bars) or boards >= 40) and views_stereo > 0
+    until(lambda: attribute(browser, "#spread", "data-enough") == str(enough).lower() or
+          int(browser.find_element(By.ID, "spread-boards").text) != boards, 5, "enough as the bars say")
+    assert ("ready" in attribute(browser, "button[data-command=solve]", "class")) == \
+        (attribute(browser, "#spread", "data-enough") == "true")
+
     # Without the key: the buttons are disabled, say why, and the server sends nothing.
     browser.get(bus.page(open_port, readonly))
     until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
@@ -102,6 +121,14 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert float(row.get_attribute("data-left-rms")) == solved["cameras"][0]["rms_px"]
     maps = browser.find_elements(By.CSS_SELECTOR, "#maps canvas")
     assert len(maps) == 4, "residual and uncertainty maps of both cameras"
+    assert all(m.is_displayed() for m in maps)
+    # The solved calibration as the rig uses it: K, the distortion, R, T and the baseline.
+    until(lambda: attribute(browser, "#baseline", "data-metres"), 60, "the calibration in use")
+    assert float(attribute(browser, "#baseline", "data-metres")) == pytest.approx(solved["stereo"]["baseline_m"], rel=1e-9)
+    intrinsics = browser.find_elements(By.CSS_SELECTOR, "#intrinsics tbody tr")
+    assert [r.get_attribute("data-camera") for r in intrinsics] == ["left", "right"]
+    assert all(r.find_elements(By.TAG_NAME, "td")[1].text == solved["model"] for r in intrinsics)
+    screenshot(browser, bus, "calibration-solved-calibration.png")
 
     bus.stop()
     commands = bus.events("STEREO_COMMAND")
@@ -128,7 +155,25 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     browser.find_element(By.ID, "tab-depth").click()
     until(lambda: browser.find_elements(By.CSS_SELECTOR, "#legend span"), 60, "the disparity's legend")
     until(lambda: attribute(browser, "#cloud-points", "data-frame-id"), 60, "the cloud's statistics")
+    assert not browser.find_element(By.CSS_SELECTOR, "#cloud-stats-age + .waiting").is_displayed(), \
+        "what the panel waited for has come"
     until(lambda: attribute(browser, "#cloud", "data-shown"), 60, "the cloud in 3-D")
+    # As rviz: axes, a grid, both cameras' frustums; a clicked point's coordinates and range; the cloud's rate.
+    until(lambda: {"axes", "grid", "frustum-left", "frustum-right", "plane"} <=
+          set((attribute(browser, "#cloud", "data-helpers") or "").split()), 30, "axes, grid and frustums")
+    clicked = [0.0]
+
+    def click_and_pick():  # the page reflows as panels fill: a click may land off the cloud, so again after 2 s
+        if time.monotonic() - clicked[0] > 2:
+            ActionChains(browser).move_to_element(browser.find_element(By.CSS_SELECTOR, "#cloud canvas")).click().perform()
+            clicked[0] = time.monotonic()
+        return attribute(browser, "#picked", "data-range")
+    until(click_and_pick, 20, "the point under the click picked")
+    x, y, z, r = (float(attribute(browser, "#picked", "data-" + k)) for k in ("x", "y", "z", "range"))
+    assert r == pytest.approx((x * x + y * y + z * z) ** 0.5, rel=1e-9) and z > 0
+    assert "range" in browser.find_element(By.ID, "picked").text
+    until(lambda: "clouds/s" in browser.find_element(By.ID, "cloud-rate").text, 30, "the clouds' rate")
+    assert attribute(browser, "#cloud-figure .age", "data-age-s") is not None
     until(lambda: attribute(browser, "#rect-right canvas", "width") != "640" or
           "frame" in browser.find_element(By.CSS_SELECTOR, "#rect-right .info").text, 60, "the rectified pair")
     shown = browser.execute_script("""
@@ -206,3 +251,69 @@ def test_depth_view_shows_what_the_bus_carries_and_a_stalled_browser_costs_nothi
     rate = (sent[-1] - sent[0]) / ((captured[-1][0] - captured[0][0]) * 1e-6)
     assert received >= 0.8 * rate * window * 1e-6, (received, rate, window)
     assert images_after.dropped == images_before.dropped
+
+
+def shown(driver, selector):
+    return driver.find_element(By.CSS_SELECTOR, selector).is_displayed()
+
+
+@pytest.mark.recorded("PROCESS_STATUS")
+def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, browser):
+    capture = bus.start("stereo-capture", ["--source", "sim:config/sim/wall.yaml", "--rate", "3", "--loop"])
+    port = free_port()
+    recording = os.path.join(bus.folder, "launch.lcmlog")  # as the launcher passes its recording
+    view = bus.start("stereo-view", ["--port", str(port), "--calib", CALIBRATION, "--first-view", "depth",
+                                     "--recording", recording, "--recording-cap-mb", "0.001"])
+    browser.get(bus.page(port, view))
+
+    # The page opens on the launch's view; what it has not got explains itself.
+    until(lambda: "active" in attribute(browser, "#tab-depth", "class"), 30, "the depth tab, as --first-view says")
+    until(lambda: attribute(browser, "#connection", "data-state") == "live", 60, "live once images flow")
+    until(lambda: attribute(browser, "#rect-right .age", "data-age-s"), 60, "the rectified pair's age")
+    assert float(attribute(browser, "#rect-right .age", "data-age-s")) < 3
+    assert shown(browser, "#disparity-figure .empty") and not shown(browser, "#disparity"), \
+        "without stereo-match the disparity panel says why, and shows no broken image"
+    assert "stereo-match" in browser.find_element(By.CSS_SELECTOR, "#disparity-figure .empty").text
+    assert shown(browser, "#cloud-figure .empty")
+    assert "stereo-health publishes" in browser.find_element(By.CSS_SELECTOR, "#health-age + .waiting").text
+    # No banner while images flow (a loaded machine may starve the simulator for 3 s: then it is due).
+    until(lambda: not shown(browser, "#stale"), 20, "no stale banner while images flow")
+    screenshot(browser, bus, "depth-without-match.png")
+
+    # The source stops (SIGTERM: it exits 0): the banner names it, the page is not live, ages grow.
+    capture.send_signal(signal.SIGTERM)
+    assert capture.wait(timeout=20) == 0
+    stopped_at = time.time()
+    until(lambda: "STEREO_IMAGES" in (attribute(browser, "#stale", "data-channels") or ""), 30,
+          "the banner names STEREO_IMAGES as stale")
+    banner = browser.find_element(By.ID, "stale").text
+    assert "stereo-capture" in banner and "since" in banner, banner
+    assert attribute(browser, "#connection", "data-state") == "stale"
+    assert browser.find_element(By.ID, "connection").text != "live"
+    until(lambda: float(attribute(browser, "#rect-right .age", "data-age-s")) >= 3, 10, "the images' age grows")
+    assert "old" in attribute(browser, "#rect-right .age", "class")
+    # Its last heartbeat says how it ended: stopped, not done.
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-capture" and s.state == "stopped"],
+          10, "stereo-capture's last heartbeat says stopped")
+    row = until(lambda: browser.find_elements(By.CSS_SELECTOR, "#processes tbody.ended[data-state=stopped]"), 10,
+                "the process table shows stereo-capture stopped")[0]
+    assert row.get_attribute("data-process").startswith("stereo-capture")
+    assert row.find_element(By.CSS_SELECTOR, ".state").text == "stopped"  # whole, not cut to 14 characters
+    until(lambda: "no STEREO_IMAGES from stereo-capture (stopped) since" in browser.find_element(By.ID, "stale").text,
+          10, "the banner says how its sender ended")
+    assert time.time() - stopped_at < 60
+    screenshot(browser, bus, "stale.png")
+
+    # The recording: its size against the cap, then that it stopped, on the page and in stereo-view's heartbeat.
+    with open(recording, "wb") as f:
+        f.write(b"x" * 500)
+    until(lambda: "recording 0 of 0.001 MB" in browser.find_element(By.ID, "recording").text, 10, "the recording's size")
+    assert attribute(browser, "#stale", "data-recording-capped") == "false"
+    with open(recording, "ab") as f:
+        f.write(b"x" * 1000)
+    until(lambda: attribute(browser, "#stale", "data-recording-capped") == "true", 10, "the cap reached, on the page")
+    assert "Recording stopped: " + recording + " reached its cap of 0.001 MB" in browser.find_element(By.ID, "stale").text
+    assert "recording stopped" in browser.find_element(By.ID, "recording").text
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and
+                   s.last_error.startswith("recording stopped: " + recording + " reached its cap")], 10,
+          "stereo-view's heartbeat says the recording stopped (stereo-status shows it)")

@@ -76,8 +76,10 @@ void CalibrateNode::Start() {
     process_.log().Info("views kept in " + options_.session.state_path + " (" +
                         std::to_string(restored) + " restored)");
   ReportStateDamage();
-  process_.Subscribe<widestereo::stereo_corners_t>(channel::kStereoCorners,
-                                                   [this](const auto& msg) { OnCorners(msg); });
+  // stereo-detect looks for corners in the newest frame only: the frames it
+  // passed over are skipped by design, not lost.
+  process_.Subscribe<widestereo::stereo_corners_t>(
+      channel::kStereoCorners, [this](const auto& msg) { OnCorners(msg); }, 0, Process::FrameGaps::skipped);
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
                                             [this](const auto& msg) { commands_.Dispatch(msg); });
   process_.Every(1000000, [this] { PublishStatus(); });

@@ -3,16 +3,17 @@
 "use strict";
 
 const $ = (selector) => document.querySelector(selector);
-const state = { frame: null, images: {}, corners: null, coverage: null, detectedAt: 0 };
+const state = { frame: null, images: {}, corners: null, coverage: null, spread: null, detectedAt: 0, tabPicked: false };
 
 // ---- tabs -------------------------------------------------------------------
+function showTab(view) {
+  for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t.dataset.view === view);
+  for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== view;
+  if (view === "depth") cloudView.resize();
+  connect();  // stereo-view makes only the shown view's images
+}
 for (const tab of document.querySelectorAll(".tab")) {
-  tab.addEventListener("click", () => {
-    for (const t of document.querySelectorAll(".tab")) t.classList.toggle("active", t === tab);
-    for (const v of document.querySelectorAll(".view")) v.hidden = v.id !== tab.dataset.view;
-    if (tab.dataset.view === "depth") cloudView.resize();
-    connect();  // stereo-view makes only the shown view's images
-  });
+  tab.addEventListener("click", () => { state.tabPicked = true; showTab(tab.dataset.view); });
 }
 
 // ---- drawing helpers --------------------------------------------------------
@@ -35,6 +36,9 @@ function scaleColour(t) {
   return stops[i].map((c, k) => Math.round(c + (stops[i + 1][k] - c) * f));
 }
 
+// Relative luminance of an [r, g, b] colour, 0 (black) to 1 (white).
+const luminance = ([r, g, b]) => (0.2126 * r + 0.7152 * g + 0.0722 * b) / 255;
+
 function fmt(value, digits = 3) { return value === null || value === undefined ? "—" : Number(value).toFixed(digits); }
 
 // ---- calibration view -------------------------------------------------------
@@ -46,18 +50,30 @@ function drawCamera(side) {
   const ctx = canvas.getContext("2d");
   ctx.drawImage(img, 0, 0);
   const sx = img.width / image.width, sy = img.height / image.height;
-  // The coverage of the accepted views.
+  // The coverage of the accepted views, on the cells' edges only: the
+  // board inside them stays as the camera sees it.
   const cov = state.coverage;
   let covered = 0;
   if (cov && cov.grid_rows > 0) {
     const grid = cov["coverage_" + side], cw = img.width / cov.grid_cols, ch = img.height / cov.grid_rows;
-    const most = Math.max(1, ...grid.flat());
+    const most = Math.max(1, ...grid.flat()), mark = Math.min(cw, ch) / 4;
     for (let r = 0; r < cov.grid_rows; ++r)
       for (let c = 0; c < cov.grid_cols; ++c) {
-        const n = grid[r][c];
+        const n = grid[r][c], x = c * cw, y = r * ch;
         covered += n;
-        ctx.fillStyle = n === 0 ? "rgba(255, 40, 40, 0.28)" : `rgba(30, 90, 255, ${0.12 + 0.4 * n / most})`;
-        ctx.fillRect(c * cw, r * ch, cw, ch);
+        if (n === 0) {  // red corner marks: no corner here yet
+          ctx.strokeStyle = "rgba(255, 60, 60, 0.7)";
+          ctx.lineWidth = 2;
+          ctx.beginPath();
+          for (const [px, py, dx, dy] of [[x, y, 1, 1], [x + cw, y, -1, 1], [x, y + ch, 1, -1], [x + cw, y + ch, -1, -1]]) {
+            ctx.moveTo(px + dx * 3, py + dy * (3 + mark)); ctx.lineTo(px + dx * 3, py + dy * 3); ctx.lineTo(px + dx * (3 + mark), py + dy * 3);
+          }
+          ctx.stroke();
+        } else {  // a blue frame, the thicker the more corners
+          ctx.strokeStyle = "rgba(40, 110, 255, 0.85)";
+          ctx.lineWidth = 1 + 5 * n / most;
+          ctx.strokeRect(x + ctx.lineWidth / 2 + 1, y + ctx.lineWidth / 2 + 1, cw - ctx.lineWidth - 2, ch - ctx.lineWidth - 2);
+        }
       }
   }
   figure.dataset.coverage = covered;
@@ -77,6 +93,7 @@ function drawCamera(side) {
   }
   figure.dataset.corners = drawn;
   figure.dataset.frameId = state.frame.frame_id;
+  stamp(figure.querySelector(".age"), state.frame.at_us);
   figure.querySelector(".info").textContent =
     `frame ${state.frame.frame_id}, ${image.width}×${image.height}, ${drawn} corners` +
     (state.corners ? "" : " (waiting for stereo-detect's corners of a frame)");
@@ -106,13 +123,69 @@ async function showFrame(frame, corners) {
   drawPair();
 }
 
+// camera_calibration's four bars (stereo-view measures every board found);
+// "enough" lights the Solve button once stereo-calibrate has stereo views.
+function showSpread(spread) {
+  state.spread = spread;
+  $("#spread-boards").textContent = spread.boards;
+  const bars = $("#spread .bars");
+  bars.replaceChildren();
+  for (const bar of spread.bars) {
+    const fill = Object.assign(document.createElement("span"), { className: "fill" + (bar.progress >= 1 ? " full" : "") });
+    fill.style.width = `${Math.round(100 * bar.progress)}%`;
+    const track = Object.assign(document.createElement("span"), { className: "track" });
+    track.dataset.name = bar.name;
+    track.dataset.progress = bar.progress;
+    track.append(fill);
+    bars.append(Object.assign(document.createElement("span"), { textContent: bar.name }), track,
+                Object.assign(document.createElement("span"), {
+                  className: "range", textContent: bar.low === null ? "—" : `${fmt(bar.low, 2)} to ${fmt(bar.high, 2)}` }));
+  }
+  stamp($("#spread-age"), spread.at_us);
+  lightSolve();
+}
+
+function lightSolve() {
+  const enough = Boolean(state.spread && state.spread.enough && state.coverage && state.coverage.views_stereo > 0 &&
+                         state.coverage.state === "collecting");
+  $("#spread").dataset.enough = enough;
+  const solve = $("button[data-command=solve]");
+  solve.classList.toggle("ready", enough);
+  solve.title = solve.disabled ? solve.title : enough ? "enough different boards: solve now" : "not enough different boards yet";
+}
+
+// The calibration stereo-view rectifies with: K, the distortion, R, T, the baseline.
+function showCalibration(calibration) {
+  $("#calibration-in-use").hidden = false;
+  $("#calibration-source").textContent = "from " + calibration.source;
+  const body = $("#intrinsics tbody");
+  body.replaceChildren();
+  for (const c of calibration.cameras) {
+    const row = body.insertRow();
+    row.dataset.camera = c.name;
+    const names = c.model.startsWith("bspline") ? "α" : "k";
+    const coeffs = c.coeffs.map((v, i) => `${names}${i + 1} ${v.toPrecision(4)}`).join(", ");
+    for (const text of [c.name, c.model, fmt(c.K[0][0], 2), fmt(c.K[1][1], 2), fmt(c.K[0][2], 2), fmt(c.K[1][2], 2),
+                        c.p1.toPrecision(3), c.p2.toPrecision(3), coeffs])
+      row.insertCell().textContent = text;
+  }
+  $("#rotation").textContent = "[" + calibration.R.map((r) => r.map((v) => fmt(v, 5)).join(" ")).join("; ") + "]";
+  $("#translation").textContent = "(" + calibration.T.map((v) => fmt(v, 4)).join(", ") + ")";
+  $("#baseline").textContent = fmt(calibration.baseline, 4);
+  $("#baseline").dataset.metres = calibration.baseline;
+  cloudView.setRig(calibration);
+  stamp($("#calibration-age"), calibration.at_us);
+}
+
 function showCoverage(cov) {
   state.coverage = cov;
+  lightSolve();
   $("#calib-state").textContent = cov.state;
   $("#views").textContent = `${cov.views_left} left, ${cov.views_right} right, ${cov.views_stereo} stereo`;
   $("#calib-rms").textContent = fmt(cov.rms);
   $("#calib-heldout").textContent = fmt(cov.heldout_rms);
   $("#hint").textContent = cov.hint || "—";
+  stamp($("#coverage-age"), cov.at_us);
   drawPair();
 }
 
@@ -144,6 +217,7 @@ function drawMap(title, rows, unit) {
 function showResult(result) {
   $("#result").hidden = false;
   $("#chosen-model").textContent = result.chosen;
+  stamp($("#result-age"), result.at_us);
   const body = $("#models tbody");
   body.replaceChildren();
   for (const m of result.models) {
@@ -171,13 +245,34 @@ function showResult(result) {
 }
 
 function showStatus(status) {
-  $("#rates").textContent = status.table;
+  clock.offsetMs = status.now_us / 1000 - Date.now();
+  clock.statusAt = Date.now();
+  clock.freshness = status.freshness;
+  clock.recording = status.recording;
+  clock.processes = status.processes;
+  const rec = status.recording, recording = $("#recording");
+  recording.hidden = !rec;
+  if (rec) {
+    recording.textContent = rec.capped ? `recording stopped at ${fmt(rec.mb, 0)} MB` :
+      rec.mb === null ? "not recording yet" : `recording ${fmt(rec.mb, 0)} of ${rec.cap_mb} MB`;
+    recording.className = rec.capped ? "warn" : "";
+  }
+  if (!state.tabPicked && status.first_view !== document.querySelector(".tab.active").dataset.view) {
+    state.tabPicked = true;  // once: then the user's choice
+    showTab(status.first_view);
+  }
+  showFreshness();
+  const clouds = status.freshness.STEREO_CLOUD_FILTERED;
+  $("#cloud-rate").textContent = clouds && clouds.rate_hz && !clouds.stale ? `${fmt(clouds.rate_hz, 1)} clouds/s` : "";
+  showProcesses(status.processes);
+  stamp($("#processes-age"), status.now_us);
   const why = status.commands_refused;
   for (const button of document.querySelectorAll("button.command")) {
     button.disabled = why !== "";
     button.title = why;
   }
-  if (why) $("#command-why").textContent = why;
+  lightSolve();
+  if (why) setCommandNote(why, "error");
   document.body.dataset.browserSkipped = status.counters.browsers.skipped;
 }
 
@@ -189,8 +284,15 @@ for (const button of document.querySelectorAll("button.command")) {
       body: JSON.stringify({ command: button.dataset.command }),
     });
     const body = await reply.json();
-    $("#command-why").textContent = reply.ok ? `${button.dataset.command} sent` : body.error;
+    if (reply.ok) setCommandNote(`${button.dataset.command} sent`, "sent");
+    else setCommandNote(body.error, "error");
   });
+}
+
+function setCommandNote(text, kind) {
+  const note = $("#command-why");
+  note.textContent = text;
+  note.className = kind;
 }
 
 // ---- depth view ---------------------------------------------------------------
@@ -209,6 +311,7 @@ async function showRectified(event) {
     }
   }
   $("#rect-right .info").textContent = `frame ${event.frame_id}, ${event.width}×${event.height}`;
+  for (const side of ["left", "right"]) stamp($(`#rect-${side} .age`), event.at_us);
 }
 
 function showDisparity(event) {
@@ -221,6 +324,7 @@ function showDisparity(event) {
     span.dataset.disparity = tick.disparity;
     span.dataset.metres = tick.metres;
     span.style.background = `rgb(${tick.rgb.join(",")})`;
+    span.style.color = luminance(tick.rgb) < 0.5 ? "#fff" : "#000";  // readable on every colour
     span.textContent = `${fmt(tick.metres, 2)} m`;
     legend.append(span);
   }
@@ -229,6 +333,7 @@ function showDisparity(event) {
   legend.dataset.rectification = event.rectification;
   $("#disparity-figure .info").textContent =
     `frame ${event.frame_id}, ${event.rectification}, disparities ${event.min_disparity} to ${event.max_disparity} px (far to near)`;
+  stamp($("#disparity-figure .age"), event.at_us);
 }
 
 function showCloudStats(stats) {
@@ -242,6 +347,8 @@ function showCloudStats(stats) {
   panel.dataset.frameId = stats.frame_id;
   panel.dataset.points = stats.points;
   panel.dataset.planeOffset = stats.plane_offset;
+  stamp($("#cloud-stats-age"), stats.at_us);
+  cloudView.setPlane(stats);
 }
 
 function showHealth(health) {
@@ -249,36 +356,17 @@ function showHealth(health) {
   $("#health-verdict").dataset.verdict = health.verdict;
   $("#health-dy").textContent = fmt(health.dy_median_px, 3);
   $("#health-matches").textContent = `${health.matches} matches in ${health.frames} frames`;
+  stamp($("#health-age"), health.at_us);
 }
 
-// The filtered cloud in 3-D (three.js), in the left rectified frame: x right,
-// y down, z ahead; seen from behind the cameras.
+// The filtered cloud in 3-D (cloud3d.js), its age and rate, the point picked.
 const cloudView = (() => {
   const container = $("#cloud");
-  let renderer = null, camera, controls, scene, points = null, last = null, xyz = null, framed = false, pointSize = 0.01;
+  let scene = null, last = null, xyz = null, framed = false, pointSize = 0.01, extent = null, stats = null;
   try {
-    renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
-    scene = new THREE.Scene();
-    scene.background = new THREE.Color(0x101010);
-    camera = new THREE.PerspectiveCamera(60, 4 / 3, 0.01, 100);
-    camera.up.set(0, -1, 0);
-    camera.position.set(0, -0.5, -1.5);
-    controls = new THREE.OrbitControls(camera, renderer.domElement);
-    controls.target.set(0, 0, 2);
-    controls.update();
-    container.append(renderer.domElement);
-    controls.addEventListener("change", () => renderer.render(scene, camera));
+    scene = CloudScene(container);
   } catch (e) {
     container.textContent = "no WebGL in this browser: " + e.message;
-    renderer = null;
-  }
-  function resize() {
-    if (!renderer) return;
-    const w = container.clientWidth || 480, h = container.clientHeight || 360;
-    renderer.setSize(w, h, false);
-    camera.aspect = w / h;
-    camera.updateProjectionMatrix();
-    renderer.render(scene, camera);
   }
   // A cloud event: its points fetched (float32 x y z, little-endian), then drawn.
   async function show(event) {
@@ -288,12 +376,16 @@ const cloudView = (() => {
     xyz = new Float32Array(await reply.arrayBuffer());
     draw();
   }
+  function resize() { if (scene) scene.resize(); }
   function draw() {
     if (!last) return;
     container.dataset.frameId = last.frame_id;
     container.dataset.shown = xyz.length / 3;
     $("#cloud-figure .info").textContent = `frame ${last.frame_id}: ${last.npoints} points, ${xyz.length / 3} shown`;
-    if (!renderer) return;
+    const wasEmpty = !$("#cloud-figure").dataset.filled;
+    stamp($("#cloud-figure .age"), last.at_us);
+    if (wasEmpty) resize();
+    if (!scene) return;
     const byRange = $("#colour-by").value === "range";
     const values = new Float32Array(xyz.length / 3);
     for (let i = 0; i < values.length; ++i) {
@@ -307,28 +399,54 @@ const cloudView = (() => {
       const rgb = scaleColour(hi > lo ? (v - lo) / (hi - lo) : 0.5);
       for (let k = 0; k < 3; ++k) colours[3 * i + k] = rgb[k] / 255;
     });
-    if (!framed) {  // the first cloud: look at it from behind the cameras, above and to the left
+    const c = [0, 0, 0];
+    for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
+    let r = 0;
+    for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
+    extent = { centre: c, radius: Math.max(r, 0.1) };
+    if (!framed) {  // the first cloud: its centre and extent frame the view
       framed = true;
-      let c = [0, 0, 0];
-      for (let i = 0; i < xyz.length; ++i) c[i % 3] += xyz[i] / (xyz.length / 3);
-      let r = 0;
-      for (let i = 0; i < xyz.length; i += 3) r = Math.max(r, Math.hypot(xyz[i] - c[0], xyz[i + 1] - c[1], xyz[i + 2] - c[2]));
-      r = Math.max(r, 0.1);
-      controls.target.set(c[0], c[1], c[2]);
-      camera.position.set(c[0] - 0.9 * r, c[1] - 0.8 * r, c[2] - 1.6 * r);
-      pointSize = r / 120;
-      controls.update();
+      scene.frame(extent.centre, extent.radius);
+      pointSize = extent.radius / 120;
     }
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute("position", new THREE.BufferAttribute(xyz, 3));
-    geometry.setAttribute("color", new THREE.BufferAttribute(colours, 3));
-    if (points) { scene.remove(points); points.geometry.dispose(); }
-    points = new THREE.Points(geometry, new THREE.PointsMaterial({ size: pointSize, vertexColors: THREE.VertexColors }));
-    scene.add(points);
-    renderer.render(scene, camera);
+    scene.setCloud(xyz, colours, pointSize);
+    drawPlane();
+  }
+  // stereo-cloud's plane, about the cloud shown (CLOUD_STATS).
+  function setPlane(cloudStats) {
+    stats = cloudStats;
+    drawPlane();
+  }
+  function drawPlane() {
+    if (!scene || !extent || !stats) return;
+    scene.setPlane(stats.plane_found ? stats.plane_normal : null, stats.plane_offset, extent.centre, 1.5 * extent.radius);
+    container.dataset.helpers = scene.helperNames().join(" ");
+  }
+  // A click, not a drag (which orbits): the point under it, its coordinates and range.
+  if (scene) {
+    let down = null;
+    // The pointer's move on the screen, not on the canvas: the page may reflow
+    // between (a panel fills); the point picked is the one pressed on.
+    scene.canvas.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY, e.offsetX, e.offsetY]; });
+    scene.canvas.addEventListener("pointerup", (e) => {
+      if (!down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+      const point = scene.pick(down[2], down[3]), picked = $("#picked");
+      if (!point) { picked.textContent = "no point there: click on the cloud"; return; }
+      const range = Math.hypot(...point);
+      Object.assign(picked.dataset, { x: point[0], y: point[1], z: point[2], range });
+      picked.textContent = `picked x ${fmt(point[0], 3)}, y ${fmt(point[1], 3)}, z ${fmt(point[2], 3)} m; ` +
+                           `range ${fmt(range, 3)} m (left rectified frame: x right, y down, z ahead)`;
+    });
+  }
+  // The rig's cameras, from the calibration in use.
+  function setRig(calibration) {
+    const left = calibration.cameras[0];
+    if (!scene || !left) return;
+    scene.setRig(calibration.baseline, left.width / 2 / left.K[0][0], left.height / 2 / left.K[1][1]);
+    container.dataset.helpers = scene.helperNames().join(" ");
   }
   $("#colour-by").addEventListener("change", draw);
-  return { show, resize };
+  return { show, resize, setRig, setPlane };
 })();
 
 // ---- the event stream ---------------------------------------------------------
@@ -339,11 +457,13 @@ function connect() {
   if (source) source.close();
   source = new EventSource("events?view=" + document.querySelector(".tab.active").dataset.view);
   const on = (topic, fn) => source.addEventListener(topic, (e) => fn(JSON.parse(e.data)));
-  source.onopen = () => { $("#connection").textContent = "live"; $("#connection").className = "on"; };
-  source.onerror = () => { $("#connection").textContent = "reconnecting…"; $("#connection").className = "off"; };
+  source.onopen = showFreshness;  // "live" only once data is seen flowing
+  source.onerror = showFreshness;
   on("frame", (e) => showFrame(e, null));
   on("detected", (e) => showFrame(e.frame, e.corners));
   on("coverage", showCoverage);
+  on("spread", showSpread);
+  on("calibration", showCalibration);
   on("result", showResult);
   on("status", showStatus);
   on("rectified", showRectified);
