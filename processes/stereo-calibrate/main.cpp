@@ -238,7 +238,8 @@ int main(int argc, char** argv) {
       remove_pending_corners();
       throw;
     }
-    if (rc != 0) {
+    // Stopped (status 0 too) or failed: nothing of this run's stands.
+    if (rc != 0 || ws::StopRequested()) {
       remove_pending_corners();
     } else if (!corners_pending.empty()) {
       std::filesystem::rename(corners_pending, corners_log);  // throws naming both files
