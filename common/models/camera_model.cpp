@@ -57,14 +57,25 @@ std::optional<Eigen::Vector2d> Camera::Project(const Eigen::Vector3d& point) con
 }
 
 bool Camera::InField(const Eigen::Vector3d& direction) const {
-  const std::vector<double>& knots = model_.distortion.knots;
-  if (knots.empty()) return true;
   const double radius = std::visit(
       [&](const auto& model) {
         return ws::IdealRadius<typename std::decay_t<decltype(model)>::Coordinate>(direction.data());
       },
       distortion_.model());
-  return radius <= knots.back();
+  const std::vector<double>& knots = model_.distortion.knots;
+  if (!knots.empty()) return radius <= knots.back();
+  // A polynomial: the radial map r -> r (1 + D(r)) rises up to the ray's
+  // radius (at 16 radii, as Unproject checks: past a fold two rays share a
+  // pixel), and the ray's pixel lies in the image.
+  double height = 0;
+  for (int k = 1; k <= 16 && radius > 0; ++k) {
+    const double r = radius * k / 16.0, next = r * (1.0 + distortion_(r));
+    if (!(next > height)) return false;
+    height = next;
+  }
+  const std::optional<Eigen::Vector2d> pixel = Project(direction);
+  return pixel && (*pixel)[0] >= -0.5 && (*pixel)[1] >= -0.5 && (*pixel)[0] <= model_.image_width - 0.5 &&
+         (*pixel)[1] <= model_.image_height - 0.5;
 }
 
 std::optional<Eigen::Vector3d> Camera::Unproject(const Eigen::Vector2d& pixel) const {

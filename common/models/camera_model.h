@@ -65,7 +65,8 @@ class Camera {
   // Whether a camera-frame direction lies in the field the model describes:
   // its ideal radius (radial_coordinate.h) up to a B-spline's last knot (the
   // calibrated field, times a margin; past it the last cubic piece goes on
-  // untamed); any direction the model projects for the polynomials.
+  // untamed); for the polynomials, which keep no knots, a direction imaged
+  // inside the image before the radial map folds (docs/models.md).
   bool InField(const Eigen::Vector3d& direction) const;
 
  private:

@@ -101,3 +101,26 @@ def test_parameters_carry_the_tilt(tmp_path, sim_calibration):
     assert "nonradial" not in widestereo.Camera.load(sim_calibration, "left").parameters
     ray = np.array([0.3, -0.2, 1.0])
     assert np.abs(camera.project(ray) - widestereo.Camera.load(sim_calibration, "left").project(ray)).max() > 0.1
+
+
+@pytest.mark.parametrize("kind", ["poly6", "poly12", "kb4"])
+def test_in_field_of_a_polynomial_is_what_its_image_holds(reference, kind):
+    """A polynomial keeps no knots: its field is the rays it images inside
+    the image before its radial map folds, not every ray it projects."""
+    camera = widestereo.Camera.load(str(reference / (kind + ".yaml")), "left")
+    w, h = camera.image_size
+    grid = np.stack(np.meshgrid(np.linspace(0, w - 1, 9), np.linspace(0, h - 1, 7)), -1).reshape(-1, 2)
+    rays = camera.unproject(grid)
+    seen = ~np.isnan(rays).any(axis=1)
+    assert seen.sum() > 50 and camera.in_field(rays[seen]).all()
+    # A ray beyond the image's corner, in its azimuth: imaged outside the
+    # image, or past a fold.
+    corner = camera.unproject(np.array([0.0, 0.0]))
+    theta, phi = np.arccos(corner[2]), np.arctan2(corner[1], corner[0])
+    theta = theta * 1.3 if kind == "kb4" else (theta + np.pi / 2) / 2
+    beyond = np.array([[np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)]])
+    assert not camera.in_field(beyond).any()
+    # Far outside the image: a ray where the model still inverts, never in the field.
+    outside = camera.unproject(np.array([[-500.0, -500.0], [w + 300.0, h / 2]]))
+    assert not camera.in_field(outside[~np.isnan(outside).any(axis=1)]).any()
+    assert camera.in_field(np.array([[0.0, 0.0, 1.0]])).all()
