@@ -267,8 +267,8 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
       std::lock_guard<std::mutex> lock(done_mutex);
       const int finished = ++done;
       Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
-                       " solved (" + ModelName(kinds[size_t(k)]) + "), " +
-                       TimeLeft(start, finished, int(kinds.size())) + (field_after ? " before the chosen model's non-radial part" : ""));
+                       " solved (" + ModelName(kinds[size_t(k)]) + "), " + TimeLeft(start, finished, int(kinds.size())) +
+                       (field_after ? " before the chosen model's non-radial part" : ""));
     }
   }, double(kinds.size()));
   if (stopped) std::rethrow_exception(stopped);

@@ -1,8 +1,6 @@
 #include "interop/kalibr_camchain.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>

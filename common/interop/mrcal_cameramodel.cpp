@@ -1,8 +1,6 @@
 #include "interop/mrcal_cameramodel.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <Eigen/Geometry>
@@ -18,8 +16,6 @@
 
 namespace ws {
 namespace {
-
-// mrcal's own files, optimization_inputs and all, are about a megabyte.
 
 std::vector<double> Numbers(const std::string& path, const PyLiteral& dict, const std::string& key) {
   const auto found = dict.entries.find(key);

@@ -30,8 +30,8 @@ struct MrcalCameraModel {
   int width = 0, height = 0;
 };
 
-// The largest .cameramodel read (runtime/bounded_file.h): a splined model of
-// 160 x 120 control points is 1.1 MB.
+// The largest .cameramodel read (runtime/bounded_file.h): mrcal's own files,
+// optimization_inputs and all, are about a megabyte.
 constexpr size_t kMaxCameraModelBytes = size_t(64) << 20;
 
 // Throws CalibrationFileError "FILE: FIELD: REASON" for a file that is

@@ -1,12 +1,9 @@
 #include "runtime/opencv_yaml.h"
 
-#include "runtime/bounded_file.h"
-
-#include <sys/stat.h>
-
 #include <algorithm>
-#include <fstream>
 #include <sstream>
+
+#include "runtime/bounded_file.h"
 
 namespace ws {
 namespace {

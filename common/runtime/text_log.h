@@ -20,9 +20,9 @@ namespace ws {
 
 class TextLog {
  public:
-  // Creates log_dir if needed; throws std::runtime_error if the file cannot be opened.
   static constexpr int64_t kRepeatPeriodUs = 10'000'000;
 
+  // Creates log_dir if needed; throws std::runtime_error if the file cannot be opened.
   TextLog(const std::string& name, const std::string& log_dir, bool quiet);
   ~TextLog();
 

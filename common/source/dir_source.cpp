@@ -48,12 +48,9 @@ std::vector<std::string> RefusedBeforeDecoding(const ImageFolder& folder, const 
     for (const std::string* path : {&p.left, &p.right}) {
       if (mono && path == &p.right) break;
       std::string why;
-      const auto size = ImageHeaderSize(*path, &why);
+      const auto size = DecodableImageSize(*path, max_pixels, &why);
       if (!size)
         refused[i] = ImageName(*path, dir) + ": " + why;
-      else if (int64_t(size->width) * size->height > max_pixels)
-        refused[i] = ImageName(*path, dir) + ": " + std::to_string(size->width) + "x" + std::to_string(size->height) +
-                     " pixels, more than the " + std::to_string(max_pixels) + " an image may have";
       else if (path == &p.right && *size != sizes[i])
         refused[i] = ImageName(p.left, dir) + " + " + ImageName(p.right, dir) + ": images of different sizes";
       if (!refused[i].empty()) break;

@@ -145,4 +145,12 @@ std::optional<cv::Size> ImageHeaderSize(const std::string& path, std::string* wh
   return size;
 }
 
+std::optional<cv::Size> DecodableImageSize(const std::string& path, int64_t max_pixels, std::string* why) {
+  const auto size = ImageHeaderSize(path, why);
+  if (!size || int64_t(size->width) * size->height <= max_pixels) return size;
+  *why = std::to_string(size->width) + "x" + std::to_string(size->height) + " pixels, more than the " +
+         std::to_string(max_pixels) + " an image may have";
+  return std::nullopt;
+}
+
 }  // namespace ws

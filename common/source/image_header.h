@@ -28,4 +28,8 @@ std::optional<cv::Size> ImageHeaderSize(const uint8_t* data, size_t size);
 inline constexpr size_t kImageHeaderBytes = size_t(256) << 10;
 std::optional<cv::Size> ImageHeaderSize(const std::string& path, std::string* why);
 
+// ImageHeaderSize(path), and none, with `*why` saying so, also for more
+// than `max_pixels`: the size of an image that may be decoded.
+std::optional<cv::Size> DecodableImageSize(const std::string& path, int64_t max_pixels, std::string* why);
+
 }  // namespace ws

@@ -38,18 +38,27 @@ std::string LaunchLog(const std::string& run_dir) {
   return text.str();
 }
 
+bool PollUntil(std::chrono::seconds timeout, const std::function<bool()>& done) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return true;
+}
+
 int WaitForStart(const std::string& run_dir, const std::string& process, int nth, std::chrono::seconds timeout) {
   const std::string marker = "started " + process + " pid ";
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < deadline) {
+  int pid = -1;
+  const bool started = PollUntil(timeout, [&] {
     const std::string log = LaunchLog(run_dir);
     size_t at = 0;
     for (int seen = 0; (at = log.find(marker, at)) != std::string::npos; at += marker.size())
-      if (++seen == nth) return std::stoi(log.substr(at + marker.size()));
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  ADD_FAILURE() << "launch.log has no start " << nth << " of " << process << ":\n" << LaunchLog(run_dir);
-  return -1;
+      if (++seen == nth) pid = std::stoi(log.substr(at + marker.size()));
+    return pid > 0;
+  });
+  if (!started) ADD_FAILURE() << "launch.log has no start " << nth << " of " << process << ":\n" << LaunchLog(run_dir);
+  return pid;
 }
 
 }  // namespace ws::test

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <lcm/lcm-cpp.hpp>
 #include <string>
 #include <vector>
@@ -35,5 +36,9 @@ class ChannelListener {
 
 // launch.log's text.
 std::string LaunchLog(const std::string& run_dir);
+
+// Checks `done` (a file the launch writes: nothing to be told of) every
+// 100 ms for up to `timeout`; returns whether it held.
+bool PollUntil(std::chrono::seconds timeout, const std::function<bool()>& done);
 
 }  // namespace ws::test

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -50,10 +49,9 @@ TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
   const int capture = WaitForStart(run_dir, "stereo-capture", 1, 5s);
   ASSERT_GT(capture, 0);
   kill(capture, SIGTERM);
-  const auto deadline = std::chrono::steady_clock::now() + 30s;
-  while (LaunchLog(run_dir).find("stereo-capture was STOPPED (code 0)") == std::string::npos &&
-         std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(100ms);
+  EXPECT_TRUE(PollUntil(30s, [&] {
+    return LaunchLog(run_dir).find("stereo-capture was STOPPED (code 0)") != std::string::npos;
+  })) << LaunchLog(run_dir);
   launch.Signal(SIGINT);
   const CommandResult result = launch.Wait(60);
   ASSERT_EQ(result.exit_code, 0) << result.output;

@@ -6,7 +6,6 @@
 
 #include <chrono>
 #include <fstream>
-#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -70,13 +69,11 @@ TEST_P(LaunchOwnsItsProcesses, NoProcessOutlivesTheLauncherAndTheLogIsComplete) 
     EXPECT_EQ(result.exit_code, 0) << result.output;
   }
 
-  const auto deadline = std::chrono::steady_clock::now() + 30s;
-  auto any_alive = [&] {
+  PollUntil(30s, [&] {
     for (int pid : pids)
-      if (Alive(pid)) return true;
-    return false;
-  };
-  while (any_alive() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(100ms);
+      if (Alive(pid)) return false;
+    return true;
+  });  // each pid is checked below, named
   for (int pid : pids) EXPECT_FALSE(Alive(pid)) << "pid " << pid << " outlived the launcher\n" << LaunchLog(run_dir);
 
   const std::string log = run_dir + "/calibrate.lcmlog";

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
-#include <thread>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -83,16 +82,6 @@ std::optional<widestereo::channel_counters_t> Reported(const std::string& run_di
   return std::nullopt;
 }
 
-// Checks `done` every 200 ms for up to `timeout`; returns whether it held.
-bool PollUntil(std::chrono::seconds timeout, const std::function<bool()>& done) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(200ms);
-  }
-  return true;
-}
-
 TEST(MultiHost, CaptureOnOneHostCalibrationOnTheOther) {
   TwoHosts hosts;
   if (!hosts.error().empty()) GTEST_SKIP() << "network namespaces unavailable here: " << hosts.error();
@@ -133,7 +122,7 @@ TEST(MultiHost, CaptureOnOneHostCalibrationOnTheOther) {
                                          30);
   ASSERT_EQ(solve.exit_code, 0) << solve.output;
   const std::string calibration = compute_dir + "/calibration.yaml";
-  for (int i = 0; i < 600 && !std::filesystem::exists(calibration); ++i) std::this_thread::sleep_for(100ms);
+  PollUntil(60s, [&] { return std::filesystem::exists(calibration); });  // asserted once the launch is stopped
   compute.Signal(SIGINT);
   EXPECT_EQ(compute.Wait(60).exit_code, 0);
   ASSERT_TRUE(std::filesystem::exists(calibration)) << LaunchLog(compute_dir);

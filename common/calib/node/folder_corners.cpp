@@ -29,8 +29,7 @@ std::vector<std::string> AllImages(const ImageFolder& folder) {
   std::vector<std::string> images;
   auto add = [&](const std::string& path) {
     std::string why;
-    const auto size = ImageHeaderSize(path, &why);
-    if (size && int64_t(size->width) * size->height <= kDefaultMaxImagePixels) images.push_back(path);
+    if (DecodableImageSize(path, kDefaultMaxImagePixels, &why)) images.push_back(path);
   };
   for (const auto& pair : folder.pairs) add(pair.left);
   for (const auto& pair : folder.pairs)
