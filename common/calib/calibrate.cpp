@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numeric>
 #include <optional>
@@ -149,6 +150,25 @@ double FittedNoise(const CameraCalibration& camera) {
   return n > p ? camera.rms_px * std::sqrt(n / (n - p)) : INFINITY;
 }
 
+// Why no pinhole-radius model can image the views: every angle model
+// solved (and at least one) puts inlier corners of a camera at 90 degrees or
+// more off the axis, where r = tan(theta) has no value; "" otherwise.
+std::string BeyondPinhole(const std::vector<ModelKind>& kinds,
+                          const std::vector<std::optional<StereoCalibration>>& solved) {
+  double least = INFINITY;  // radians: the smallest reach the angle models give
+  std::string names;
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    if (!Traits(kinds[k]).angle || !solved[k]) continue;
+    const StereoCalibration& c = *solved[k];
+    least = std::min(least, std::max(c.left.max_observed_radius,
+                                     c.mono ? 0.0 : c.right.max_observed_radius));
+    names += (names.empty() ? "" : " and ") + ModelName(kinds[k]);
+  }
+  if (!(least >= M_PI / 2) || !std::isfinite(least)) return "";
+  return names + " image corners up to at least " + Fixed(least * 180 / M_PI, 0) +
+         " degrees off the axis, where a pinhole radius tan(theta) has none";
+}
+
 // ModelCalibrations::model_selection: the rule of selection.h over the
 // models solved, in order of their parameters per camera, each fold's RMS
 // on the held-out corners they all kept (FoldRmsOnCommonCorners: their
@@ -246,37 +266,56 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   const bool field_after = kinds.size() > 1 && options.nonradial != FieldRule::kNone;
   // The models on every core at once (a model's two cameras then run one
   // after the other: OpenCV runs a nested parallel region in turn), each
-  // result in its place; the progress lines serialised.
+  // result in its place; the progress lines serialised. The angle models
+  // first: where every one solved images corners 90 degrees or more off
+  // the axis, a pinhole-radius model (r = tan theta) has no image of them,
+  // so it could not be scored on the corners the others use (ChooseModel),
+  // and it is not tried.
   std::vector<std::optional<StereoCalibration>> solved(kinds.size());
   std::vector<std::string> errors(kinds.size());
+  std::vector<std::shared_ptr<RadialStates>> radial(kinds.size());  // each model's, for its field
   std::exception_ptr stopped;
   std::mutex done_mutex;
   int done = 0;
-  cv::parallel_for_(cv::Range(0, int(kinds.size())), [&](const cv::Range& range) {
-    for (int k = range.start; k < range.end; ++k) {
-      try {
-        solved[size_t(k)] = SolveModel(
-            data, options, {kinds[size_t(k)], field_after ? FieldRule::kNone : options.nonradial, options.flow,
-                                std::nullopt});
-      } catch (const CalibrationError& e) {
-        errors[size_t(k)] = e.what();
-      } catch (...) {  // Stopped: the run ends
+  auto solve = [&](const std::vector<size_t>& which) {
+    cv::parallel_for_(cv::Range(0, int(which.size())), [&](const cv::Range& range) {
+      for (int i = range.start; i < range.end; ++i) {
+        const size_t k = which[size_t(i)];
+        try {
+          if (field_after) radial[k] = std::make_shared<RadialStates>();
+          solved[k] = SolveModel(data, options,
+                                 {kinds[k], field_after ? FieldRule::kNone : options.nonradial,
+                                  options.flow, std::nullopt, radial[k], nullptr});
+        } catch (const CalibrationError& e) {
+          errors[k] = e.what();
+        } catch (...) {  // Stopped: the run ends
+          std::lock_guard<std::mutex> lock(done_mutex);
+          stopped = std::current_exception();
+        }
         std::lock_guard<std::mutex> lock(done_mutex);
-        stopped = std::current_exception();
+        const int finished = ++done;
+        Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
+                         " solved (" + ModelName(kinds[k]) + "), " + TimeLeft(start, finished, int(kinds.size())) +
+                         (field_after ? " before the chosen model's non-radial part" : ""));
       }
-      std::lock_guard<std::mutex> lock(done_mutex);
-      const int finished = ++done;
-      Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
-                       " solved (" + ModelName(kinds[size_t(k)]) + "), " + TimeLeft(start, finished, int(kinds.size())) +
-                       (field_after ? " before the chosen model's non-radial part" : ""));
-    }
-  }, double(kinds.size()));
-  if (stopped) std::rethrow_exception(stopped);
+    }, double(which.size()));
+    if (stopped) std::rethrow_exception(stopped);
+  };
+  std::vector<size_t> angle, pinhole;
+  for (size_t k = 0; k < kinds.size(); ++k) (Traits(kinds[k]).angle ? angle : pinhole).push_back(k);
+  solve(angle);
+  const std::string beyond = BeyondPinhole(kinds, solved);
+  if (beyond.empty()) {
+    solve(pinhole);
+  } else {
+    for (size_t k : pinhole) errors[k] = "not tried: " + beyond;
+    Say(options, "models: " + beyond + ": the pinhole-radius models are not tried");
+  }
   for (size_t k = 0; k < kinds.size(); ++k) {
     if (solved[k])
       results.solved.push_back(std::move(*solved[k]));
     else
-      results.failed.push_back({ModelName(kinds[k]), errors[k]});
+      results.failed.push_back({ModelName(kinds[k]), errors[k], !beyond.empty() && !Traits(kinds[k]).angle});
   }
   if (results.solved.empty() && results.failed.size() == 1)
     throw CalibrationError(results.failed.front().error);
@@ -288,11 +327,14 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   }
   results.model_selection = ChooseModel(results.solved, results.failed, &results.chosen);
   if (field_after && !results.solved.empty()) {
-    const StereoCalibration& radial = results.solved[results.chosen];
-    const ModelKind chosen = radial.model;
+    const StereoCalibration& solved_radially = results.solved[results.chosen];
+    const ModelKind chosen = solved_radially.model;
+    const size_t k = size_t(std::find(kinds.begin(), kinds.end(), chosen) - kinds.begin());
     try {
-      results.solved[results.chosen] = SolveModel(
-          data, options, {chosen, options.nonradial, radial.flow, radial.inconsistent_views});
+      results.solved[results.chosen] =
+          SolveModel(data, options,
+                     {chosen, options.nonradial, solved_radially.flow, solved_radially.inconsistent_views,
+                      nullptr, radial[k]});
     } catch (const CalibrationError& e) {  // the radial solution stands
       results.failed.push_back({ModelName(chosen) + " with a non-radial field", e.what()});
     }

@@ -134,7 +134,8 @@ StereoCalibration CalibrateStereo(const StereoData& data, const CalibrationOptio
 // The outcome of solving the same data with several models.
 struct ModelFailure {
   std::string model;
-  std::string error;  // CalibrationError's message
+  std::string error;       // CalibrationError's message, or why it was not tried
+  bool not_tried = false;  // left out by design (no image of the views), not failed
 };
 struct ModelCalibrations {
   std::vector<StereoCalibration> solved;  // in the order asked

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <opencv2/core/utility.hpp>
+#include <optional>
 
 #include "calib/camera_result.h"
 #include "calib/evaluate/heldout.h"
@@ -245,44 +247,66 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
   // parameters) and solved; with `start`, a solve of the same grid, from
   // that solution (the same problem, a nearer start: it converges in fewer
   // steps).
-  auto solve = [&](const CameraBlock& from, const FieldTrial& t, const CameraBlock* start) {
+  auto solve = [&](const CameraBlock& from, const FieldTrial& t, const CameraBlock* start, MonoState* state) {
     CameraBlock camera = WithNonRadialField(from, t.cols, t.rows, t.tilt, p.width, p.height, t.smoothness);
     if (start) {
       camera.intrinsics = start->intrinsics;
       camera.coeffs = start->coeffs;
     }
-    return SolveCandidate(camera, warp_free, options, what + " with " + name(t), s);
+    return SolveCandidate(camera, warp_free, options, what + " with " + name(t), state);
   };
   const double given = options.spline.smoothness;
   if (rule == FieldRule::kGrid) {
     solve(s->problem.cameras[0],
-          Trial(options.field_tilt, options.field_cols, options.field_rows, given), nullptr);
+          Trial(options.field_tilt, options.field_cols, options.field_rows, given), nullptr, s);
     return;
   }
   if (!s->heldout.folds) s->heldout = CrossValidate(s->problem, options.cv_folds);
   if (!s->heldout.folds) return;  // too few views to cross-validate: radial only
-  // A candidate solved: kept where the views hold it (every fold solved,
-  // a finite held-out RMS), with its point on the field curve (the same
-  // index in both).
+  // The candidates solved, none first, each with its point on the field
+  // curve (the same index in both).
   std::vector<FinalSolve> candidates = {Keep(*s)};
   s->field_curve.push_back({false, 0, 0, 0, Rms(Residuals(s->problem, 0)), s->heldout.rms_px[0],
                            s->heldout.fold_rms_px[0]});
-  auto tried = [&](const CameraBlock& from, FieldTrial t, const CameraBlock* start = nullptr) {
+  // A trial solved on a copy of the state from `start` (the solve it starts
+  // from), so that trials can run at once: its solve, or why not.
+  struct Solved {
+    std::optional<FinalSolve> solve;
+    FieldTrial trial;
+    std::string error;
+  };
+  auto solve_from = [&](const FinalSolve& start, const CameraBlock& from, FieldTrial t,
+                        const CameraBlock* warm) {
+    MonoState state = *s;
+    Restore(start, &state);
+    Solved out{std::nullopt, t, ""};
     try {
-      candidates.push_back(solve(from, t, start));
+      out.solve = solve(from, t, warm, &state);
+      out.trial.rms_px = Rms(Residuals(state.problem, 0));
     } catch (const CalibrationError& e) {
-      Say(options, what + " with " + name(t) + ": " + e.what());
+      out.error = e.what();
+    }
+    return out;
+  };
+  // A trial's outcome recorded: kept where the views hold it (every fold
+  // solved, a finite held-out RMS), with its point on the field curve (the
+  // same index in both).
+  auto keep = [&](Solved solved) {
+    if (!solved.solve) {
+      Say(options, what + " with " + name(solved.trial) + ": " + solved.error);
       return false;
     }
-    if (s->heldout.folds != candidates[0].heldout.folds || !std::isfinite(s->heldout.rms_px[0])) {
-      candidates.pop_back();  // a field the views cannot hold
-      return false;
-    }
-    t.rms_px = Rms(Residuals(s->problem, 0));
-    t.heldout_rms_px = s->heldout.rms_px[0];
-    t.fold_rms_px = s->heldout.fold_rms_px[0];
-    s->field_curve.push_back(t);
+    const CrossValidation& cv = solved.solve->heldout;
+    if (cv.folds != candidates[0].heldout.folds || !std::isfinite(cv.rms_px[0]))
+      return false;  // a field the views cannot hold
+    solved.trial.heldout_rms_px = cv.rms_px[0];
+    solved.trial.fold_rms_px = cv.fold_rms_px[0];
+    s->field_curve.push_back(solved.trial);
+    candidates.push_back(std::move(*solved.solve));
     return true;
+  };
+  auto tried = [&](const CameraBlock& from, FieldTrial t) {
+    return keep(solve_from(Keep(*s), from, t, nullptr));
   };
   auto candidate = [&](size_t i) { return AsCandidate(name(s->field_curve[i]), candidates[i]); };
   // The tilt against none.
@@ -311,32 +335,44 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
   }
   // One ladder of fields solved from the base, in order, until two in a row
   // predict worse than the best of the ladder beyond the spread; returns
-  // the candidate of its lowest held-out RMS (0: none solved). With
-  // `one_grid` (the weights of one grid), each from the one before.
+  // the candidate of its lowest held-out RMS (0: none solved). The trials
+  // run two at a time, each from the same start (one core each; the ladder
+  // judged in order, so a stop wastes at most the one solved beside it).
+  // With `one_grid` (the weights of one grid), each pair from the newest
+  // solve before it.
   int fields = 0;  // solved so far, for the progress lines
   const int most_fields = int(std::size(kFieldSmoothnessLadder) + std::size(kFieldLadder) - 1);
   const auto fields_start = std::chrono::steady_clock::now();
+  constexpr size_t kAtOnce = 2;
   auto climb = [&](const std::vector<FieldTrial>& ladder, bool one_grid) {
     size_t best = 0;
     int worse_in_a_row = 0;
-    for (const FieldTrial& t : ladder) {
-      if (worse_in_a_row == 2) break;
+    for (size_t first = 0; first < ladder.size() && worse_in_a_row < 2; first += kAtOnce) {
       const bool warm = one_grid && best != 0;
       const FinalSolve start = candidates[warm ? candidates.size() - 1 : base];
-      Restore(start, s);
-      if (!tried(candidates[base].camera, t, warm ? &start.camera : nullptr)) break;
-      const FinalSolve& newest = candidates.back();
-      ++fields;
-      Say(options, what + " with " + name(t) + ": held-out " + Fixed(newest.heldout.rms_px[0]) +
-                       " px (field " + std::to_string(fields) + " of at most " + std::to_string(most_fields) +
-                       ", " + TimeLeft(fields_start, fields, most_fields) + " at most; " + newest.outcome.message +
-                       ")");
-      if (best == 0) {
-        best = candidates.size() - 1;
-        continue;
+      std::vector<Solved> pair(std::min(kAtOnce, ladder.size() - first));
+      cv::parallel_for_(cv::Range(0, int(pair.size())), [&](const cv::Range& range) {
+        for (int j = range.start; j < range.end; ++j)
+          pair[size_t(j)] = solve_from(start, candidates[base].camera, ladder[first + size_t(j)],
+                                       warm ? &start.camera : nullptr);
+      }, double(pair.size()));
+      for (Solved& solved : pair) {
+        if (worse_in_a_row == 2) break;
+        if (!keep(std::move(solved))) return best;
+        const FinalSolve& newest = candidates.back();
+        ++fields;
+        Say(options, what + " with " + name(s->field_curve.back()) + ": held-out " +
+                         Fixed(newest.heldout.rms_px[0]) + " px (field " + std::to_string(fields) +
+                         " of at most " + std::to_string(most_fields) + ", " +
+                         TimeLeft(fields_start, fields, most_fields) + " at most; " +
+                         newest.outcome.message + ")");
+        if (best == 0) {
+          best = candidates.size() - 1;
+          continue;
+        }
+        worse_in_a_row = WorseBeyondNoise(newest, candidates[best]) ? worse_in_a_row + 1 : 0;
+        if (newest.heldout.rms_px[0] < candidates[best].heldout.rms_px[0]) best = candidates.size() - 1;
       }
-      worse_in_a_row = WorseBeyondNoise(newest, candidates[best]) ? worse_in_a_row + 1 : 0;
-      if (newest.heldout.rms_px[0] < candidates[best].heldout.rms_px[0]) best = candidates.size() - 1;
     }
     return best;
   };
@@ -417,10 +453,10 @@ void ChooseKnots(const CalibrationOptions& options, const std::string& what, Mon
   s->heldout = cvs[chosen];
 }
 
-}  // namespace
-
-void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               const ModelPlan& plan, MonoState* s) {
+// The radial model up to its field: the start, the continuation, the
+// outliers, the knots and the board's bow.
+void SolveRadial(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
+                 const ModelPlan& plan, MonoState* s) {
   // The model (knots, the board's bow, the field) is chosen with no
   // standard deviations on the corners the radial model keeps (OnTheCorners:
   // a board misdetected or bent far beyond a bow would otherwise decide
@@ -529,10 +565,25 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
              WarpAlwaysFree(options), options, s);
   if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(options, what, s);
   if (options.board_warp == WarpRule::kAuto) ChooseWarp(options, what, s);
+}
+
+}  // namespace
+
+void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
+               const ModelPlan& plan, MonoState* s, int camera) {
+  if (plan.from_radial) {
+    const MonoState& radial = plan.from_radial->camera[camera];
+    *s = radial;
+    Restore(Keep(radial), s);  // its problem over this state's own views
+  } else {
+    SolveRadial(data, board, options, plan, s);
+    if (plan.keep_radial) plan.keep_radial->camera[camera] = *s;
+  }
+  const std::string what = s->prepared.name + " camera (" + ModelName(plan.model) + ")";
   if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, s);
   // The final solve: the chosen model, its outliers left out.
   SolveAll(s->problem.cameras[0], AsAsked(options, what), s->warp.free, options, s);
-  RequireUnfolded(s->problem, 0, p.name);  // before the cross-validation it would waste
+  RequireUnfolded(s->problem, 0, s->prepared.name);  // before the cross-validation it would waste
   s->heldout = CrossValidate(s->problem, options.cv_folds);
 }
 

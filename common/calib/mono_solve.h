@@ -44,12 +44,21 @@ struct MonoState {
   std::vector<Selection> selections;    // every choice made (selection.h), in order
 };
 
+// Both cameras' solves as they stood before the non-radial field (the
+// model, its knots, outliers and the board's bow chosen): copies, whose
+// problems SolveMono binds again to their own views before use.
+struct RadialStates {
+  MonoState camera[2];  // left, right
+};
+
 // Calibrates the camera of `data` with the model of `plan` into *state;
 // `board` is the extent of the board (board_warp.h), the warp estimated in
 // the final solve or chosen by the held-out RMS as options.board_warp says.
+// `camera` is its slot in plan.keep_radial and plan.from_radial (0: left):
+// with from_radial the radial solve is not repeated, its copy resumed.
 // Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               const ModelPlan& plan, MonoState* state);
+               const ModelPlan& plan, MonoState* state, int camera = 0);
 
 // The cross-validation of the state's last solve: the one --knots auto made,
 // else made now (options.cv_folds).

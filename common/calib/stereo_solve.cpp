@@ -49,7 +49,7 @@ void SolveBothMono(const StereoData& data, const BoardExtent& board,
       cv::Range(0, 2),
       [&](const cv::Range& range) {
         for (int c = range.start; c < range.end; ++c) try {
-            SolveMono(c == 0 ? data.left : data.right, board, options, plan, &mono[c]);
+            SolveMono(c == 0 ? data.left : data.right, board, options, plan, &mono[c], c);
           } catch (...) {
             error[c] = std::current_exception();
           }

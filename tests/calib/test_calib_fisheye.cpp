@@ -55,4 +55,22 @@ TEST(CalibFisheye, Kb4StartsOnTheSameViewsButCannotFollowTheKnee) {
   EXPECT_GT(kb4.left.rms_px, 1.2 * floor) << "the knee is beyond a 4-term polynomial in theta";
 }
 
+// Every model on boards that reach 100 degrees off the axis: the angle
+// models solve first and find corners past 90 degrees, where a pinhole
+// radius tan(theta) has no value, so the pinhole-radius models are listed
+// as not tried (not failed) and cost nothing.
+TEST(CalibFisheye, PinholeRadiusModelsAreNotTriedBeyond90Degrees) {
+  const SyntheticRig rig = MakeSyntheticRig(FisheyeRig());
+  CalibrationOptions options;
+  options.nonradial = FieldRule::kNone;
+  const ModelCalibrations all = CalibrateStereoAllModels(rig.data, options, ModelKinds());
+  ASSERT_EQ(all.solved.size(), 2u);
+  for (const StereoCalibration& solved : all.solved) EXPECT_TRUE(Traits(solved.model).angle) << solved.model;
+  ASSERT_EQ(all.failed.size(), 3u);
+  for (const ModelFailure& failure : all.failed) {
+    EXPECT_TRUE(failure.not_tried) << failure.model << ": " << failure.error;
+    EXPECT_NE(failure.error.find("tan(theta) has none"), std::string::npos) << failure.error;
+  }
+}
+
 }  // namespace

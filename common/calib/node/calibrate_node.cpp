@@ -349,7 +349,10 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
     const ModelCalibrations results = CalibrateStereoAllModels(data, options, models);
     const StereoCalibration& primary = Chosen(results);
     for (const auto& failure : results.failed)
-      process_.ReportError(failure.model + " failed: " + NameViews(failure.error, frames));
+      if (failure.not_tried)
+        process_.log().Info(failure.model + " " + failure.error);
+      else
+        process_.ReportError(failure.model + " failed: " + NameViews(failure.error, frames));
     for (const auto& r : results.solved) {
       std::ostringstream line;
       line << r.model << ": left rms " << r.left.rms_px << " px (" << r.left.views << " views, "

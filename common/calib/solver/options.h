@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -171,6 +172,8 @@ struct CalibrationOptions {
 // what the stereo step takes from the model's radial solve where one came
 // first. Whether the pairs were exposed together is the data's, not the
 // lens's: the radial solve's judgement stands for its field.
+struct RadialStates;  // mono_solve.h
+
 struct ModelPlan {
   ModelKind model = ModelKind::kBspline;
   FieldRule nonradial = FieldRule::kAuto;
@@ -180,10 +183,15 @@ struct ModelPlan {
   // The pairs the radial solve found no rig explains (stereo_solve.h); none:
   // judged in this solve.
   std::optional<std::vector<int>> unpaired;
+  // Each camera's solve as it stood before its field (mono_solve.h): kept
+  // into *keep_radial, or resumed from *from_radial, so that the chosen
+  // model's field does not solve its radial model again.
+  std::shared_ptr<RadialStates> keep_radial;
+  std::shared_ptr<const RadialStates> from_radial;
 };
 // The plan of the options' own model, non-radial rule and flow.
 inline ModelPlan PlanAsAsked(const CalibrationOptions& options) {
-  return {options.model, options.nonradial, options.flow, std::nullopt};
+  return {options.model, options.nonradial, options.flow, std::nullopt, nullptr, nullptr};
 }
 
 // Throws CalibrationError for options no calibration can use (knots out of

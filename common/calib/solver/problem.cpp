@@ -95,69 +95,86 @@ struct Built {
   std::vector<std::vector<int>> held;  // per free block: entries a manifold holds constant
 };
 
-// The field's segments an observation's inlier corners read (FieldSupport).
-std::vector<int> ObservationSegments(const Problem& problem, const Observation& o) {
+// The inlier corners of an observation as cost functions, each with the
+// field's segments its corners read (FieldSupport): one for the view; with a
+// robust loss one per corner (Ceres applies a loss per block); with
+// `by_support` and a field, one per set of corners that read the same
+// segments. A view's block in Ceres's Schur complement adds the outer
+// product of every pair of its blocks, dense: one block per support adds
+// only the segments' pairs that share a corner (on a 16 x 10 field, about a
+// tenth of the view's).
+struct ObservationCost {
+  std::unique_ptr<ceres::CostFunction> cost;
+  std::vector<int> segments;
+};
+std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Observation& o,
+                                              bool per_corner, bool by_support) {
   const CameraBlock& camera = problem.cameras[o.camera];
-  std::vector<double> pixels;
-  for (int i = 0; i < o.corners->size(); ++i)
-    if ((*o.inliers)[i]) pixels.insert(pixels.end(), {o.corners->image[i].x(), o.corners->image[i].y()});
-  return FieldSupport(camera.field, camera.intrinsics.data(), pixels);
-}
-
-// The inlier corners of an observation as cost functions over the field's
-// `segments`: one for the view, or one per corner with a robust loss (Ceres
-// applies a loss per block).
-std::vector<std::unique_ptr<ceres::CostFunction>> ObservationCosts(const Problem& problem,
-                                                                   const Observation& o,
-                                                                   bool per_corner,
-                                                                   const std::vector<int>& segments) {
-  const CameraBlock& camera = problem.cameras[o.camera];
-  std::vector<ViewPoints> groups(1);
+  const double* intrinsics = camera.intrinsics.data();
+  std::map<std::vector<int>, ViewPoints> groups;  // by support; ordered, so the same order every run
+  std::vector<std::pair<std::vector<int>, ViewPoints>> corners;  // per_corner: in corner order
+  std::vector<double> all;  // every inlier pixel, for the view's support
   for (int i = 0; i < o.corners->size(); ++i) {
     if (!(*o.inliers)[i]) continue;
-    if (per_corner && groups.back().size() > 0) groups.emplace_back();
-    groups.back().Add(o.corners->object[i], o.corners->image[i],
-                      WarpBasis(problem.warp.extent, o.corners->object[i]));
+    const Eigen::Vector2d& x = o.corners->image[i];
+    all.insert(all.end(), {x.x(), x.y()});
+    ViewPoints* points = nullptr;
+    if (per_corner || by_support) {
+      std::vector<int> support = FieldSupport(camera.field, intrinsics, {x.x(), x.y()});
+      points = per_corner ? &corners.emplace_back(std::move(support), ViewPoints{}).second
+                          : &groups[std::move(support)];
+    } else {
+      points = &groups[{}];
+    }
+    points->Add(o.corners->object[i], x, WarpBasis(problem.warp.extent, o.corners->object[i]));
   }
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  if (groups.front().size() == 0) return costs;
-  for (ViewPoints& points : groups) {
+  if (!per_corner && !by_support && !groups.empty())  // one block over the view's support
+    corners.emplace_back(FieldSupport(camera.field, intrinsics, all), std::move(groups.begin()->second));
+  else
+    for (auto& group : groups) corners.emplace_back(group.first, std::move(group.second));
+  std::vector<ObservationCost> costs;
+  for (auto& [segments, points] : corners) {
     points.max_radius = camera.max_radius;
-    costs.emplace_back(MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic, segments));
+    costs.push_back({std::unique_ptr<ceres::CostFunction>(
+                         MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic, segments)),
+                     segments});
   }
   return costs;
 }
 
 // Fills `built` from the problem; observations that cannot be evaluated at
-// the current parameters move to problem.left_out.
-void Build(Problem& problem, const SolveSettings& settings, Built* built) {
+// the current parameters move to problem.left_out. by_support: a view's
+// corners in blocks by the field's segments they read (ObservationCosts),
+// else one block per view, its corners in order (as Linearise reads them).
+void Build(Problem& problem, const SolveSettings& settings, Built* built, bool by_support) {
   const bool per_corner = settings.robust_loss != RobustLoss::kNone;
   std::vector<Observation> kept;
   ParameterArena& arena = built->arena;
   for (Observation& o : problem.observations) {
     CameraBlock& camera = problem.cameras[o.camera];
-    std::vector<double*> blocks{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
-                                arena[problem.warp.data.data()], arena[o.pose->data.data()]};
-    if (o.via_extrinsic) blocks.push_back(arena[problem.extrinsic.data.data()]);
+    std::vector<double*> rig{arena[camera.intrinsics.data()], arena[camera.coeffs.data()],
+                             arena[problem.warp.data.data()], arena[o.pose->data.data()]};
+    if (o.via_extrinsic) rig.push_back(arena[problem.extrinsic.data.data()]);
     const std::vector<std::pair<double*, int>> coeff_blocks = CoeffBlocks(camera);
-    if (camera.field.tilt()) blocks.push_back(arena[coeff_blocks.back().first]);
-    const std::vector<int> segments = ObservationSegments(problem, o);
-    for (int segment : segments) blocks.push_back(arena[coeff_blocks[size_t(1 + segment)].first]);
-    auto costs = ObservationCosts(problem, o, per_corner, segments);
+    if (camera.field.tilt()) rig.push_back(arena[coeff_blocks.back().first]);
+    auto costs = ObservationCosts(problem, o, per_corner, by_support);
+    std::vector<std::vector<double*>> blocks;  // per cost: the rig's, then its segments
     bool valid = true;
-    for (const auto& cost : costs) {
-      std::vector<double> residuals(cost->num_residuals());
-      valid = valid && cost->Evaluate(blocks.data(), residuals.data(), nullptr);
+    for (const ObservationCost& c : costs) {
+      blocks.push_back(rig);
+      for (int segment : c.segments) blocks.back().push_back(arena[coeff_blocks[size_t(1 + segment)].first]);
+      std::vector<double> residuals(c.cost->num_residuals());
+      valid = valid && c.cost->Evaluate(blocks.back().data(), residuals.data(), nullptr);
     }
     if (!valid) {
       problem.left_out.emplace_back(o.camera, o.view);
       continue;
     }
     kept.push_back(o);
-    for (auto& cost : costs) {
-      built->data_residuals += cost->num_residuals();
+    for (size_t k = 0; k < costs.size(); ++k) {
+      built->data_residuals += costs[k].cost->num_residuals();
       built->data_blocks.push_back(
-          built->ceres.AddResidualBlock(cost.release(), MakeLoss(settings), blocks));
+          built->ceres.AddResidualBlock(costs[k].cost.release(), MakeLoss(settings), blocks[k]));
       built->data_observation.push_back(int(kept.size()) - 1);
     }
     double* pose = arena[o.pose->data.data()];
@@ -273,7 +290,7 @@ Pose BoardPose(const Problem& problem, const Observation& o) {
 SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
   ThrowIfStopRequested();
   Built built(problem);
-  Build(problem, settings, &built);
+  Build(problem, settings, &built, true);
   ceres::Solver::Options options;
   if (built.free_blocks.empty() && built.poses.size() == 1) {
     options.linear_solver_type = ceres::DENSE_QR;  // one pose: nothing to eliminate
@@ -311,7 +328,7 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
   ThrowIfStopRequested();
   Built built(problem);
-  Build(problem, settings, &built);
+  Build(problem, settings, &built, true);
   if (built.free_blocks.empty()) return;
   // sigma^2 from the data residuals only (the prior is not a measurement).
   ceres::Problem::EvaluateOptions evaluate;
@@ -356,7 +373,7 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
 
 Linearisation Linearise(Problem& problem, const std::string& what) {
   Built built(problem);
-  Build(problem, SolveSettings{what}, &built);
+  Build(problem, SolveSettings{what}, &built, false);
   ceres::Problem::EvaluateOptions options;
   options.parameter_blocks = built.poses;
   options.parameter_blocks.insert(options.parameter_blocks.end(), built.free_blocks.begin(),
