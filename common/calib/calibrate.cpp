@@ -93,7 +93,7 @@ namespace {
 CameraCalibration SolveCamera(const CameraData& data, const CalibrationOptions& options,
                               const ModelPlan& plan) {
   MonoState state;
-  SolveMono(data, ExtentOf({&data}), options, plan, &state);
+  SolveMono(data, ExtentOf({&data}), options, plan, &state, 0, cv::getNumThreads());
   CameraCalibration result =
       CameraResult(state.problem, 0, state.prepared, state.outcome, state.init_method, options);
   result.knot_curve = state.knot_curve;
@@ -277,28 +277,34 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   std::exception_ptr stopped;
   std::mutex done_mutex;
   int done = 0;
+  auto solve_one = [&](size_t k) {
+    try {
+      if (field_after) radial[k] = std::make_shared<RadialStates>();
+      solved[k] = SolveModel(data, options,
+                             {kinds[k], field_after ? FieldRule::kNone : options.nonradial,
+                              options.flow, std::nullopt, radial[k], nullptr});
+    } catch (const CalibrationError& e) {
+      errors[k] = e.what();
+    } catch (...) {  // Stopped: the run ends
+      std::lock_guard<std::mutex> lock(done_mutex);
+      stopped = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(done_mutex);
+    const int finished = ++done;
+    Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
+                     " solved (" + ModelName(kinds[k]) + "), " + TimeLeft(start, finished, int(kinds.size())) +
+                     (field_after ? " before the chosen model's non-radial part" : ""));
+  };
+  // One model alone runs on this thread, so that its own solve can take
+  // every core (OpenCV runs a nested parallel region in turn).
   auto solve = [&](const std::vector<size_t>& which) {
-    cv::parallel_for_(cv::Range(0, int(which.size())), [&](const cv::Range& range) {
-      for (int i = range.start; i < range.end; ++i) {
-        const size_t k = which[size_t(i)];
-        try {
-          if (field_after) radial[k] = std::make_shared<RadialStates>();
-          solved[k] = SolveModel(data, options,
-                                 {kinds[k], field_after ? FieldRule::kNone : options.nonradial,
-                                  options.flow, std::nullopt, radial[k], nullptr});
-        } catch (const CalibrationError& e) {
-          errors[k] = e.what();
-        } catch (...) {  // Stopped: the run ends
-          std::lock_guard<std::mutex> lock(done_mutex);
-          stopped = std::current_exception();
-        }
-        std::lock_guard<std::mutex> lock(done_mutex);
-        const int finished = ++done;
-        Say(options, "models: " + std::to_string(finished) + " of " + std::to_string(kinds.size()) +
-                         " solved (" + ModelName(kinds[k]) + "), " + TimeLeft(start, finished, int(kinds.size())) +
-                         (field_after ? " before the chosen model's non-radial part" : ""));
-      }
-    }, double(which.size()));
+    if (which.size() == 1) {
+      solve_one(which[0]);
+    } else {
+      cv::parallel_for_(cv::Range(0, int(which.size())), [&](const cv::Range& range) {
+        for (int i = range.start; i < range.end; ++i) solve_one(which[size_t(i)]);
+      }, double(which.size()));
+    }
     if (stopped) std::rethrow_exception(stopped);
   };
   std::vector<size_t> angle, pinhole;

@@ -234,7 +234,7 @@ bool WorseBeyondNoise(const FinalSolve& candidate, const FinalSolve& best) {
 // px of held-out RMS, consistently over the folds, and moved the
 // projection 0.01 px further from the truth).
 void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::string& what,
-                 MonoState* s) {
+                 int cores, MonoState* s) {
   const Prepared& p = s->prepared;
   const bool warp_free = s->warp.free;
   auto name = [](const FieldTrial& t) {
@@ -336,27 +336,27 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
   // One ladder of fields solved from the base, in order, until two in a row
   // predict worse than the best of the ladder beyond the spread; returns
   // the candidate of its lowest held-out RMS (0: none solved). The trials
-  // run two at a time, each from the same start (one core each; the ladder
-  // judged in order, so a stop wastes at most the one solved beside it).
-  // With `one_grid` (the weights of one grid), each pair from the newest
-  // solve before it.
+  // run `cores` at a time, each from the same start (the ladder judged in
+  // order, so a stop wastes at most the ones solved beside it). With
+  // `one_grid` (the weights of one grid), each group from the newest solve
+  // before it.
   int fields = 0;  // solved so far, for the progress lines
   const int most_fields = int(std::size(kFieldSmoothnessLadder) + std::size(kFieldLadder) - 1);
   const auto fields_start = std::chrono::steady_clock::now();
-  constexpr size_t kAtOnce = 2;
+  const size_t at_once = size_t(std::max(cores, 1));
   auto climb = [&](const std::vector<FieldTrial>& ladder, bool one_grid) {
     size_t best = 0;
     int worse_in_a_row = 0;
-    for (size_t first = 0; first < ladder.size() && worse_in_a_row < 2; first += kAtOnce) {
+    for (size_t first = 0; first < ladder.size() && worse_in_a_row < 2; first += at_once) {
       const bool warm = one_grid && best != 0;
       const FinalSolve start = candidates[warm ? candidates.size() - 1 : base];
-      std::vector<Solved> pair(std::min(kAtOnce, ladder.size() - first));
-      cv::parallel_for_(cv::Range(0, int(pair.size())), [&](const cv::Range& range) {
+      std::vector<Solved> group(std::min(at_once, ladder.size() - first));
+      cv::parallel_for_(cv::Range(0, int(group.size())), [&](const cv::Range& range) {
         for (int j = range.start; j < range.end; ++j)
-          pair[size_t(j)] = solve_from(start, candidates[base].camera, ladder[first + size_t(j)],
+          group[size_t(j)] = solve_from(start, candidates[base].camera, ladder[first + size_t(j)],
                                        warm ? &start.camera : nullptr);
-      }, double(pair.size()));
-      for (Solved& solved : pair) {
+      }, double(group.size()));
+      for (Solved& solved : group) {
         if (worse_in_a_row == 2) break;
         if (!keep(std::move(solved))) return best;
         const FinalSolve& newest = candidates.back();
@@ -570,7 +570,7 @@ void SolveRadial(const CameraData& data, const BoardExtent& board, const Calibra
 }  // namespace
 
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               const ModelPlan& plan, MonoState* s, int camera) {
+               const ModelPlan& plan, MonoState* s, int camera, int cores) {
   if (plan.from_radial) {
     const MonoState& radial = plan.from_radial->camera[camera];
     *s = radial;
@@ -580,7 +580,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
     if (plan.keep_radial) plan.keep_radial->camera[camera] = *s;
   }
   const std::string what = s->prepared.name + " camera (" + ModelName(plan.model) + ")";
-  if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, s);
+  if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, cores, s);
   // The final solve: the chosen model, its outliers left out.
   SolveAll(s->problem.cameras[0], AsAsked(options, what), s->warp.free, options, s);
   RequireUnfolded(s->problem, 0, s->prepared.name);  // before the cross-validation it would waste

@@ -56,9 +56,10 @@ struct RadialStates {
 // the final solve or chosen by the held-out RMS as options.board_warp says.
 // `camera` is its slot in plan.keep_radial and plan.from_radial (0: left):
 // with from_radial the radial solve is not repeated, its copy resumed.
+// `cores`: how many trials of the field's ladders may be solved at once.
 // Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-               const ModelPlan& plan, MonoState* state, int camera = 0);
+               const ModelPlan& plan, MonoState* state, int camera = 0, int cores = 1);
 
 // The cross-validation of the state's last solve: the one --knots auto made,
 // else made now (options.cv_folds).
