@@ -452,6 +452,9 @@ TEST(Problem, LinearisedAtTheTruthHasOneBlockPerViewAndZeroResiduals) {
     EXPECT_EQ(block.pose, b);
     EXPECT_EQ(block.r.size(), 2 * p.rig.data.left.views[b].size()) << "view " << b;
     EXPECT_EQ(block.J_free.rows(), block.r.size());
+    // Without a field every view reads every free parameter.
+    ASSERT_EQ(int(block.columns.size()), lin.free_size);
+    for (int c = 0; c < lin.free_size; ++c) EXPECT_EQ(block.columns[size_t(c)], c);
     EXPECT_EQ(block.J_free.cols(), lin.free_size);
     EXPECT_EQ(block.J_pose.cols(), 6);
     EXPECT_LT(block.r.cwiseAbs().maxCoeff(), 1e-9) << "view " << b;

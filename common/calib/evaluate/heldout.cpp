@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <numeric>
 
@@ -56,56 +57,62 @@ namespace {
 // What one board pose's corners (those of every observation on it) add to
 // the normal equations of the free parameters f and the pose p, and their
 // Schur complement with the pose eliminated: S = A_ff - A_fp A_pp^-1 A_pf,
-// b = g_f - A_fp A_pp^-1 g_p.
+// b = g_f - A_fp A_pp^-1 g_p; over the free parameters its corners depend
+// on (`columns`, ascending: a view reads few of a field's coefficients).
 struct PoseTerms {
   int view = -1;
   std::vector<int> blocks;  // into Linearisation::blocks
   // A_pp^-1; none where A_pp is not positive definite (its corners cannot
   // fix the pose: it adds nothing)
   std::optional<Eigen::Matrix<double, 6, 6>> App_inverse;
-  Eigen::MatrixXd S;
-  Eigen::VectorXd b;
+  std::vector<int> columns;
+  Eigen::MatrixXd S;  // columns x columns
+  Eigen::VectorXd b;  // columns
 };
 
-// The columns of J with a non-zero entry.
-std::vector<int> NonZeroColumns(const Eigen::MatrixXd& J) {
-  std::vector<int> columns;
-  for (Eigen::Index c = 0; c < J.cols(); ++c)
-    if (!J.col(c).isZero(0.0)) columns.push_back(int(c));
-  return columns;
+// *S += sign pose.S and *b += sign pose.b, scattered to the free parameters.
+void AddPose(const PoseTerms& pose, double sign, Eigen::MatrixXd* S, Eigen::VectorXd* b) {
+  for (size_t i = 0; i < pose.columns.size(); ++i) {
+    (*b)(pose.columns[i]) += sign * pose.b(Eigen::Index(i));
+    for (size_t j = 0; j < pose.columns.size(); ++j)
+      (*S)(pose.columns[i], pose.columns[j]) += sign * pose.S(Eigen::Index(i), Eigen::Index(j));
+  }
 }
 
 std::vector<PoseTerms> PosesOf(const Problem& problem, const Linearisation& lin) {
   std::vector<PoseTerms> poses;
-  const int nf = lin.free_size;
   for (size_t k = 0; k < lin.blocks.size(); ++k) {
     const Linearisation::Block& block = lin.blocks[k];
     if (block.pose >= int(poses.size())) poses.resize(block.pose + 1);
-    poses[block.pose].blocks.push_back(int(k));
-    poses[block.pose].view = problem.observations[block.observation].view;
+    PoseTerms& pose = poses[block.pose];
+    pose.blocks.push_back(int(k));
+    pose.view = problem.observations[block.observation].view;
+    std::vector<int> both;
+    std::set_union(pose.columns.begin(), pose.columns.end(), block.columns.begin(), block.columns.end(),
+                   std::back_inserter(both));
+    pose.columns = std::move(both);
   }
   for (PoseTerms& pose : poses) {
+    const Eigen::Index n = Eigen::Index(pose.columns.size());
     Eigen::Matrix<double, 6, 6> App = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::MatrixXd Afp = Eigen::MatrixXd::Zero(nf, 6);
+    Eigen::MatrixXd Afp = Eigen::MatrixXd::Zero(n, 6);
     Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
-    pose.S = Eigen::MatrixXd::Zero(nf, nf);
-    pose.b = Eigen::VectorXd::Zero(nf);
+    pose.S = Eigen::MatrixXd::Zero(n, n);
+    pose.b = Eigen::VectorXd::Zero(n);
     for (int k : pose.blocks) {
       const Linearisation::Block& block = lin.blocks[k];
       App += block.J_pose.transpose() * block.J_pose;
       gp += block.J_pose.transpose() * block.r;
-      // A view reads few of a field's coefficients (field_blocks.h): its
-      // products over the columns it has, scattered.
-      const std::vector<int> columns = NonZeroColumns(block.J_free);
-      Eigen::MatrixXd J(block.J_free.rows(), Eigen::Index(columns.size()));
-      for (size_t j = 0; j < columns.size(); ++j) J.col(Eigen::Index(j)) = block.J_free.col(columns[j]);
+      const Eigen::MatrixXd& J = block.J_free;
       const Eigen::MatrixXd JtJ = J.transpose() * J, JtP = J.transpose() * block.J_pose;
       const Eigen::VectorXd Jtr = J.transpose() * block.r;
-      for (size_t i = 0; i < columns.size(); ++i) {
-        Afp.row(columns[i]) += JtP.row(Eigen::Index(i));
-        pose.b(columns[i]) += Jtr(Eigen::Index(i));
-        for (size_t j = 0; j < columns.size(); ++j)
-          pose.S(columns[i], columns[j]) += JtJ(Eigen::Index(i), Eigen::Index(j));
+      std::vector<Eigen::Index> at;  // the block's columns among the pose's
+      for (int c : block.columns)
+        at.push_back(std::lower_bound(pose.columns.begin(), pose.columns.end(), c) - pose.columns.begin());
+      for (size_t i = 0; i < at.size(); ++i) {
+        Afp.row(at[i]) += JtP.row(Eigen::Index(i));
+        pose.b(at[i]) += Jtr(Eigen::Index(i));
+        for (size_t j = 0; j < at.size(); ++j) pose.S(at[i], at[j]) += JtJ(Eigen::Index(i), Eigen::Index(j));
       }
     }
     pose.App_inverse = PoseBlockInverse(App);
@@ -167,10 +174,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
   Eigen::MatrixXd S_all = lin.prior_J.transpose() * lin.prior_J;
   Eigen::VectorXd b_all = lin.prior_J.transpose() * lin.prior_r;
   for (const PoseTerms& pose : poses)
-    if (pose.App_inverse) {
-      S_all += pose.S;
-      b_all += pose.b;
-    }
+    if (pose.App_inverse) AddPose(pose, 1, &S_all, &b_all);
   // Each residual pair's corner: its index and distance from its camera's
   // principal point (a block holds its observation's inlier corners in order).
   std::vector<std::vector<double>> radius(lin.blocks.size());
@@ -197,10 +201,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
     Eigen::MatrixXd S = S_all;
     Eigen::VectorXd b = b_all;
     for (const PoseTerms& pose : poses)
-      if (pose.App_inverse && is_held(pose)) {
-        S -= pose.S;
-        b -= pose.b;
-      }
+      if (pose.App_inverse && is_held(pose)) AddPose(pose, -1, &S, &b);
     const std::optional<Eigen::VectorXd> step = Step(S, b);
     if (!step) continue;  // the other folds do not determine the camera
     // How far from the centre the training views reach, per camera.
@@ -220,7 +221,9 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
       Eigen::Matrix<double, 6, 1> gp = Eigen::Matrix<double, 6, 1>::Zero();
       for (int index : pose.blocks) {
         const Linearisation::Block& block = lin.blocks[index];
-        e.push_back(block.r + block.J_free * *step);
+        Eigen::VectorXd block_step(block.columns.size());
+        for (size_t j = 0; j < block.columns.size(); ++j) block_step(Eigen::Index(j)) = (*step)(block.columns[j]);
+        e.push_back(block.r + block.J_free * block_step);
         gp += block.J_pose.transpose() * e.back();
       }
       const Eigen::Matrix<double, 6, 1> pose_step = -*pose.App_inverse * gp;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numeric>
 
 #include "calib/solver/covariance.h"
 #include "calib/solver/field_blocks.h"
@@ -394,15 +395,28 @@ Linearisation Linearise(Problem& problem, const std::string& what) {
   Linearisation out;
   out.free_size = crs.num_cols - pose_columns;
   // Rows [row, row + count) of the Jacobian: by the free parameters into
-  // *free and, if pose_column >= 0, by that pose into *pose.
-  auto rows = [&](int row, int count, int pose_column, Eigen::MatrixXd* free,
-                  Eigen::MatrixXd* pose) {
-    free->setZero(count, out.free_size);
+  // *free, over the columns *columns (with `columns`, those with an entry;
+  // else every one) and, if pose_column >= 0, by that pose into *pose.
+  auto rows = [&](int row, int count, int pose_column, std::vector<int>* columns,
+                  Eigen::MatrixXd* free, Eigen::MatrixXd* pose) {
+    std::vector<int> at(size_t(out.free_size), -1);  // free column -> column of *free
+    if (columns) {
+      for (int k = crs.rows[row]; k < crs.rows[row + count]; ++k)
+        if (crs.cols[k] >= pose_columns) at[size_t(crs.cols[k] - pose_columns)] = 0;
+      for (int c = 0; c < out.free_size; ++c)
+        if (at[size_t(c)] == 0) {
+          at[size_t(c)] = int(columns->size());
+          columns->push_back(c);
+        }
+    } else {
+      std::iota(at.begin(), at.end(), 0);
+    }
+    free->setZero(count, columns ? Eigen::Index(columns->size()) : out.free_size);
     if (pose) pose->setZero(count, 6);
     for (int i = 0; i < count; ++i)
       for (int k = crs.rows[row + i]; k < crs.rows[row + i + 1]; ++k) {
         const int column = crs.cols[k];
-        if (column >= pose_columns) (*free)(i, column - pose_columns) = crs.values[k];
+        if (column >= pose_columns) (*free)(i, at[size_t(column - pose_columns)]) = crs.values[k];
         else if (pose && column >= pose_column && column < pose_column + 6)
           (*pose)(i, column - pose_column) = crs.values[k];
       }
@@ -417,12 +431,12 @@ Linearisation Linearise(Problem& problem, const std::string& what) {
     block.observation = built.data_observation[b];
     block.pose = index;
     block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
-    rows(row, count, 6 * index, &block.J_free, &block.J_pose);
+    rows(row, count, 6 * index, &block.columns, &block.J_free, &block.J_pose);
     out.blocks.push_back(std::move(block));
     row += count;
   }
   out.prior_r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, crs.num_rows - row);
-  rows(row, crs.num_rows - row, -1, &out.prior_J, nullptr);
+  rows(row, crs.num_rows - row, -1, nullptr, &out.prior_J, nullptr);
   return out;
 }
 

@@ -95,6 +95,10 @@ struct Linearisation {
     int observation = 0;  // index into problem.observations
     int pose = 0;         // the board pose's index among the distinct poses
     Eigen::VectorXd r;
+    // The free parameters its rows depend on (a view reads few of a
+    // field's coefficients), ascending, and d r / d them: J_free's column
+    // j is the free parameter columns[j].
+    std::vector<int> columns;
     Eigen::MatrixXd J_free, J_pose;  // J_pose: 6 columns
   };
   int free_size = 0;
