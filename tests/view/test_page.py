@@ -17,6 +17,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
+import widestereo
 from view_support import CALIBRATION, free_port, key_file, until
 
 
@@ -43,6 +44,14 @@ def green_pixels(png):
     image = cv2.imdecode(np.frombuffer(png, np.uint8), cv2.IMREAD_COLOR)
     b, g, r = image[:, :, 0].astype(int), image[:, :, 1].astype(int), image[:, :, 2].astype(int)
     return int(np.count_nonzero((g > 180) & (r < 90) & (b < 90)))
+
+
+def post_command(driver, body):
+    """POSTs a command as the page does; the HTTP status."""
+    return driver.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        fetch('command', {method: 'POST', headers: {'X-Widestereo-Page': '1', 'Content-Type': 'application/json'},
+                          body: JSON.stringify(arguments[0])}).then(r => done(r.status));""", body)
 
 
 def screenshot(driver, bus, name):
@@ -99,12 +108,11 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     # Without the key: the buttons are disabled, say why, and the server sends nothing.
     browser.get(bus.page(open_port, readonly))
     until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
-    assert all(not b.is_enabled() for b in browser.find_elements(By.CSS_SELECTOR, "button.command"))
-    status = browser.execute_async_script("""
-        const done = arguments[arguments.length - 1];
-        fetch('command', {method: 'POST', headers: {'X-Widestereo-Page': '1', 'Content-Type': 'application/json'},
-                          body: JSON.stringify({command: 'solve'})}).then(r => done(r.status));""")
-    assert status == 403
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card button.remove"), 20, "the views listed")
+    assert browser.execute_script(  # one look: the list is drawn anew as views come
+        "return [...document.querySelectorAll('button.command, button.remove')].every(b => b.disabled);")
+    for body in ({"command": "solve"}, {"command": "remove", "frame": 1, "utime": 1}):
+        assert post_command(browser, body) == 403
 
     # With it: solve from the page, accepted by the keyed stereo-calibrate.
     browser.get(bus.page(keyed_port, keyed))
@@ -130,12 +138,43 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert all(r.find_elements(By.TAG_NAME, "td")[1].text == solved["model"] for r in intrinsics)
     screenshot(browser, bus, "calibration-solved-calibration.png")
 
+    # The views, oldest last, each with its RMS in the solve (the report's), the
+    # newest with a thumbnail of the frame the page was shown.
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card[data-left-rms]"), 30, "the views' RMS")
+    # One look (the list is drawn anew as views come).
+    listed = browser.execute_script("""
+        const cards = [...document.querySelectorAll('#view-list .view-card')].reverse();
+        const rms = (v) => v === undefined ? null : Number(v);
+        return {count: +document.querySelector('#view-list').dataset.views,
+                views: cards.map(c => [rms(c.dataset.leftRms), rms(c.dataset.rightRms)])};""")
+    assert listed["count"] == len(listed["views"])
+    solved_rms = [list(pair) for pair in zip(solved["cameras"][0]["view_rms"], solved["cameras"][1]["view_rms"])]
+    assert listed["views"][:len(solved_rms)] == solved_rms
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card canvas[data-image='1']"), 30,
+          "a view's thumbnail drawn")
+    screenshot(browser, bus, "calibration-views.png")
+
+    # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
+    frame_id, utime = browser.execute_script("""
+        const card = document.querySelector('#view-list .view-card');
+        card.querySelector('button.remove').click();
+        return [+card.dataset.frameId, +card.dataset.utime];""")
+    shown = "#view-list .view-card[data-frame-id='%d'][data-utime='%d']" % (frame_id, utime)
+    until(lambda: not browser.find_elements(By.CSS_SELECTOR, shown), 30, "the removed view gone from the list")
+    assert "remove frame %d sent" % frame_id in browser.find_element(By.ID, "command-why").text
+
     bus.stop()
+    views_file = os.path.join(bus.folder, "stereo-calibrate-views.lcmlog")
+    kept = [(c.frame_id, c.utime) for c in (e.message for e in widestereo.read_log(views_file))]
+    removed = [(c.frame_id, c.utime) for c in (e.message for e in widestereo.read_log(
+        os.path.join(bus.folder, "stereo-calibrate-views-removed.lcmlog")))]
+    assert (frame_id, utime) not in kept and len(kept) >= len(listed["views"]) - 1 and removed == [(frame_id, utime)]
     commands = bus.events("STEREO_COMMAND")
     senders = [c.auth.sender for c in commands]
     assert not [s for s in senders if " pid %d" % readonly.pid in s], "the read-only stereo-view sent a command"
-    assert len(commands) == 1 and " pid %d" % keyed.pid in senders[0], senders
+    assert len(commands) == 2 and all(" pid %d" % keyed.pid in s for s in senders), senders
     assert commands[0].command == "solve" and commands[0].auth.key_id != 0
+    assert commands[1].command == "remove" and list(commands[1].args) == ["frame=%d" % frame_id, "utime=%d" % utime]
 
 
 def view_counters(bus, pid):

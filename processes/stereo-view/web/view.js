@@ -267,7 +267,8 @@ function showStatus(status) {
   showProcesses(status.processes);
   stamp($("#processes-age"), status.now_us);
   const why = status.commands_refused;
-  for (const button of document.querySelectorAll("button.command")) {
+  state.commandsRefused = why;
+  for (const button of document.querySelectorAll("button.command, button.remove")) {
     button.disabled = why !== "";
     button.title = why;
   }
@@ -276,18 +277,19 @@ function showStatus(status) {
   document.body.dataset.browserSkipped = status.counters.browsers.skipped;
 }
 
-for (const button of document.querySelectorAll("button.command")) {
-  button.addEventListener("click", async () => {
-    const reply = await fetch("command", {
-      method: "POST",
-      headers: { "Content-Type": "application/json", "X-Widestereo-Page": "1" },
-      body: JSON.stringify({ command: button.dataset.command }),
-    });
-    const body = await reply.json();
-    if (reply.ok) setCommandNote(`${button.dataset.command} sent`, "sent");
-    else setCommandNote(body.error, "error");
+// Posts a command (its JSON body) to stereo-view; says `what` was sent, or why not.
+async function sendCommand(body, what) {
+  const reply = await fetch("command", {
+    method: "POST",
+    headers: { "Content-Type": "application/json", "X-Widestereo-Page": "1" },
+    body: JSON.stringify(body),
   });
+  const answer = await reply.json();
+  if (reply.ok) setCommandNote(`${what} sent`, "sent");
+  else setCommandNote(answer.error, "error");
 }
+for (const button of document.querySelectorAll("button.command"))
+  button.addEventListener("click", () => sendCommand({ command: button.dataset.command }, button.dataset.command));
 
 function setCommandNote(text, kind) {
   const note = $("#command-why");
@@ -465,6 +467,7 @@ function connect() {
   on("spread", showSpread);
   on("calibration", showCalibration);
   on("result", showResult);
+  on("views", showViews);
   on("status", showStatus);
   on("rectified", showRectified);
   on("disparity", showDisparity);
