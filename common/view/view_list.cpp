@@ -24,9 +24,9 @@ json Rms(double rms) { return rms < 0 ? json(nullptr) : json(rms); }
 
 ViewList::ViewList(BlobStore& blobs, FrameImage frame_image) : blobs_(blobs), frame_image_(std::move(frame_image)) {}
 
-std::string ViewList::Thumbnail(const Key& key) {
+std::string ViewList::Thumbnail(const Key& key, const std::string& side) {
   if (const auto found = thumbnails_.find(key); found != thumbnails_.end()) return found->second;
-  const auto jpeg = frame_image_(key.first, key.second);
+  const auto jpeg = frame_image_(key.first, key.second, side);
   if (!jpeg) return "";
   const cv::Mat image = cv::imdecode(jpeg->bytes, cv::IMREAD_COLOR);
   if (image.empty()) return "";
@@ -49,7 +49,7 @@ std::optional<std::string> ViewList::Event(const widestereo::calibration_views_t
   for (auto view = views.views.rbegin(); view != views.views.rend(); ++view) {
     const Key key{view->frame_id, view->frame_utime};
     held.insert(key);
-    const std::string thumbnail = Thumbnail(key);
+    const std::string thumbnail = Thumbnail(key, view->left_corners > 0 ? "left" : "right");  // as the page draws
     list.push_back({{"frame_id", view->frame_id},
                     {"utime", view->frame_utime},
                     {"left_corners", view->left_corners},

@@ -1,8 +1,9 @@
 // The calibration's views as the page lists them (topic "views"): every view
 // stereo-calibrate holds (CALIBRATION_VIEWS), named by its frame id, with its
 // corner counts, the board's outline in each image, its RMS in the last
-// solve, and a thumbnail of its left image when stereo-view still had that
-// frame (one of the last frames it showed). Thumbnails are small
+// solve, and a thumbnail of its left image (of its right one when the left
+// did not see the board) when stereo-view still had that frame (one of the
+// last frames it showed). Thumbnails are small
 // (kThumbnailWidth pixels across) and few (the newest kThumbnailsKept, in
 // the BlobStore): a session of hundreds of views costs the page's server
 // at most kThumbnailsKept small JPEGs. Not thread-safe: the input thread's.
@@ -27,8 +28,9 @@ inline constexpr size_t kThumbnailsKept = 64;
 
 class ViewList {
  public:
-  // The left image of a frame the page was shown (its JPEG blob), or null.
-  using FrameImage = std::function<std::shared_ptr<const Blob>(int64_t frame_id, int64_t utime)>;
+  // An image ("left" or "right") of a frame the page was shown (its JPEG blob), or null.
+  using FrameImage =
+      std::function<std::shared_ptr<const Blob>(int64_t frame_id, int64_t utime, const std::string& side)>;
 
   ViewList(BlobStore& blobs, FrameImage frame_image);
 
@@ -39,7 +41,7 @@ class ViewList {
  private:
   using Key = std::pair<int64_t, int64_t>;  // frame id, utime
   // The thumbnail's blob path of a view, made now if its frame is at hand; "" when not.
-  std::string Thumbnail(const Key& key);
+  std::string Thumbnail(const Key& key, const std::string& side);
 
   BlobStore& blobs_;
   FrameImage frame_image_;

@@ -69,7 +69,8 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       blobs_(blobs),
       audience_(audience),
       options_(options),
-      view_list_(blobs, [this](int64_t frame_id, int64_t utime) { return RecentLeftImage(frame_id, utime); }),
+      view_list_(blobs, [this](int64_t frame_id, int64_t utime,
+                               const std::string& side) { return RecentImage(frame_id, utime, side); }),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
@@ -119,7 +120,7 @@ std::string ViewNode::Command(const std::string& command, std::optional<std::pai
   return "";
 }
 
-std::shared_ptr<const Blob> ViewNode::RecentLeftImage(int64_t frame_id, int64_t utime) {
+std::shared_ptr<const Blob> ViewNode::RecentImage(int64_t frame_id, int64_t utime, const std::string& side) {
   std::string event;
   {
     std::lock_guard<std::mutex> lock(recent_mutex_);
@@ -127,9 +128,9 @@ std::shared_ptr<const Blob> ViewNode::RecentLeftImage(int64_t frame_id, int64_t 
     if (frame == recent_.end()) return nullptr;
     event = frame->second;
   }
-  const auto parsed = nlohmann::json::parse(event);  // FrameEvent's: "blob/ID" the left image's src
-  if (parsed.at("utime") != utime) return nullptr;
-  return blobs_.Get(std::stoll(parsed.at("left").at("src").get<std::string>().substr(5)));
+  const auto parsed = nlohmann::json::parse(event);  // FrameEvent's: each image's src "blob/ID"
+  if (parsed.at("utime") != utime || !parsed.contains(side)) return nullptr;
+  return blobs_.Get(std::stoll(parsed.at(side).at("src").get<std::string>().substr(5)));
 }
 
 Rectification ShownRectification(const Rig& rig, int max_width) {

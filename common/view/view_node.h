@@ -110,8 +110,8 @@ class ViewNode {
                       Process::FrameGaps gaps = Process::FrameGaps::count);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
-  // The left image's JPEG of a recent frame shown, or null (view/view_list.h).
-  std::shared_ptr<const Blob> RecentLeftImage(int64_t frame_id, int64_t utime);
+  // The JPEG of an image ("left", "right") of a recent frame shown, or null (view/view_list.h).
+  std::shared_ptr<const Blob> RecentImage(int64_t frame_id, int64_t utime, const std::string& side);
   void PublishView();
 
   Process& process_;

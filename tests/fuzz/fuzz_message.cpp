@@ -132,7 +132,7 @@ void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
 // stereo-view lists every view stereo-calibrate holds (no frame at hand: no thumbnail).
 void Use(const calibration_views_t& views) {
   ws::view::BlobStore blobs;
-  ws::view::ViewList list(blobs, [](int64_t, int64_t) { return nullptr; });
+  ws::view::ViewList list(blobs, [](int64_t, int64_t, const std::string&) { return nullptr; });
   if (!list.Event(views) || list.Event(views)) Violated("the same views listed twice, or not at all");
 }
 

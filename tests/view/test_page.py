@@ -54,7 +54,10 @@ def post_command(driver, body):
                           body: JSON.stringify(arguments[0])}).then(r => done(r.status));""", body)
 
 
-def screenshot(driver, bus, name):
+def screenshot(driver, bus, name, element=None):
+    """The window as it is, or scrolled to show the element of that id first."""
+    if element:
+        driver.execute_script("document.getElementById(arguments[0]).scrollIntoView();", element)
     path = os.path.join(bus.folder, name)
     driver.save_screenshot(path)
     return path
@@ -152,7 +155,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert listed["views"][:len(solved_rms)] == solved_rms
     until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card canvas[data-image='1']"), 30,
           "a view's thumbnail drawn")
-    screenshot(browser, bus, "calibration-views.png")
+    screenshot(browser, bus, "calibration-views.png", "view-list")
 
     # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
     frame_id, utime = browser.execute_script("""

@@ -1,6 +1,7 @@
 // stereo-view's page: the views stereo-calibrate holds (the "views" event),
 // each a card: its frame (the view's name), a thumbnail of its left image
-// when stereo-view had it, the board's outline, its RMS in the last solve,
+// (its right one when the left did not see the board) when stereo-view had
+// it, the board's outline, its RMS in the last solve,
 // and a button that asks stereo-calibrate to remove it (with the rig key).
 // It reads view.js's $, fmt, loadImage, state and sendCommand when it runs.
 "use strict";
