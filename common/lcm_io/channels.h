@@ -11,6 +11,7 @@ inline constexpr const char* kCalibrationHealth = "CALIBRATION_HEALTH";
 inline constexpr const char* kStereoCalibration = "STEREO_CALIBRATION";
 inline constexpr const char* kCalibrationResult = "CALIBRATION_RESULT";
 inline constexpr const char* kCalibrationViews = "CALIBRATION_VIEWS";
+inline constexpr const char* kCalibrationPreview = "CALIBRATION_PREVIEW";
 inline constexpr const char* kStereoDisparity = "STEREO_DISPARITY";
 inline constexpr const char* kStereoCloud = "STEREO_CLOUD";
 inline constexpr const char* kStereoCloudFiltered = "STEREO_CLOUD_FILTERED";

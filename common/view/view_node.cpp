@@ -279,6 +279,8 @@ void ViewNode::Start() {
   });
   process_.Subscribe<widestereo::calibration_result_t>(
       channel::kCalibrationResult, [this](const auto& m) { Show("result", ResultEvent(m)); });
+  process_.Subscribe<widestereo::calibration_result_t>(
+      channel::kCalibrationPreview, [this](const auto& m) { Show("preview", ResultEvent(m)); });
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(RigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });

@@ -6,7 +6,8 @@
 //    in (when that frame was one of the last kRecentFrames shown: the
 //    corners of other frames are not drawn), and every board's measures
 //    (view/board_spread.h: camera_calibration's bars), CALIBRATION_STATUS,
-//    CALIBRATION_RESULT: the calibration view;
+//    CALIBRATION_RESULT and CALIBRATION_PREVIEW (the uncertainty of the
+//    views so far, before a solve): the calibration view;
 //  - STEREO_CALIBRATION (and --calib): the calibration in use, K, the
 //    distortion, R, T, the baseline;
 //  - STEREO_DISPARITY (colours and legend, at most image_hz),

@@ -142,6 +142,13 @@ int main(int argc, char** argv) {
                  "and, with --knots auto, knot_curve.png (needs gnuplot)");
   app.add_option("--rig-name", node.rig_name,
                  "The rig's name in the figures' titles (default: the --out file's name)");
+  app.add_option("--preview-every", node.preview_s,
+                 "Live, while collecting (before the first solve), every this many seconds when the views "
+                 "changed: a quick solve of the views so far (the first model, fixed knots, each camera alone, "
+                 "no cross-validation) whose projection uncertainty goes on CALIBRATION_PREVIEW for the live "
+                 "page; nothing is written. 0: never")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
                  "NAME-<UTC time>.lcmlog, 'restore' brings the newest back, 'remove frame=ID' takes one view out and "

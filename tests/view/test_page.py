@@ -72,7 +72,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
-                                   "--report", report, "--key-file", key])
+                                   "--report", report, "--key-file", key, "--preview-every", "1"])
     keyed_port, open_port = free_port(), free_port()
     keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
     readonly = bus.start("stereo-view", ["--port", str(open_port)])
@@ -122,6 +122,11 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     until(lambda: browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").is_enabled(), 20,
           "the solve button enabled")
     until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 30, "coverage shown")
+    # Before the solve, the uncertainty of a quick solve of the views so far, per camera.
+    until(lambda: len(browser.find_elements(By.CSS_SELECTOR, "#preview .maps canvas")) == 2, 60,
+          "the views' uncertainty before a solve")
+    assert browser.find_element(By.ID, "preview").is_displayed() and attribute(browser, "#preview-model", "textContent") == "poly6"
+    screenshot(browser, bus, "calibration-preview.png", "preview")
     browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").click()
     row = until(lambda: browser.find_elements(By.CSS_SELECTOR, "#models tr.chosen"), 300, "the model table")[0]
     screenshot(browser, bus, "calibration-solved.png")
@@ -133,6 +138,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     maps = browser.find_elements(By.CSS_SELECTOR, "#maps canvas")
     assert len(maps) == 4, "residual and uncertainty maps of both cameras"
     assert all(m.is_displayed() for m in maps)
+    until(lambda: not browser.find_element(By.ID, "preview").is_displayed(), 10, "the preview gives way to the solve")
     # The solved calibration as the rig uses it: K, the distortion, R, T and the baseline.
     until(lambda: attribute(browser, "#baseline", "data-metres"), 60, "the calibration in use")
     assert float(attribute(browser, "#baseline", "data-metres")) == pytest.approx(solved["stereo"]["baseline_m"], rel=1e-9)

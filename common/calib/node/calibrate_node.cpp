@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "calib/node/calib_plots.h"
+#include "calib/node/preview_solve.h"
 #include "calib/node/report.h"
 #include "calib/node/result_message.h"
 #include "calib/node/solved_rig.h"
@@ -70,6 +71,7 @@ CalibrateNode::CalibrateNode(Process& process, NodeOptions options)
 
 CalibrateNode::~CalibrateNode() {
   if (worker_.joinable()) worker_.join();
+  if (preview_worker_.joinable()) preview_worker_.join();
 }
 
 void CalibrateNode::Start() {
@@ -84,7 +86,10 @@ void CalibrateNode::Start() {
       channel::kStereoCorners, [this](const auto& msg) { OnCorners(msg); }, 0, Process::FrameGaps::skipped);
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
                                             [this](const auto& msg) { commands_.Dispatch(msg); });
-  process_.Every(1000000, [this] { PublishStatus(); });
+  process_.Every(1000000, [this] {
+    PublishStatus();
+    MaybePreview();  // on this thread only
+  });
   if (options_.once && process_.file_input())
     process_.AtEndOfInput([this] {
       if (session_.views() == 0)
@@ -257,6 +262,34 @@ void CalibrateNode::PublishStatus() {
         std::tie(view.left_rms, view.right_rms) = found->second;
   }
   process_.Publish(channel::kCalibrationViews, views);
+}
+
+void CalibrateNode::MaybePreview() {
+  if (options_.preview_s <= 0 || process_.file_input() || previewing_ || solving_) return;
+  const auto collecting = [this] {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return state_ == "collecting";
+  };
+  const int64_t now = process_.Now();
+  if (!collecting() || (last_preview_us_ != 0 && now - last_preview_us_ < int64_t(options_.preview_s * 1e6))) return;
+  std::vector<int64_t> utimes;
+  StereoData data = session_.Data(nullptr, &utimes);
+  if (data.size() < options_.calibration.min_views || utimes == previewed_utimes_) return;
+  previewed_utimes_ = std::move(utimes);
+  last_preview_us_ = now;
+  previewing_ = true;
+  if (preview_worker_.joinable()) preview_worker_.join();
+  preview_worker_ = std::thread([this, collecting, data = std::move(data)] {
+    try {
+      const auto preview = PreviewSolve(data, options_.calibration, options_.models.front(), process_.Now());
+      if (collecting() && !solving_) process_.Publish(channel::kCalibrationPreview, preview);
+      process_.log().Detail("preview of " + std::to_string(data.size()) + " views published");
+    } catch (const Stopped&) {
+    } catch (const std::exception& e) {
+      process_.log().Detail(std::string("preview: ") + e.what());
+    }
+    previewing_ = false;
+  });
 }
 
 void CalibrateNode::KeepViewRms(const StereoCalibration& solved, const std::vector<int64_t>& frames,

@@ -17,6 +17,11 @@
 //    views per camera, coverage grids, RMS of the last solve (-1: none) and
 //    a hint for the person holding the board; with it CALIBRATION_VIEWS,
 //    every view held and its RMS in the last solve.
+//  - Live, while collecting (before the first solve, after a reset or a
+//    removal), every preview_s when the views changed: a quick solve of the
+//    views so far on a thread of its own (preview_solve.h), its projection
+//    uncertainty on CALIBRATION_PREVIEW; nothing written, STEREO_CALIBRATION
+//    and CALIBRATION_RESULT untouched.
 //  - After a solve: the calibration file (--out; with several models also
 //    one per model, calib.poly6.yaml), the report (--report), the figures
 //    (--plot-dir: distortion_curves.png, residual_map.png), Table II and
@@ -59,6 +64,7 @@ struct NodeOptions {
   std::string out_yaml, report_json, plot_dir;
   std::string rig_name;  // in the figures' titles; empty: the --out file's name
   bool once = false;
+  double preview_s = 10;  // seconds between previews at least; 0: none
   // The images each STEREO_CORNERS frame id came from (--images), to name
   // views in messages; without a name a view is "view 3 (frame 7)".
   std::map<int64_t, std::string> frame_names;
@@ -85,6 +91,8 @@ class CalibrateNode {
   void OnCommand(const CommandArgs& args);
   void Remove(const CommandArgs& args);
   void PublishStatus();
+  // Starts a preview solve when one is due (NodeOptions::preview_s).
+  void MaybePreview();
   // Reports what the session's last read of its state file found damaged.
   void ReportStateDamage();
   void Solve(std::vector<ModelKind> models, CalibrationOptions options);
@@ -127,6 +135,10 @@ class CalibrateNode {
   std::atomic<bool> solving_{false};
   std::vector<int64_t> solving_frames_;  // the running solve's views' frames (NameViews)
   std::thread worker_;
+  std::atomic<bool> previewing_{false};
+  int64_t last_preview_us_ = 0;
+  std::vector<int64_t> previewed_utimes_;  // the views of the last preview
+  std::thread preview_worker_;
 };
 
 }  // namespace ws::calib

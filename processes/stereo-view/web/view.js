@@ -214,7 +214,19 @@ function drawMap(title, rows, unit) {
   return figure;
 }
 
+// The uncertainty of a quick solve of the views so far, until a solve newer than it.
+function showPreview(preview) {
+  state.preview = preview;
+  $("#preview-model").textContent = preview.chosen;
+  const maps = $("#preview .maps");
+  maps.replaceChildren(...preview.cameras.map((c) => drawMap(c.name + " projection uncertainty", c.uncertainty_px, "px")));
+  stamp($("#preview-age"), preview.at_us);
+  $("#preview").hidden = Boolean(state.result && state.result.at_us > preview.at_us);
+}
+
 function showResult(result) {
+  state.result = result;
+  if (state.preview) $("#preview").hidden = state.preview.at_us < result.at_us;
   $("#result").hidden = false;
   $("#chosen-model").textContent = result.chosen;
   stamp($("#result-age"), result.at_us);
@@ -468,6 +480,7 @@ function connect() {
   on("calibration", showCalibration);
   on("result", showResult);
   on("views", showViews);
+  on("preview", showPreview);
   on("status", showStatus);
   on("rectified", showRectified);
   on("disparity", showDisparity);
