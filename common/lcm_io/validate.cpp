@@ -179,6 +179,20 @@ void Validate(const widestereo::calibration_result_t& msg) {
   }
 }
 
+void Validate(const widestereo::calibration_views_t& msg) {
+  const char* t = "calibration_views_t";
+  for (int c = 0; c < 2; ++c)
+    Require(msg.image_width[c] == 0 || ImageSizeAcceptable(msg.image_width[c], msg.image_height[c]), t,
+            "bad image size");
+  for (const auto& view : msg.views) {
+    Require(view.left_corners >= 0 && view.right_corners >= 0, t, "negative corner count");
+    const double rms[] = {view.left_rms, view.right_rms};
+    Require(AllFinite(rms), t, "non-finite RMS of frame " + std::to_string(view.frame_id));
+    for (const auto* outline : {&view.left_outline, &view.right_outline})
+      for (const auto& point : *outline) Require(AllFinite(point), t, "non-finite outline");
+  }
+}
+
 void Validate(const widestereo::disparity_t& msg) {
   Validate(msg.disparity);
   Require(msg.disparity.pixelformat == widestereo::image_t::PIXEL_FORMAT_FLOAT_GRAY32,

@@ -6,6 +6,7 @@
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_result_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
+#include "widestereo/calibration_views_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/command_t.hpp"
 #include "widestereo/disparity_t.hpp"
@@ -26,6 +27,7 @@ void Validate(const widestereo::stereo_calibration_t& msg);
 void Validate(const widestereo::calibration_status_t& msg);
 void Validate(const widestereo::calibration_health_t& msg);
 void Validate(const widestereo::calibration_result_t& msg);
+void Validate(const widestereo::calibration_views_t& msg);
 void Validate(const widestereo::disparity_t& msg);
 void Validate(const widestereo::point_cloud_t& msg);
 void Validate(const widestereo::cloud_stats_t& msg);

@@ -69,6 +69,8 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       blobs_(blobs),
       audience_(audience),
       options_(options),
+      view_list_(blobs, [this](int64_t frame_id, int64_t utime,
+                               const std::string& side) { return RecentImage(frame_id, utime, side); }),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
@@ -101,17 +103,34 @@ std::string ViewNode::CommandsRefused() const {
   return "";
 }
 
-std::string ViewNode::Command(const std::string& command) {
+std::string ViewNode::Command(const std::string& command, std::optional<std::pair<int64_t, int64_t>> view) {
   if (std::string why = CommandsRefused(); !why.empty()) return why;
-  if (command != "solve" && command != "save" && command != "reset" && command != "restore")
-    return "unknown command '" + command + "' (solve, save, reset or restore)";
+  if (command != "solve" && command != "save" && command != "reset" && command != "restore" && command != "remove")
+    return "unknown command '" + command + "' (solve, save, reset, restore or remove)";
+  if ((command == "remove") != view.has_value())
+    return command == "remove" ? "remove names a view: its frame id and utime" : command + " takes no view";
   widestereo::command_t msg{};
   msg.utime = WallMicros();
   msg.command = command;
   msg.target = "stereo-calibrate";
+  if (view) msg.args = {"frame=" + std::to_string(view->first), "utime=" + std::to_string(view->second)};
+  msg.nargs = int32_t(msg.args.size());
   process_.Publish(channel::kStereoCommand, msg);  // signed with the rig key
-  process_.log().Info("sent " + command + " to stereo-calibrate, from the page");
+  process_.log().Info("sent " + command + (view ? " " + msg.args[0] : "") + " to stereo-calibrate, from the page");
   return "";
+}
+
+std::shared_ptr<const Blob> ViewNode::RecentImage(int64_t frame_id, int64_t utime, const std::string& side) {
+  std::string event;
+  {
+    std::lock_guard<std::mutex> lock(recent_mutex_);
+    const auto frame = recent_.find(frame_id);
+    if (frame == recent_.end()) return nullptr;
+    event = frame->second;
+  }
+  const auto parsed = nlohmann::json::parse(event);  // FrameEvent's: each image's src "blob/ID"
+  if (parsed.at("utime") != utime || !parsed.contains(side)) return nullptr;
+  return blobs_.Get(std::stoll(parsed.at(side).at("src").get<std::string>().substr(5)));
 }
 
 Rectification ShownRectification(const Rig& rig, int max_width) {
@@ -255,8 +274,13 @@ void ViewNode::Start() {
     views_ = m.views_left + m.views_right;
     Show("coverage", CoverageEvent(m));
   });
+  SubscribeShown<widestereo::calibration_views_t>(channel::kCalibrationViews, [this](const auto& m) {
+    if (auto event = view_list_.Event(m)) Show("views", std::move(*event));
+  });
   process_.Subscribe<widestereo::calibration_result_t>(
       channel::kCalibrationResult, [this](const auto& m) { Show("result", ResultEvent(m)); });
+  process_.Subscribe<widestereo::calibration_result_t>(
+      channel::kCalibrationPreview, [this](const auto& m) { Show("preview", ResultEvent(m)); });
   process_.Subscribe<widestereo::stereo_calibration_t>(channel::kStereoCalibration, [this](const auto& m) {
     SetRig(RigFromMessage(m), "the STEREO_CALIBRATION of utime " + std::to_string(m.utime));
   });

@@ -6,7 +6,8 @@
 //    in (when that frame was one of the last kRecentFrames shown: the
 //    corners of other frames are not drawn), and every board's measures
 //    (view/board_spread.h: camera_calibration's bars), CALIBRATION_STATUS,
-//    CALIBRATION_RESULT: the calibration view;
+//    CALIBRATION_RESULT and CALIBRATION_PREVIEW (the uncertainty of the
+//    views so far, before a solve): the calibration view;
 //  - STEREO_CALIBRATION (and --calib): the calibration in use, K, the
 //    distortion, R, T, the baseline;
 //  - STEREO_DISPARITY (colours and legend, at most image_hz),
@@ -25,8 +26,11 @@
 // some browser shows that view (view/audience.h); the others are skipped
 // undecoded, as sampled ones are.
 //
+// CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h).
+//
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
-// arguments (the page names no file); sent signed, and only with the rig key.
+// arguments (the page names no file), and remove with the view's frame id
+// and utime; sent signed, and only with the rig key.
 #pragma once
 
 #include <map>
@@ -46,6 +50,7 @@
 #include "view/freshness.h"
 #include "view/page_events.h"
 #include "view/recording_watch.h"
+#include "view/view_list.h"
 #include "widestereo/disparity_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -81,9 +86,10 @@ class ViewNode {
 
   // Whether the page may send commands, and why not ("" when it may).
   std::string CommandsRefused() const;
-  // Sends `command` (solve, save, reset, restore) to stereo-calibrate; ""
-  // when sent, else why not (then nothing is sent).
-  std::string Command(const std::string& command);
+  // Sends `command` (solve, save, reset, restore; or remove, of the view of
+  // frame `view`: its frame id and utime) to stereo-calibrate; "" when sent,
+  // else why not (then nothing is sent).
+  std::string Command(const std::string& command, std::optional<std::pair<int64_t, int64_t>> view = std::nullopt);
 
  private:
   static constexpr size_t kRecentFrames = kFramesKept;  // view/page_events.h
@@ -105,6 +111,8 @@ class ViewNode {
                       Process::FrameGaps gaps = Process::FrameGaps::count);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
+  // The JPEG of an image ("left", "right") of a recent frame shown, or null (view/view_list.h).
+  std::shared_ptr<const Blob> RecentImage(int64_t frame_id, int64_t utime, const std::string& side);
   void PublishView();
 
   Process& process_;
@@ -116,6 +124,7 @@ class ViewNode {
   Freshness freshness_;
   std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
+  ViewList view_list_;  // the input thread's
   int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)

@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
                      "Calibrates a stereo rig from the board corners on STEREO_CORNERS (Zhang's "
                      "start, then a joint Ceres solve of every camera parameter, the B-spline or "
                      "polynomial distortion, R, T and every board pose). Publishes "
-                     "CALIBRATION_STATUS (coverage and a hint) every second and, after a solve "
+                     "CALIBRATION_STATUS (coverage and a hint) and CALIBRATION_VIEWS (every view held, its "
+                     "RMS in the last solve) every second and, after a solve "
                      "(a 'solve' command on STEREO_COMMAND, or --once at the end of a replayed "
                      "log), STEREO_CALIBRATION; writes the calibration file and report.\n\n"
                      "A folder of images to a calibration, with no bus:\n"
@@ -141,9 +142,17 @@ int main(int argc, char** argv) {
                  "and, with --knots auto, knot_curve.png (needs gnuplot)");
   app.add_option("--rig-name", node.rig_name,
                  "The rig's name in the figures' titles (default: the --out file's name)");
+  app.add_option("--preview-every", node.preview_s,
+                 "Live, while collecting (before the first solve), every this many seconds when the views "
+                 "changed: a quick solve of the views so far (the first model, fixed knots, each camera alone, "
+                 "no cross-validation) whose projection uncertainty goes on CALIBRATION_PREVIEW for the live "
+                 "page; nothing is written. 0: never")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--state", state,
                  "File keeping the accepted views across restarts ('reset' archives it beside itself as "
-                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back; a damaged one is kept as "
+                 "NAME-<UTC time>.lcmlog, 'restore' brings the newest back, 'remove frame=ID' takes one view out and "
+                 "keeps it in NAME-removed.lcmlog; a damaged one is kept as "
                  "NAME-damaged-<UTC time>.lcmlog and its intact views recovered); 'none' for none. Default: "
                  "LOG_DIR/stereo-calibrate-views.lcmlog live, none when replaying a log");
   if (auto rc = cli.Parse(argc, argv)) return *rc;

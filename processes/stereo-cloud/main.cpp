@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
                      "Filters the point clouds on STEREO_CLOUD with PCL (depth pass-through, voxel "
                      "grid, statistical outlier removal, RANSAC plane) and publishes "
                      "STEREO_CLOUD_FILTERED and CLOUD_STATS. Live, it filters the newest cloud waiting; "
-                     "the clouds it skips are counted as dropped in PROCESS_STATUS. Writes PCD files every --save-every "
+                     "the clouds it skips, and the frames stereo-match did not make a cloud of, are counted as "
+                     "skipped in PROCESS_STATUS. Writes PCD files every --save-every "
                      "clouds into --pcd-dir, and there on a 'save [path=NAME.pcd]' command on "
                      "STEREO_COMMAND.");
   ws::CloudFilterConfig filter;
@@ -34,8 +35,10 @@ int main(int argc, char** argv) {
     ws::Process process(cli.options());
     ws::CloudNode node(process, filter, save);
     process.SetProgress([&] { return node.Progress(); });
+    // stereo-match makes a cloud of the newest pair only: the frame ids it
+    // passed over are skipped by design, not lost (runtime/process.h).
     process.Subscribe<widestereo::point_cloud_t>(
-        ws::channel::kStereoCloud, [&](auto& msg) { node.OnCloud(msg); }, 2);
+        ws::channel::kStereoCloud, [&](auto& msg) { node.OnCloud(msg); }, 2, ws::Process::FrameGaps::skipped);
     process.Subscribe<widestereo::command_t>(
         ws::channel::kStereoCommand, [&](const auto& msg) { node.OnCommand(msg); });
     return process.Run();

@@ -1,7 +1,7 @@
 // stereo-view: the live page of the rig, in any browser: the calibration
-// coach (both images with the corners found, the coverage, after a solve the
-// residual and uncertainty maps and the model table, the hint, the command
-// buttons) and the depth view (the rectified pair, the disparity in metres,
+// coach (both images with the corners found, the coverage, the uncertainty
+// of the views so far, the list of views, after a solve the residual and
+// uncertainty maps and the model table, the hint, the command buttons) and the depth view (the rectified pair, the disparity in metres,
 // the filtered cloud in 3-D, the plane, the health, every process's rates).
 #include <sys/resource.h>
 
@@ -19,7 +19,8 @@
 int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-view",
                      "Serves the rig's live page over HTTP (open http://ADDRESS:PORT/): the calibration "
-                     "view (both images with the corners found, the coverage, the residual and projection "
+                     "view (both images with the corners found, the coverage, the projection uncertainty of the "
+                     "views so far, the list of views with a remove button each, the residual and projection "
                      "uncertainty maps and the model table after a solve, the hint, buttons for solve, "
                      "save, reset and restore) and the depth view (the rectified pair, the disparity in "
                      "metres, the filtered cloud in 3-D, the plane, the health, the processes' rates). "

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -37,6 +38,7 @@ PageServer::PageServer(Process& process, EventHub& hub, const BlobStore& blobs, 
               {"/cloud3d.js", {kCloud3dJs, "text/javascript"}},
               {"/freshness.js", {kFreshnessJs, "text/javascript"}},
               {"/process_table.js", {kProcessTableJs, "text/javascript"}},
+              {"/view_list.js", {kViewListJs, "text/javascript"}},
               {"/three.min.js", {ReadFile(three_dir + "/build/three.min.js"), "text/javascript"}},
               {"/OrbitControls.js",
                {ReadFile(three_dir + "/examples/js/controls/OrbitControls.js"), "text/javascript"}}} {
@@ -118,9 +120,15 @@ void PageServer::Command(const HttpRequest& req, HttpResponse& res) {
     return reply(400, "a command comes from the page (header X-Widestereo-Page: 1)");
   // At most kMaxBody bytes (the server refused more), so at most that deep.
   const auto body = nlohmann::json::parse(req.body, nullptr, false);
-  if (!body.is_object() || !body.contains("command") || !body["command"].is_string() || body.size() != 1)
-    return reply(400, "the body is {\"command\": NAME} and nothing else");
-  const std::string why = node_.Command(body["command"].get<std::string>());
+  auto integer = [&body](const char* key) { return body.contains(key) && body[key].is_number_integer(); };
+  const bool names_view = body.is_object() && integer("frame") && integer("utime") && body.size() == 3;
+  if (!body.is_object() || !body.contains("command") || !body["command"].is_string() ||
+      (body.size() != 1 && !names_view))
+    return reply(400, "the body is {\"command\": NAME} and nothing else, or for remove "
+                      "{\"command\": \"remove\", \"frame\": ID, \"utime\": US}");
+  std::optional<std::pair<int64_t, int64_t>> view;
+  if (names_view) view.emplace(body["frame"].get<int64_t>(), body["utime"].get<int64_t>());
+  const std::string why = node_.Command(body["command"].get<std::string>(), view);
   if (!why.empty()) {
     process_.log().Info("the page's " + body["command"].get<std::string>() + " refused: " + why);
     return reply(node_.CommandsRefused().empty() ? 400 : 403, why);

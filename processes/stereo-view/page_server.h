@@ -5,11 +5,12 @@
 //   GET  /                 the page
 //   GET  /events?view=V    the event stream of a page showing view V
 //                          (calibration or depth; none: both), 400 for another
-//   GET  /view.js, /view.css, /cloud3d.js, /freshness.js, /process_table.js,
+//   GET  /view.js, /view.css, /cloud3d.js, /freshness.js, /process_table.js, /view_list.js,
 //        /three.min.js, /OrbitControls.js
 //   GET  /blob/ID          an image or a cloud an event names (view/blob_store.h);
 //                          404 once forgotten
-//   POST /command          {"command": "solve"}: 403 with the reason when
+//   POST /command          {"command": "solve"}, or {"command": "remove",
+//                          "frame": ID, "utime": US}: 403 with the reason when
 //                          refused (no rig key), 400 for anything else
 //
 // A POST must carry the header X-Widestereo-Page: 1, which a page of another

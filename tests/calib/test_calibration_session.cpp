@@ -17,6 +17,7 @@
 #include "calib/node/corners_message.h"
 #include "calib/solver/corner_noise.h"
 #include "calib_test_rigs.h"
+#include "lcm_io/decode.h"
 #include "test_support.h"
 
 namespace {
@@ -239,6 +240,64 @@ TEST_F(CalibSession, ResetArchivesTheViewsAndRestoreBringsThemBack) {
     session.RestoreLastArchive(1764619203000000);
     EXPECT_EQ(session.views(), 1);
   }
+}
+
+// A user's removal takes one view out of the session and of its state file
+// (a restart does not bring it back), keeps it in the removed-views file,
+// and leaves every other view as it was; an unknown or ambiguous view is
+// refused and changes nothing.
+TEST_F(CalibSession, RemoveTakesOneViewOutAndARestartDoesNotBringItBack) {
+  const std::string dir = ws::test::TempDir("calib-session-remove");
+  SessionOptions options;
+  options.state_path = dir + "/views.lcmlog";
+  CalibrationSession session(options);
+  session.Restore();
+  for (int v = 0; v < 5; ++v) ASSERT_EQ(session.Add(Message(rig, v, board)), CalibrationSession::Outcome::kAccepted);
+  auto again = Message(rig, 5, board);
+  again.frame_id = 1;  // stereo-capture started again: frame 1 a second time
+  ASSERT_EQ(session.Add(again), CalibrationSession::Outcome::kAccepted);
+  const std::string before = ws::test::ReadFileText(options.state_path);
+
+  EXPECT_THROW(session.Remove(9, std::nullopt), std::invalid_argument);
+  try {
+    session.Remove(1, std::nullopt);
+    ADD_FAILURE() << "an ambiguous frame id was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "2 views of frame 1: name its utime too");
+  }
+  EXPECT_EQ(ws::test::ReadFileText(options.state_path), before) << "a refusal changed the state file";
+  EXPECT_EQ(session.views(), 6);
+
+  EXPECT_EQ(session.Remove(2, 2000), dir + "/views-removed.lcmlog");
+  EXPECT_EQ(session.Remove(1, 5000), dir + "/views-removed.lcmlog");
+  std::vector<int64_t> frames, utimes;
+  session.Data(&frames, &utimes);
+  EXPECT_EQ(frames, (std::vector<int64_t>{0, 1, 3, 4}));
+  EXPECT_EQ(utimes, (std::vector<int64_t>{0, 1000, 3000, 4000}));
+  CalibrationSession kept{SessionOptions{}};
+  for (int v : {0, 1, 3, 4}) kept.Add(Message(rig, v, board));
+  EXPECT_EQ(session.Status(0, "collecting", -1).coverage_left, kept.Status(0, "collecting", -1).coverage_left)
+      << "the coverage is that of the views kept";
+  const auto views = session.Views(7);
+  ASSERT_EQ(views.nviews, 4);
+  EXPECT_EQ(views.views[2].frame_id, 3);
+  EXPECT_EQ(views.views[2].left_corners, Message(rig, 3, board).left.n);
+  EXPECT_LT(views.views[2].left_rms, 0) << "no solve yet";
+  EXPECT_EQ(views.image_width[0], 1280);
+
+  // Restarted, the session has the four views; the two removed are kept aside.
+  CalibrationSession restarted(options);
+  EXPECT_EQ(restarted.Restore(), 4);
+  frames.clear();
+  restarted.Data(&frames);
+  EXPECT_EQ(frames, (std::vector<int64_t>{0, 1, 3, 4}));
+  std::vector<int64_t> removed;
+  for (const auto& event : ws::test::ReadLog(dir + "/views-removed.lcmlog"))
+    removed.push_back(ws::DecodeMessage<widestereo::stereo_corners_t>(event.data.data(), int(event.data.size())).utime);
+  EXPECT_EQ(removed, (std::vector<int64_t>{2000, 5000}));
+  // A view added after a removal is saved after the others.
+  EXPECT_EQ(restarted.Add(Message(rig, 6, board)), CalibrationSession::Outcome::kAccepted);
+  EXPECT_EQ(CalibrationSession(options).Restore(), 5);
 }
 
 }  // namespace

@@ -1,14 +1,17 @@
 // stereo-calibrate live over udpm: CALIBRATION_STATUS at least once a second
 // with coverage and a hint, near-duplicate views skipped, the accepted views
 // kept in the state file so that a SIGKILLed process resumes with them, and
-// a 'solve' command answered with STEREO_CALIBRATION; a damaged state file
+// a 'solve' command answered with STEREO_CALIBRATION; before it, the
+// projection uncertainty of the views so far on CALIBRATION_PREVIEW; a damaged state file
 // kept as an archive and every intact view after the damage recovered; a
 // views file that cannot be written said on the terminal under --quiet.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +24,7 @@
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
 #include "test_support.h"
+#include "widestereo/calibration_result_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/command_t.hpp"
 #include "widestereo/process_status_t.hpp"
@@ -44,12 +48,9 @@ struct Bus {
           bus->status_times.push_back(Clock::now());
         },
         this);
-    lcm.subscribeFunction(
-        ws::channel::kStereoCalibration,
-        +[](const lcm::ReceiveBuffer*, const std::string&, const widestereo::stereo_calibration_t* c, Bus* bus) {
-          bus->calibrations.push_back(*c);
-        },
-        this);
+    Keep(ws::channel::kStereoCalibration, &calibrations);
+    Keep(ws::channel::kCalibrationResult, &results);
+    Keep(ws::channel::kCalibrationPreview, &previews);
     lcm.subscribeFunction(
         ws::channel::kProcessStatus,
         +[](const lcm::ReceiveBuffer*, const std::string&, const widestereo::process_status_t* s, Bus* bus) {
@@ -59,12 +60,22 @@ struct Bus {
         },
         this);
   }
+  // Every message of `channel` into `kept`.
+  template <class Msg>
+  void Keep(const char* channel, std::vector<Msg>* kept) {
+    lcm.subscribeFunction(
+        channel, +[](const lcm::ReceiveBuffer*, const std::string&, const Msg* m, std::vector<Msg>* to) {
+          to->push_back(*m);
+        },
+        kept);
+  }
   // Handles messages until `done` or `seconds` have passed; returns `done`.
   bool Until(double seconds, const std::function<bool()>& done) { return ws::test::HandleUntil(lcm, seconds, done); }
   lcm::LCM lcm;
   std::vector<widestereo::calibration_status_t> statuses;
   std::vector<Clock::time_point> status_times;
   std::vector<widestereo::stereo_calibration_t> calibrations;
+  std::vector<widestereo::calibration_result_t> previews, results;
   int pid = 0;
   std::string last_error;  // stereo-calibrate's PROCESS_STATUS
 };
@@ -160,6 +171,63 @@ TEST(StereoCalibrateLive, StatusDuplicatesAndViewsThatSurviveAKill) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/calib.yaml"));
   second.Stop(SIGINT);
   EXPECT_EQ(second.result.exit_code, 0) << "Ctrl-C is a clean stop: " << second.result.output;
+}
+
+// Live, before a solve, the views so far are solved quickly and their
+// projection uncertainty published on CALIBRATION_PREVIEW: each camera's map,
+// no calibration published, no file written. Once solved, none follows.
+TEST(StereoCalibrateLive, BeforeASolveTheViewsSoFarGiveAnUncertaintyPreview) {
+  const std::string dir = ws::test::TempDir("calibrate-live-preview");
+  const std::string url = ws::test::UniqueUdpmUrl(8);
+  SyntheticRigOptions options = BarrelRig();
+  options.views = 8;
+  const SyntheticRig rig = MakeSyntheticRig(options);
+  // The views in its views file: the first preview has them all.
+  std::vector<ws::test::LogEvent> views;
+  for (int v = 0; v < rig.data.size(); ++v) views.push_back(ws::test::Event(ws::channel::kStereoCorners, CornersMessage(rig, v)));
+  ws::test::WriteLog(dir + "/views.lcmlog", views);
+  Bus bus(url);
+  ASSERT_TRUE(bus.lcm.good());
+  Running process({"stereo-calibrate", "--in-url", url, "--out-url", url, "--log-dir", dir, "--state",
+                   dir + "/views.lcmlog", "--model", "poly6", "--nonradial", "none", "--preview-every", "1", "--out",
+                   dir + "/calib.yaml"},
+                  &bus);
+  ASSERT_TRUE(bus.Until(60, [&] { return !bus.previews.empty(); })) << process.result.output;
+  EXPECT_EQ(bus.statuses.back().views_left, rig.data.size());
+  const widestereo::calibration_result_t& preview = bus.previews.back();
+  ASSERT_EQ(preview.nmodels, 1);
+  EXPECT_EQ(preview.chosen, "poly6");
+  EXPECT_LT(preview.models[0].left_rms, 0.2);
+  EXPECT_LT(preview.models[0].right_rms, 0.2);
+  ASSERT_EQ(preview.ncameras, 2);
+  for (const auto& camera : preview.cameras) ASSERT_GT(camera.uncertainty_rows, 0) << camera.name;
+  EXPECT_TRUE(bus.calibrations.empty() && bus.results.empty()) << "a preview published as a calibration";
+  EXPECT_FALSE(std::filesystem::exists(dir + "/calib.yaml"));
+
+  widestereo::command_t solve{};
+  solve.command = "solve";
+  bus.lcm.publish(ws::channel::kStereoCommand, &solve);
+  ASSERT_TRUE(bus.Until(60, [&] { return bus.statuses.back().state == "solved" && !bus.results.empty(); }))
+      << process.result.output;
+  // The median uncertainty: where the preview and the solve are sure alike.
+  auto median = [](const widestereo::camera_maps_t& maps) {
+    std::vector<double> sigmas;
+    for (const auto& row : maps.uncertainty_px)
+      for (double sigma : row)
+        if (sigma >= 0) sigmas.push_back(sigma);
+    std::nth_element(sigmas.begin(), sigmas.begin() + sigmas.size() / 2, sigmas.end());
+    return sigmas.empty() ? -1 : sigmas[sigmas.size() / 2];
+  };
+  for (int c = 0; c < 2; ++c) {  // the solve's shares the board poses between the cameras: somewhat lower
+    const double quick = median(preview.cameras[c]), solved = median(bus.results[0].cameras[c]);
+    EXPECT_GT(quick, 0.5 * solved) << preview.cameras[c].name;
+    EXPECT_LT(quick, 2 * solved) << preview.cameras[c].name;
+  }
+  const size_t previews = bus.previews.size(), statuses = bus.statuses.size();
+  ASSERT_TRUE(bus.Until(10, [&] { return bus.statuses.size() >= statuses + 3; }));
+  EXPECT_EQ(bus.previews.size(), previews) << "a preview after the solve";
+  process.Stop(SIGINT);
+  EXPECT_EQ(process.result.exit_code, 0) << process.result.output;
 }
 
 // A views file of 30 views with one byte of the 6th event's sync word

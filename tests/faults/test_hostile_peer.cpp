@@ -27,6 +27,7 @@
 #include "runtime/wall_clock.h"
 #include "test_support.h"
 #include "widestereo/calibration_status_t.hpp"
+#include "widestereo/calibration_views_t.hpp"
 #include "widestereo/stereo_calibration_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 
@@ -462,6 +463,61 @@ TEST(HostilePeer, WithTheRigKeyUnsignedCornersNeverEnterTheSession) {
   EXPECT_LT(off_deg, 0.25) << "R is off by the attack's turn";
   calibrate.Signal(SIGINT);
   EXPECT_EQ(calibrate.Wait(30).exit_code, 0);
+}
+
+// A removal is a user's: with the rig key only a signed one is obeyed. An
+// unsigned one and one naming no view are refused and counted; the view
+// removed is gone from CALIBRATION_VIEWS and from the views file, so a
+// restart does not bring it back.
+TEST(HostilePeer, WithTheRigKeyOnlyASignedRemoveTakesAViewOutOfTheCalibration) {
+  const std::string dir = TempDir("hostile-keyed-remove");
+  const std::string key = WriteKeyFile(dir, "rig.key");
+  const std::string url = UniqueUdpmUrl(24) + "&recv_buf_size=8388608";
+  const auto argv = CalibrateArgv(dir, url, {"--key-file", key, "--state", dir + "/views.lcmlog"});
+  auto calibrate = std::make_unique<Command>(argv);
+  BusWatch bus(url, "stereo-calibrate");
+  bus.Collect(ch::kCalibrationStatus);
+  bus.Collect(ch::kCalibrationViews);
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status().has_value(); })) << calibrate->Output();
+  const ws::auth::RigKey rig_key = ws::auth::RigKey::FromFile(key);
+  ASSERT_GT(SendViews(bus, &rig_key), 10);
+  using View = std::pair<int64_t, int64_t>;  // frame id, utime
+  auto listed = [&] {
+    std::vector<View> views;
+    if (bus.Payloads(ch::kCalibrationViews).empty()) return views;
+    const auto& bytes = bus.Payloads(ch::kCalibrationViews).back();
+    for (const auto& v : ws::DecodeMessage<widestereo::calibration_views_t>(bytes.data(), int(bytes.size())).views)
+      views.emplace_back(v.frame_id, v.frame_utime);
+    return views;
+  };
+  const std::vector<View> before = listed();
+  ASSERT_GT(before.size(), 10u);
+  const auto [frame, utime] = before[3];
+  const std::vector<std::string> args = {"frame=" + std::to_string(frame), "utime=" + std::to_string(utime)};
+
+  std::string error = SendAndCount(
+      bus, ch::kStereoCommand, Encoded(CommandMessage("remove", "stereo-calibrate", args, ws::WallMicros())));
+  EXPECT_NE(error.find("STEREO_COMMAND: refused: unsigned"), std::string::npos) << error;
+  RunStereoCommand(dir, url, {"remove", "--target", "stereo-calibrate", "--arg", "frame=999999", "--key-file", key});
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.Counters(ch::kStereoCommand).rejected == 2; }));
+  EXPECT_NE(bus.status()->last_error.find("no view of frame 999999"), std::string::npos) << bus.status()->last_error;
+  EXPECT_EQ(listed(), before);
+
+  RunStereoCommand(dir, url, {"remove", "--target", "stereo-calibrate", "--arg", args[0], "--arg", args[1],
+                              "--key-file", key});
+  std::vector<View> after = before;
+  after.erase(after.begin() + 3);
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return listed() == after; })) << calibrate->Output();
+  EXPECT_EQ(bus.Counters(ch::kStereoCommand).rejected, 2);
+  calibrate->Signal(SIGINT);
+  EXPECT_EQ(calibrate->Wait(30).exit_code, 0);
+
+  bus.TakePayloads(ch::kCalibrationViews);
+  calibrate = std::make_unique<Command>(argv);
+  EXPECT_TRUE(bus.ListenUntil(20, [&] { return !listed().empty(); })) << calibrate->Output();
+  EXPECT_EQ(listed(), after) << "the views file brought the removed view back";
+  calibrate->Signal(SIGINT);
+  EXPECT_EQ(calibrate->Wait(30).exit_code, 0);
 }
 
 }  // namespace

@@ -44,6 +44,8 @@ const std::map<std::string, Decoder>& Decoders() {
       {ch::kCalibrationHealth, DecodeAs<calibration_health_t>},
       {ch::kStereoCalibration, DecodeAs<stereo_calibration_t>},
       {ch::kCalibrationResult, DecodeAs<calibration_result_t>},
+      {ch::kCalibrationViews, DecodeAs<calibration_views_t>},
+      {ch::kCalibrationPreview, DecodeAs<calibration_result_t>},
       {ch::kStereoDisparity, DecodeAs<disparity_t>},
       {ch::kStereoCloud, DecodeAs<point_cloud_t>},
       {ch::kStereoCloudFiltered, DecodeAs<point_cloud_t>},

@@ -18,6 +18,7 @@
 #include "rectify/calibration_size.h"
 #include "rig/rig_message.h"
 #include "view/page_events.h"
+#include "view/view_list.h"
 
 // Not in an anonymous namespace: each binary uses only its type's overload.
 namespace ws::fuzz {
@@ -127,6 +128,13 @@ void Use(const point_cloud_t& cloud) {
 
 // stereo-view shows every solve's outcome and every calibration status.
 void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
+
+// stereo-view lists every view stereo-calibrate holds (no frame at hand: no thumbnail).
+void Use(const calibration_views_t& views) {
+  ws::view::BlobStore blobs;
+  ws::view::ViewList list(blobs, [](int64_t, int64_t, const std::string&) { return nullptr; });
+  if (!list.Event(views) || list.Event(views)) Violated("the same views listed twice, or not at all");
+}
 
 // stereo-calibrate adds every corners message to its session (the view, the
 // coverage grids, the near-duplicate check) and publishes the status.

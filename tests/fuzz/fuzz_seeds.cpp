@@ -26,6 +26,7 @@
 #include "sim/sim_config.h"
 #include "widestereo/calibration_health_t.hpp"
 #include "widestereo/calibration_result_t.hpp"
+#include "widestereo/calibration_views_t.hpp"
 #include "widestereo/calibration_status_t.hpp"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/command_t.hpp"
@@ -271,6 +272,22 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   result.cameras[1].name = "right";
   result.ncameras = 2;
   seeds.Message("two-models", result);
+  calibration_views_t views{};
+  views.utime = 2;
+  views.solve_utime = 1;
+  views.image_width[0] = views.image_width[1] = 1280;
+  views.image_height[0] = views.image_height[1] = 960;
+  calibration_view_t view{};
+  view.frame_id = 7;
+  view.frame_utime = 700000;
+  view.left_corners = view.right_corners = 54;
+  view.left_outline[1][0] = view.right_outline[2][1] = 400;
+  view.left_rms = 0.12;
+  view.right_rms = -1;
+  views.views = {view, view};
+  views.views[1].frame_id = 9;
+  views.nviews = 2;
+  seeds.Message("two-views", views);
   command_t command{};
   command.command = "solve";
   command.target = "stereo-calibrate";

@@ -17,6 +17,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
+import widestereo
 from view_support import CALIBRATION, free_port, key_file, until
 
 
@@ -45,7 +46,18 @@ def green_pixels(png):
     return int(np.count_nonzero((g > 180) & (r < 90) & (b < 90)))
 
 
-def screenshot(driver, bus, name):
+def post_command(driver, body):
+    """POSTs a command as the page does; the HTTP status."""
+    return driver.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        fetch('command', {method: 'POST', headers: {'X-Widestereo-Page': '1', 'Content-Type': 'application/json'},
+                          body: JSON.stringify(arguments[0])}).then(r => done(r.status));""", body)
+
+
+def screenshot(driver, bus, name, element=None):
+    """The window as it is, or scrolled to show the element of that id first."""
+    if element:
+        driver.execute_script("document.getElementById(arguments[0]).scrollIntoView();", element)
     path = os.path.join(bus.folder, name)
     driver.save_screenshot(path)
     return path
@@ -60,7 +72,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
-                                   "--report", report, "--key-file", key])
+                                   "--report", report, "--key-file", key, "--preview-every", "1"])
     keyed_port, open_port = free_port(), free_port()
     keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
     readonly = bus.start("stereo-view", ["--port", str(open_port)])
@@ -99,18 +111,22 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     # Without the key: the buttons are disabled, say why, and the server sends nothing.
     browser.get(bus.page(open_port, readonly))
     until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
-    assert all(not b.is_enabled() for b in browser.find_elements(By.CSS_SELECTOR, "button.command"))
-    status = browser.execute_async_script("""
-        const done = arguments[arguments.length - 1];
-        fetch('command', {method: 'POST', headers: {'X-Widestereo-Page': '1', 'Content-Type': 'application/json'},
-                          body: JSON.stringify({command: 'solve'})}).then(r => done(r.status));""")
-    assert status == 403
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card button.remove"), 20, "the views listed")
+    assert browser.execute_script(  # one look: the list is drawn anew as views come
+        "return [...document.querySelectorAll('button.command, button.remove')].every(b => b.disabled);")
+    for body in ({"command": "solve"}, {"command": "remove", "frame": 1, "utime": 1}):
+        assert post_command(browser, body) == 403
 
     # With it: solve from the page, accepted by the keyed stereo-calibrate.
     browser.get(bus.page(keyed_port, keyed))
     until(lambda: browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").is_enabled(), 20,
           "the solve button enabled")
     until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 30, "coverage shown")
+    # Before the solve, the uncertainty of a quick solve of the views so far, per camera.
+    until(lambda: len(browser.find_elements(By.CSS_SELECTOR, "#preview .maps canvas")) == 2, 60,
+          "the views' uncertainty before a solve")
+    assert browser.find_element(By.ID, "preview").is_displayed() and attribute(browser, "#preview-model", "textContent") == "poly6"
+    screenshot(browser, bus, "calibration-preview.png", "preview")
     browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").click()
     row = until(lambda: browser.find_elements(By.CSS_SELECTOR, "#models tr.chosen"), 300, "the model table")[0]
     screenshot(browser, bus, "calibration-solved.png")
@@ -122,6 +138,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     maps = browser.find_elements(By.CSS_SELECTOR, "#maps canvas")
     assert len(maps) == 4, "residual and uncertainty maps of both cameras"
     assert all(m.is_displayed() for m in maps)
+    until(lambda: not browser.find_element(By.ID, "preview").is_displayed(), 10, "the preview gives way to the solve")
     # The solved calibration as the rig uses it: K, the distortion, R, T and the baseline.
     until(lambda: attribute(browser, "#baseline", "data-metres"), 60, "the calibration in use")
     assert float(attribute(browser, "#baseline", "data-metres")) == pytest.approx(solved["stereo"]["baseline_m"], rel=1e-9)
@@ -130,12 +147,43 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert all(r.find_elements(By.TAG_NAME, "td")[1].text == solved["model"] for r in intrinsics)
     screenshot(browser, bus, "calibration-solved-calibration.png")
 
+    # The views, oldest last, each with its RMS in the solve (the report's), the
+    # newest with a thumbnail of the frame the page was shown.
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card[data-left-rms]"), 30, "the views' RMS")
+    # One look (the list is drawn anew as views come).
+    listed = browser.execute_script("""
+        const cards = [...document.querySelectorAll('#view-list .view-card')].reverse();
+        const rms = (v) => v === undefined ? null : Number(v);
+        return {count: +document.querySelector('#view-list').dataset.views,
+                views: cards.map(c => [rms(c.dataset.leftRms), rms(c.dataset.rightRms)])};""")
+    assert listed["count"] == len(listed["views"])
+    solved_rms = [list(pair) for pair in zip(solved["cameras"][0]["view_rms"], solved["cameras"][1]["view_rms"])]
+    assert listed["views"][:len(solved_rms)] == solved_rms
+    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card canvas[data-image='1']"), 30,
+          "a view's thumbnail drawn")
+    screenshot(browser, bus, "calibration-views.png", "view-list")
+
+    # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
+    frame_id, utime = browser.execute_script("""
+        const card = document.querySelector('#view-list .view-card');
+        card.querySelector('button.remove').click();
+        return [+card.dataset.frameId, +card.dataset.utime];""")
+    shown = "#view-list .view-card[data-frame-id='%d'][data-utime='%d']" % (frame_id, utime)
+    until(lambda: not browser.find_elements(By.CSS_SELECTOR, shown), 30, "the removed view gone from the list")
+    assert "remove frame %d sent" % frame_id in browser.find_element(By.ID, "command-why").text
+
     bus.stop()
+    views_file = os.path.join(bus.folder, "stereo-calibrate-views.lcmlog")
+    kept = [(c.frame_id, c.utime) for c in (e.message for e in widestereo.read_log(views_file))]
+    removed = [(c.frame_id, c.utime) for c in (e.message for e in widestereo.read_log(
+        os.path.join(bus.folder, "stereo-calibrate-views-removed.lcmlog")))]
+    assert (frame_id, utime) not in kept and len(kept) >= len(listed["views"]) - 1 and removed == [(frame_id, utime)]
     commands = bus.events("STEREO_COMMAND")
     senders = [c.auth.sender for c in commands]
     assert not [s for s in senders if " pid %d" % readonly.pid in s], "the read-only stereo-view sent a command"
-    assert len(commands) == 1 and " pid %d" % keyed.pid in senders[0], senders
+    assert len(commands) == 2 and all(" pid %d" % keyed.pid in s for s in senders), senders
     assert commands[0].command == "solve" and commands[0].auth.key_id != 0
+    assert commands[1].command == "remove" and list(commands[1].args) == ["frame=%d" % frame_id, "utime=%d" % utime]
 
 
 def view_counters(bus, pid):

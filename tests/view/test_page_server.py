@@ -135,6 +135,11 @@ def test_a_body_is_refused_by_its_length_before_it_is_read(bus, view):
     # Within the limit, nested arrays are only a body that is not a command.
     nested = b"[" * 1000
     assert request(port, head % (port, len(nested)), nested) == 400
+    # A removal names its view by two integers, and nothing else does.
+    for bad in (b'{"command": "remove"}', b'{"command": "remove", "frame": "7", "utime": 1}',
+                b'{"command": "remove", "frame": 1.5, "utime": 1}', b'{"command": "solve", "frame": 1, "utime": 1}',
+                b'{"command": "remove", "frame": 1, "utime": 1, "path": "x.yaml"}'):
+        assert request(port, head % (port, len(bad)), bad) == 400, bad
     assert rss_mb(process.pid) - before < 32
     assert served_in(port) < SERVED_WITHIN
     assert process.poll() is None

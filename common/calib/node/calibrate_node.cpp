@@ -4,10 +4,13 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "calib/node/calib_plots.h"
+#include "calib/node/preview_solve.h"
 #include "calib/node/report.h"
 #include "calib/node/result_message.h"
 #include "calib/node/solved_rig.h"
@@ -68,6 +71,7 @@ CalibrateNode::CalibrateNode(Process& process, NodeOptions options)
 
 CalibrateNode::~CalibrateNode() {
   if (worker_.joinable()) worker_.join();
+  if (preview_worker_.joinable()) preview_worker_.join();
 }
 
 void CalibrateNode::Start() {
@@ -82,16 +86,19 @@ void CalibrateNode::Start() {
       channel::kStereoCorners, [this](const auto& msg) { OnCorners(msg); }, 0, Process::FrameGaps::skipped);
   process_.Subscribe<widestereo::command_t>(channel::kStereoCommand,
                                             [this](const auto& msg) { commands_.Dispatch(msg); });
-  process_.Every(1000000, [this] { PublishStatus(); });
+  process_.Every(1000000, [this] {
+    PublishStatus();
+    MaybePreview();  // on this thread only
+  });
   if (options_.once && process_.file_input())
     process_.AtEndOfInput([this] {
       if (session_.views() == 0)
         return process_.Fatal("no board in any frame of " + process_.options().in_url +
                               ": nothing to calibrate. Does stereo-detect's --board match the board? "
                               "(COLSxROWS counts inner corners: a board of 10x7 squares is 9x6)");
-      std::vector<int64_t> frames;
-      const StereoData data = session_.Data(&frames);
-      if (!SolveNow(data, frames, options_.models, options_.calibration) && !StopRequested())
+      std::vector<int64_t> frames, utimes;
+      const StereoData data = session_.Data(&frames, &utimes);
+      if (!SolveNow(data, frames, utimes, options_.models, options_.calibration) && !StopRequested())
         process_.Fatal("no calibration from the views of the log");
     });
   process_.SetProgress([this] {
@@ -136,7 +143,32 @@ CommandDispatcher CalibrateNode::Commands() {
   const auto run = [this](const CommandArgs& args) { OnCommand(args); };
   std::vector<CommandSpec> commands;
   for (const char* name : {"solve", "reset", "restore", "save"}) commands.push_back({name, name, keys, run});
+  commands.push_back({"remove", "remove frame=ID [utime=US]", {"frame", "utime"},
+                      [this](const CommandArgs& args) { Remove(args); }});
   return CommandDispatcher(process_.options().name, commands);
+}
+
+// A user's removal of one view (the page's remove button, stereo-command).
+void CalibrateNode::Remove(const CommandArgs& args) {
+  std::optional<int64_t> frame, utime;
+  for (const CommandArgs::Arg& arg : args.args) {
+    size_t used = 0;
+    int64_t value = 0;
+    try {
+      value = std::stoll(arg.value, &used);
+    } catch (const std::exception&) {
+    }
+    if (used == 0 || used != arg.value.size()) args.Refuse(arg, "not an integer");
+    (arg.key == "frame" ? frame : utime) = value;
+  }
+  if (!frame) throw std::invalid_argument("remove: which view? (remove frame=ID [utime=US])");
+  if (solving_) throw std::runtime_error("remove refused: a solve is running");
+  const std::string kept = session_.Remove(*frame, utime);  // throws for an unknown view
+  process_.log().Info("remove: the view of frame " + std::to_string(*frame) + " removed" +
+                      (kept.empty() ? "" : ", kept in " + kept) + "; " + std::to_string(session_.views()) +
+                      " views left");
+  SetState("collecting", -1);
+  PublishStatus();
 }
 
 // A command it cannot carry out as sent throws (counted as rejected on
@@ -221,6 +253,55 @@ void CalibrateNode::PublishStatus() {
   auto status = session_.Status(process_.Now(), state, rms);
   status.heldout_rms = heldout;
   process_.Publish(channel::kCalibrationStatus, status);
+  auto views = session_.Views(process_.Now());
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    views.solve_utime = solve_utime_;
+    for (auto& view : views.views)
+      if (const auto found = view_rms_.find({view.frame_id, view.frame_utime}); found != view_rms_.end())
+        std::tie(view.left_rms, view.right_rms) = found->second;
+  }
+  process_.Publish(channel::kCalibrationViews, views);
+}
+
+void CalibrateNode::MaybePreview() {
+  if (options_.preview_s <= 0 || process_.file_input() || previewing_ || solving_) return;
+  const auto collecting = [this] {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return state_ == "collecting";
+  };
+  const int64_t now = process_.Now();
+  if (!collecting() || (last_preview_us_ != 0 && now - last_preview_us_ < int64_t(options_.preview_s * 1e6))) return;
+  std::vector<int64_t> utimes;
+  StereoData data = session_.Data(nullptr, &utimes);
+  if (data.size() < options_.calibration.min_views || utimes == previewed_utimes_) return;
+  previewed_utimes_ = std::move(utimes);
+  last_preview_us_ = now;
+  previewing_ = true;
+  if (preview_worker_.joinable()) preview_worker_.join();
+  preview_worker_ = std::thread([this, collecting, data = std::move(data)] {
+    try {
+      const auto preview = PreviewSolve(data, options_.calibration, options_.models.front(), process_.Now());
+      if (collecting() && !solving_) process_.Publish(channel::kCalibrationPreview, preview);
+      process_.log().Detail("preview of " + std::to_string(data.size()) + " views published");
+    } catch (const Stopped&) {
+    } catch (const std::exception& e) {
+      process_.log().Detail(std::string("preview: ") + e.what());
+    }
+    previewing_ = false;
+  });
+}
+
+void CalibrateNode::KeepViewRms(const StereoCalibration& solved, const std::vector<int64_t>& frames,
+                                const std::vector<int64_t>& utimes) {
+  auto rms = [](const CameraCalibration& camera, size_t view) {
+    return view < camera.view_rms.size() ? camera.view_rms[view] : -1.0;
+  };
+  std::lock_guard<std::mutex> lock(mutex_);
+  view_rms_.clear();
+  for (size_t v = 0; v < frames.size() && v < utimes.size(); ++v)
+    view_rms_[{frames[v], utimes[v]}] = {rms(solved.left, v), rms(solved.right, v)};
+  solve_utime_ = process_.Now();
 }
 
 void CalibrateNode::SetState(const std::string& state, double rms, double heldout_rms) {
@@ -235,16 +316,17 @@ void CalibrateNode::SetState(const std::string& state, double rms, double heldou
 
 void CalibrateNode::Solve(std::vector<ModelKind> models, CalibrationOptions options) {
   if (solving_.exchange(true)) return process_.ReportError("solve ignored: a solve is running");
-  std::vector<int64_t> frames;
-  StereoData data = session_.Data(&frames);
+  std::vector<int64_t> frames, utimes;
+  StereoData data = session_.Data(&frames, &utimes);
   if (process_.file_input()) {
-    SolveNow(data, frames, models, options);
+    SolveNow(data, frames, utimes, models, options);
     if (options_.once) process_.Stop();
     return;
   }
   if (worker_.joinable()) worker_.join();
-  worker_ = std::thread([this, data = std::move(data), frames = std::move(frames), models, options] {
-    const bool ok = SolveNow(data, frames, models, options);
+  worker_ = std::thread([this, data = std::move(data), frames = std::move(frames), utimes = std::move(utimes),
+                         models, options] {
+    const bool ok = SolveNow(data, frames, utimes, models, options);
     if (options_.once) ok || StopRequested() ? process_.Stop() : process_.Fatal("the solve failed");
   });
 }
@@ -335,7 +417,8 @@ void CalibrateNode::ReportLeftOut(const StereoCalibration& result, const std::ve
 }
 
 bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
-                             const std::vector<ModelKind>& models, const CalibrationOptions& options) {
+                             const std::vector<int64_t>& utimes, const std::vector<ModelKind>& models,
+                             const CalibrationOptions& options) {
   solving_ = true;
   solving_frames_ = frames;
   SetState("solving", -1);
@@ -405,6 +488,7 @@ bool CalibrateNode::SolveNow(const StereoData& data, const std::vector<int64_t>&
         process_.ReportError(std::string("figures: ") + e.what());
       }
     }
+    KeepViewRms(primary, frames, utimes);
     rms = primary.rms_px;
     heldout = HeldOutRms(primary);
     ok = true;

@@ -7,13 +7,21 @@
 //              (a solve never changes the views)
 //      "reset"  archive every view and start with none (CalibrationSession)
 //      "restore" bring the views of the newest archive back
+//      "remove" frame=ID [utime=US]: take the view of that STEREO_CORNERS
+//              frame out (CalibrationSession::Remove); an unknown view is refused
 //      "save"   [path=NAME.yaml] [report=NAME.json]: write the last solution
 //              again, to --out and --report or to those names in their folders
 //              (plain file names only: runtime/output_folder.h)
 //  - CALIBRATION_STATUS every second of the process clock (the message clock
 //    when replaying a log): state (collecting, solving, solved, failed),
 //    views per camera, coverage grids, RMS of the last solve (-1: none) and
-//    a hint for the person holding the board.
+//    a hint for the person holding the board; with it CALIBRATION_VIEWS,
+//    every view held and its RMS in the last solve.
+//  - Live, while collecting (before the first solve, after a reset or a
+//    removal), every preview_s when the views changed: a quick solve of the
+//    views so far on a thread of its own (preview_solve.h), its projection
+//    uncertainty on CALIBRATION_PREVIEW; nothing written, STEREO_CALIBRATION
+//    and CALIBRATION_RESULT untouched.
 //  - After a solve: the calibration file (--out; with several models also
 //    one per model, calib.poly6.yaml), the report (--report), the figures
 //    (--plot-dir: distortion_curves.png, residual_map.png), Table II and
@@ -56,6 +64,7 @@ struct NodeOptions {
   std::string out_yaml, report_json, plot_dir;
   std::string rig_name;  // in the figures' titles; empty: the --out file's name
   bool once = false;
+  double preview_s = 10;  // seconds between previews at least; 0: none
   // The images each STEREO_CORNERS frame id came from (--images), to name
   // views in messages; without a name a view is "view 3 (frame 7)".
   std::map<int64_t, std::string> frame_names;
@@ -80,15 +89,21 @@ class CalibrateNode {
   void OnCorners(const widestereo::stereo_corners_t& msg);
   CommandDispatcher Commands();
   void OnCommand(const CommandArgs& args);
+  void Remove(const CommandArgs& args);
   void PublishStatus();
+  // Starts a preview solve when one is due (NodeOptions::preview_s).
+  void MaybePreview();
   // Reports what the session's last read of its state file found damaged.
   void ReportStateDamage();
   void Solve(std::vector<ModelKind> models, CalibrationOptions options);
   // Solves the views (`frames`: the frame id of each), writes every output
   // and publishes; false (after reporting why) when the solve or writing the
   // calibration file or report failed.
-  bool SolveNow(const StereoData& data, const std::vector<int64_t>& frames,
+  bool SolveNow(const StereoData& data, const std::vector<int64_t>& frames, const std::vector<int64_t>& utimes,
                 const std::vector<ModelKind>& models, const CalibrationOptions& options);
+  // Keeps each solved view's RMS per camera, by its frame id and utime.
+  void KeepViewRms(const StereoCalibration& solved, const std::vector<int64_t>& frames,
+                   const std::vector<int64_t>& utimes);
   // "view 3 (left04.jpg + right04.jpg)", or "view 3 (frame 7)" without names.
   std::string ViewName(int view, const std::vector<int64_t>& frames) const;
   // `text` with every "view N" named as ViewName does: one numbering in
@@ -110,14 +125,20 @@ class CalibrateNode {
   NodeOptions options_;
   CalibrationSession session_;
   CommandDispatcher commands_;
-  std::mutex mutex_;  // guards state_, rms_, last_
+  std::mutex mutex_;  // guards state_, rms_, last_, view_rms_, solve_utime_
   std::string state_ = "collecting";
   double rms_ = -1;
   double heldout_rms_ = -1;
   ModelCalibrations last_;
+  std::map<std::pair<int64_t, int64_t>, std::pair<double, double>> view_rms_;  // (frame, utime) -> left, right
+  int64_t solve_utime_ = 0;
   std::atomic<bool> solving_{false};
   std::vector<int64_t> solving_frames_;  // the running solve's views' frames (NameViews)
   std::thread worker_;
+  std::atomic<bool> previewing_{false};
+  int64_t last_preview_us_ = 0;
+  std::vector<int64_t> previewed_utimes_;  // the views of the last preview
+  std::thread preview_worker_;
 };
 
 }  // namespace ws::calib

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "calib/node/corners_message.h"
+#include "calib/node/view_summary.h"
 #include "calib/solver/corner_noise.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/decode.h"
@@ -182,19 +183,60 @@ CalibrationSession::Outcome CalibrationSession::AddLocked(const widestereo::ster
   accepted_.push_back(msg);
   left_grid_.Add(left, data_.left.image_width, data_.left.image_height);
   right_grid_.Add(right, data_.right.image_width, data_.right.image_height);
-  if (save && state_) {
-    std::vector<uint8_t> bytes = EncodeMessage(msg);
-    lcm::LogEvent event;
-    event.eventnum = state_events_++;
-    event.timestamp = msg.utime;
-    event.channel = channel::kStereoCorners;
-    event.datalen = int32_t(bytes.size());
-    event.data = bytes.data();
-    if (state_->writeEvent(&event) != 0 || std::fflush(state_->getFilePtr()) != 0) {
-      if (why) *why = "could not save the view to " + options_.state_path;
-    }
-  }
+  if (save && state_ && !WriteView(*state_, msg, state_events_++) && why)
+    *why = "could not save the view to " + options_.state_path;
   return Outcome::kAccepted;
+}
+
+bool CalibrationSession::WriteView(lcm::LogFile& log, const widestereo::stereo_corners_t& msg, int64_t eventnum) {
+  std::vector<uint8_t> bytes = EncodeMessage(msg);
+  lcm::LogEvent event;
+  event.eventnum = eventnum;
+  event.timestamp = msg.utime;
+  event.channel = channel::kStereoCorners;
+  event.datalen = int32_t(bytes.size());
+  event.data = bytes.data();
+  return log.writeEvent(&event) == 0 && std::fflush(log.getFilePtr()) == 0;
+}
+
+std::string CalibrationSession::Remove(int64_t frame_id, std::optional<int64_t> utime) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<size_t> found;
+  for (size_t i = 0; i < accepted_.size(); ++i)
+    if (accepted_[i].frame_id == frame_id && (!utime || accepted_[i].utime == *utime)) found.push_back(i);
+  const std::string name =
+      "frame " + std::to_string(frame_id) + (utime ? " of utime " + std::to_string(*utime) : std::string());
+  if (found.empty()) throw std::invalid_argument("no view of " + name);
+  if (found.size() > 1)
+    throw std::invalid_argument(std::to_string(found.size()) + " views of " + name + ": name its utime too");
+  std::vector<widestereo::stereo_corners_t> kept = accepted_;
+  kept.erase(kept.begin() + std::ptrdiff_t(found[0]));
+  std::string removed_file;
+  if (!options_.state_path.empty()) {
+    // The view is kept first, then the state file replaced whole: a crash
+    // in between leaves the view in both files, never in neither.
+    const fs::path state(options_.state_path);
+    removed_file = (state.parent_path() / (state.stem().string() + "-removed" + state.extension().string())).string();
+    lcm::LogFile removed(removed_file, "a");
+    if (!removed.good() || !WriteView(removed, accepted_[found[0]], 0))
+      throw std::runtime_error("cannot keep the removed view in " + Quoted(removed_file));
+    std::vector<LcmLogEvent> events;
+    for (const auto& msg : kept) events.push_back({0, msg.utime, channel::kStereoCorners, EncodeMessage(msg)});
+    state_.reset();
+    try {
+      WriteFileAtomically(options_.state_path, EncodeLcmLog(events));
+    } catch (...) {
+      OpenStateForAppend();
+      throw;
+    }
+    OpenStateForAppend();
+    state_events_ = int64_t(kept.size());
+  }
+  const int duplicates = duplicates_;
+  ClearLocked();
+  for (const auto& msg : kept) AddLocked(msg, nullptr, false);
+  duplicates_ = duplicates;
+  return removed_file;
 }
 
 std::string CalibrationSession::Reset(int64_t wall_us) {
@@ -282,11 +324,27 @@ std::vector<std::string> CalibrationSession::ArchiveFiles() const {
   return archives;
 }
 
-StereoData CalibrationSession::Data(std::vector<int64_t>* frame_ids) const {
+StereoData CalibrationSession::Data(std::vector<int64_t>* frame_ids, std::vector<int64_t>* utimes) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (frame_ids)
-    for (const auto& msg : accepted_) frame_ids->push_back(msg.frame_id);
+  for (const auto& msg : accepted_) {
+    if (frame_ids) frame_ids->push_back(msg.frame_id);
+    if (utimes) utimes->push_back(msg.utime);
+  }
   return data_;
+}
+
+widestereo::calibration_views_t CalibrationSession::Views(int64_t utime) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  widestereo::calibration_views_t msg{};
+  msg.utime = utime;
+  const CameraData* cameras[2] = {&data_.left, &data_.right};
+  for (int c = 0; c < 2; ++c) {
+    msg.image_width[c] = cameras[c]->image_width;
+    msg.image_height[c] = cameras[c]->image_height;
+  }
+  for (const auto& view : accepted_) msg.views.push_back(ViewSummary(view));
+  msg.nviews = int32_t(msg.views.size());
+  return msg;
 }
 
 int CalibrationSession::views() const {

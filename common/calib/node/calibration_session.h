@@ -14,7 +14,10 @@
 // Nothing is ever thrown away: Reset() archives the views (the state file is
 // renamed STATE-<UTC time>.lcmlog beside it; without a state file they are
 // kept in memory) and RestoreLastArchive() brings the newest archive back,
-// archiving the views of the moment first if there are any.
+// archiving the views of the moment first if there are any. Remove() takes
+// one view out, at a user's request: the state file is written again without
+// it (whole, atomic_file.h) and the view appended to STATE-removed.lcmlog
+// beside it.
 //
 // Thread-safe: the process's solve thread reads Data() while messages come in.
 #pragma once
@@ -22,12 +25,14 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "calib/evaluate/coverage.h"
 #include "calib/solver/calib_data.h"
 #include "widestereo/calibration_status_t.hpp"
+#include "widestereo/calibration_views_t.hpp"
 #include "widestereo/stereo_corners_t.hpp"
 
 namespace lcm {
@@ -85,8 +90,19 @@ class CalibrationSession {
   // std::runtime_error when there is no archive or a file cannot be moved.
   std::string RestoreLastArchive(int64_t wall_us);
 
-  // The views, and with `frame_ids` the STEREO_CORNERS frame id of each.
-  StereoData Data(std::vector<int64_t>* frame_ids = nullptr) const;
+  // Takes the view of STEREO_CORNERS frame `frame_id` (of that `utime`
+  // when given: frame ids start again when stereo-capture does) out of the
+  // session and its state file; returns where the view was kept (the
+  // removed-views file, or "" without a state file). Throws
+  // std::invalid_argument when no view or several match, std::runtime_error
+  // when a file cannot be written (then nothing changed).
+  std::string Remove(int64_t frame_id, std::optional<int64_t> utime);
+
+  // The views, and with `frame_ids` and `utimes` the STEREO_CORNERS frame
+  // id and utime of each.
+  StereoData Data(std::vector<int64_t>* frame_ids = nullptr, std::vector<int64_t>* utimes = nullptr) const;
+  // CALIBRATION_VIEWS without RMS (calib/node/view_summary.h).
+  widestereo::calibration_views_t Views(int64_t utime) const;
   int views() const;
   int duplicates() const;
   widestereo::calibration_status_t Status(int64_t utime, const std::string& state,
@@ -98,6 +114,8 @@ class CalibrationSession {
   // replaced by its intact events (`wall_us` names the archive).
   int ReadStateLocked(int64_t wall_us);
   void OpenStateForAppend();
+  // Appends `msg` to `log` as event `eventnum`; false when it could not be written.
+  static bool WriteView(lcm::LogFile& log, const widestereo::stereo_corners_t& msg, int64_t eventnum);
   void ClearLocked();
   // Renames the state file to a new archive; returns the archive's path.
   std::string ArchiveStateLocked(int64_t wall_us);

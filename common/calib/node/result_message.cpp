@@ -5,9 +5,8 @@
 #include "calib/node/table2.h"
 
 namespace ws::calib {
-namespace {
 
-widestereo::camera_maps_t Maps(const CameraCalibration& camera) {
+widestereo::camera_maps_t ToMapsMessage(const CameraCalibration& camera) {
   widestereo::camera_maps_t maps{};
   maps.name = camera.name;
   maps.image_width = camera.model.image_width;
@@ -31,8 +30,6 @@ widestereo::camera_maps_t Maps(const CameraCalibration& camera) {
   return maps;
 }
 
-}  // namespace
-
 widestereo::calibration_result_t ToResultMessage(const ModelCalibrations& results, int64_t utime) {
   widestereo::calibration_result_t msg{};
   msg.utime = utime;
@@ -44,8 +41,8 @@ widestereo::calibration_result_t ToResultMessage(const ModelCalibrations& result
   for (const ModelFailure& failure : results.failed)
     msg.models.push_back({failure.model, failure.error, -1, -1, -1, -1, -1});
   msg.nmodels = int32_t(msg.models.size());
-  msg.cameras.push_back(Maps(chosen.left));
-  if (!chosen.mono) msg.cameras.push_back(Maps(chosen.right));
+  msg.cameras.push_back(ToMapsMessage(chosen.left));
+  if (!chosen.mono) msg.cameras.push_back(ToMapsMessage(chosen.right));
   msg.ncameras = int32_t(msg.cameras.size());
   return msg;
 }

@@ -13,4 +13,7 @@ namespace ws::calib {
 
 widestereo::calibration_result_t ToResultMessage(const ModelCalibrations& results, int64_t utime);
 
+// One camera's residual and projection-uncertainty maps.
+widestereo::camera_maps_t ToMapsMessage(const CameraCalibration& camera);
+
 }  // namespace ws::calib

@@ -214,7 +214,19 @@ function drawMap(title, rows, unit) {
   return figure;
 }
 
+// The uncertainty of a quick solve of the views so far, until a solve newer than it.
+function showPreview(preview) {
+  state.preview = preview;
+  $("#preview-model").textContent = preview.chosen;
+  const maps = $("#preview .maps");
+  maps.replaceChildren(...preview.cameras.map((c) => drawMap(c.name + " projection uncertainty", c.uncertainty_px, "px")));
+  stamp($("#preview-age"), preview.at_us);
+  $("#preview").hidden = Boolean(state.result && state.result.at_us > preview.at_us);
+}
+
 function showResult(result) {
+  state.result = result;
+  if (state.preview) $("#preview").hidden = state.preview.at_us < result.at_us;
   $("#result").hidden = false;
   $("#chosen-model").textContent = result.chosen;
   stamp($("#result-age"), result.at_us);
@@ -267,7 +279,8 @@ function showStatus(status) {
   showProcesses(status.processes);
   stamp($("#processes-age"), status.now_us);
   const why = status.commands_refused;
-  for (const button of document.querySelectorAll("button.command")) {
+  state.commandsRefused = why;
+  for (const button of document.querySelectorAll("button.command, button.remove")) {
     button.disabled = why !== "";
     button.title = why;
   }
@@ -276,18 +289,19 @@ function showStatus(status) {
   document.body.dataset.browserSkipped = status.counters.browsers.skipped;
 }
 
-for (const button of document.querySelectorAll("button.command")) {
-  button.addEventListener("click", async () => {
-    const reply = await fetch("command", {
-      method: "POST",
-      headers: { "Content-Type": "application/json", "X-Widestereo-Page": "1" },
-      body: JSON.stringify({ command: button.dataset.command }),
-    });
-    const body = await reply.json();
-    if (reply.ok) setCommandNote(`${button.dataset.command} sent`, "sent");
-    else setCommandNote(body.error, "error");
+// Posts a command (its JSON body) to stereo-view; says `what` was sent, or why not.
+async function sendCommand(body, what) {
+  const reply = await fetch("command", {
+    method: "POST",
+    headers: { "Content-Type": "application/json", "X-Widestereo-Page": "1" },
+    body: JSON.stringify(body),
   });
+  const answer = await reply.json();
+  if (reply.ok) setCommandNote(`${what} sent`, "sent");
+  else setCommandNote(answer.error, "error");
 }
+for (const button of document.querySelectorAll("button.command"))
+  button.addEventListener("click", () => sendCommand({ command: button.dataset.command }, button.dataset.command));
 
 function setCommandNote(text, kind) {
   const note = $("#command-why");
@@ -465,6 +479,8 @@ function connect() {
   on("spread", showSpread);
   on("calibration", showCalibration);
   on("result", showResult);
+  on("views", showViews);
+  on("preview", showPreview);
   on("status", showStatus);
   on("rectified", showRectified);
   on("disparity", showDisparity);
