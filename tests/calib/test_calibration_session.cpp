@@ -15,6 +15,7 @@
 #include "calib/evaluate/coverage.h"
 #include "calib/node/calibration_session.h"
 #include "calib/node/corners_message.h"
+#include "calib/node/preview_solve.h"
 #include "calib/solver/corner_noise.h"
 #include "calib_test_rigs.h"
 #include "lcm_io/decode.h"
@@ -46,6 +47,17 @@ class CalibSession : public ::testing::Test {
 };
 
 // A session keeps at most max_views views: a flood cannot grow it.
+// The preview solves an angle model where one is asked (the defaults list
+// bspline first, which cannot image a lens past 90 degrees), else the first.
+TEST(PreviewModel, TheFirstAngleModelElseTheFirstAsked) {
+  using ws::ModelKind;
+  EXPECT_EQ(PreviewModel({ModelKind::kBspline, ModelKind::kPoly6, ModelKind::kPoly12, ModelKind::kKb4,
+                          ModelKind::kBsplineTheta}),
+            ModelKind::kKb4);
+  EXPECT_EQ(PreviewModel({ModelKind::kBsplineTheta, ModelKind::kKb4}), ModelKind::kBsplineTheta);
+  EXPECT_EQ(PreviewModel({ModelKind::kPoly6, ModelKind::kBspline}), ModelKind::kPoly6);
+}
+
 TEST_F(CalibSession, ViewsBeyondTheMaximumAreRejectedSayingWhy) {
   SessionOptions options;
   options.max_views = 3;

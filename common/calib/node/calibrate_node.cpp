@@ -281,7 +281,7 @@ void CalibrateNode::MaybePreview() {
   if (preview_worker_.joinable()) preview_worker_.join();
   preview_worker_ = std::thread([this, collecting, data = std::move(data)] {
     try {
-      const auto preview = PreviewSolve(data, options_.calibration, options_.models.front(), process_.Now());
+      const auto preview = PreviewSolve(data, options_.calibration, PreviewModel(options_.models), process_.Now());
       if (collecting() && !solving_) process_.Publish(channel::kCalibrationPreview, preview);
       process_.log().Detail("preview of " + std::to_string(data.size()) + " views published");
     } catch (const Stopped&) {

@@ -7,6 +7,12 @@
 
 namespace ws::calib {
 
+ModelKind PreviewModel(const std::vector<ModelKind>& models) {
+  for (ModelKind model : models)
+    if (Traits(model).angle) return model;
+  return models.front();
+}
+
 widestereo::calibration_result_t PreviewSolve(const StereoData& data, CalibrationOptions options, ModelKind model,
                                               int64_t utime) {
   options.model = model;

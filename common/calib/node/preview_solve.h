@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "calib/calibrate.h"
 #include "widestereo/calibration_result_t.hpp"
@@ -15,6 +16,12 @@
 namespace ws::calib {
 
 inline constexpr int kPreviewKnots = 11;  // mid-ladder (kKnotLadder): a guide, not the choice
+
+// The model a preview solves among those asked: the first angle model
+// (kb4, bspline_theta), which images every ray a pinhole-radius model does
+// and those at 90 degrees and beyond, so that the map comes on any lens;
+// else the first asked. `models` is not empty.
+ModelKind PreviewModel(const std::vector<ModelKind>& models);
 
 // The preview of `data` under `model` (`options`' other settings): the
 // model's line (RMS per camera, no held-out RMS, no stereo RMS) and each
