@@ -39,57 +39,73 @@ std::vector<double> NearestSpacing(const std::vector<cv::Point2f>& points, cv::S
   return nearest;
 }
 
+// A copy of at most `side` pixels a side for OpenCV's adaptive-threshold
+// search, whose cost grows steeply with the image (about 11 s on a 1280 x
+// 960 simulator frame holding part of a board, 1 s on its 800-pixel copy);
+// the corners are refined at full resolution afterwards.
+struct SearchCopy {
+  SearchCopy(const cv::Mat& gray, int side)
+      : scale(std::min(1.0, double(side) / std::max(gray.cols, gray.rows))), image(gray) {
+    if (scale < 1) cv::resize(gray, image, cv::Size(), scale, scale, cv::INTER_AREA);
+  }
+  double scale;
+  cv::Mat image;
+};
+
 // OpenCV's adaptive-threshold search, which finds boards in unevenly lit
-// images that one global threshold misses, on a copy of at most `side`
-// pixels a side: its cost grows steeply with the image (about 11 s on a
-// 1280 x 960 simulator frame holding part of a board, 1 s on its 800-pixel
-// copy); the corners are refined at full resolution afterwards. With
-// `fast_check`, FAST_CHECK leaves frames without a board early.
-bool AdaptiveSearch(const cv::Mat& gray, cv::Size pattern, int side, bool fast_check,
-                    std::vector<cv::Point2f>* points) {
-  const double scale = std::min(1.0, double(side) / std::max(gray.cols, gray.rows));
-  cv::Mat small = gray;
-  if (scale < 1) cv::resize(gray, small, cv::Size(), scale, scale, cv::INTER_AREA);
-  if (!cv::findChessboardCorners(small, pattern, *points,
+// images that one global threshold misses, on `copy`. With `fast_check`,
+// FAST_CHECK leaves frames without a board early.
+bool AdaptiveSearch(const SearchCopy& copy, cv::Size pattern, bool fast_check, std::vector<cv::Point2f>* points) {
+  if (!cv::findChessboardCorners(copy.image, pattern, *points,
                                  cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE |
                                      (fast_check ? cv::CALIB_CB_FAST_CHECK : 0)))
     return false;
-  for (cv::Point2f& p : *points) p = (p + cv::Point2f(0.5f, 0.5f)) / scale - cv::Point2f(0.5f, 0.5f);
+  for (cv::Point2f& p : *points)
+    p = (p + cv::Point2f(0.5f, 0.5f)) / copy.scale - cv::Point2f(0.5f, 0.5f);
   return true;
 }
 
 // Where the board is, by the cheapest search that finds it:
 //   1. one global threshold (the fast path), at full resolution;
 //   2. the adaptive threshold with FAST_CHECK on a copy of at most 800
-//      pixels a side;
+//      pixels a side (960 with BoardSearch::kEveryBoard);
 //   3. the SB detector at full resolution: it finds boards the quads of 1
 //      and 2 miss (blurred, small or strongly curved squares);
 //   4. with BoardSearch::kEveryBoard only, before giving up, OpenCV's own
 //      call with its default flags (adaptive threshold and normalisation,
-//      no FAST_CHECK) on a copy of at most 960 pixels a side, so that every
-//      board cv::findChessboardCorners finds at that size is found.
+//      no FAST_CHECK) on the same copy of at most 960 pixels a side, so
+//      that every board cv::findChessboardCorners finds at that size is
+//      found.
 // FAST_CHECK rejects boards the full search finds: it looks for at least
 // COLS x ROWS / 2 black and white squares whose sizes lie within a factor
 // 1.4 of each other, under one global threshold (OpenCV 4.6,
 // checkchessboard.cpp), which a board seen steeply (its near squares
 // larger than 1.4 times its far ones) or lit unevenly does not give; the
 // 800-pixel copy loses boards whose far squares are only a few pixels.
+// FAST_CHECK passes when either of two checks does, one of them
+// cv::checkChessboard on the image searched (calibinit.cpp), and once it
+// passes the search is the one without the flag. So where
+// cv::checkChessboard passes on the copy, step 2 was step 4 already, and
+// step 4 is not run again: a frame holding part of a board, which passes
+// the check, pays for one full search instead of two.
 // Step 4 costs nothing on a frame steps 1-3 find a board in; on a frame
 // without a whole board it is most of the time spent, and it grows
 // steeply with the image: on 1280 x 960 renders holding part of a board,
 // 15 to 106 s at full resolution, 1.4 to 3.2 s at 960 pixels, 0.6 to 1 s
 // at 800 (where the steep 960 x 600 board of test_board_search.cpp is
 // lost). Live, stereo-detect would drop the frames that arrive meanwhile
-// (corner_stage.h), so it keeps steps 1-3 (kFast): a board they miss is
-// seen again in the next frames. A folder of images for calibration
-// (stereo-calibrate --images) has no next frame, so it runs step 4 too
-// (docs/capture.md).
+// (corner_stage.h), so it keeps steps 1-3 (kFast) on the 800-pixel copy:
+// a board they miss is seen again in the next frames. A folder of images
+// for calibration (stereo-calibrate --images) has no next frame, so it
+// runs step 4 too (docs/capture.md).
 bool FindBoard(const cv::Mat& gray, cv::Size pattern, BoardSearch search, std::vector<cv::Point2f>* points) {
   constexpr int kSearchSide = 800, kEveryBoardSide = 960;
-  return cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
-         AdaptiveSearch(gray, pattern, kSearchSide, true, points) ||
+  if (cv::findChessboardCorners(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE)) return true;
+  const bool every_board = search == BoardSearch::kEveryBoard;
+  const SearchCopy copy(gray, every_board ? kEveryBoardSide : kSearchSide);
+  return AdaptiveSearch(copy, pattern, true, points) ||
          cv::findChessboardCornersSB(gray, pattern, *points, cv::CALIB_CB_NORMALIZE_IMAGE) ||
-         (search == BoardSearch::kEveryBoard && AdaptiveSearch(gray, pattern, kEveryBoardSide, false, points));
+         (every_board && !cv::checkChessboard(copy.image, pattern) && AdaptiveSearch(copy, pattern, false, points));
 }
 
 // The detector's corners to their saddle points (corner_refinement.h), each

@@ -58,14 +58,15 @@ widestereo::stereo_corners_t StereoCornerFinder::Find(const widestereo::stereo_f
   int left_unrefined = 0, right_unrefined = 0;
   corners.left = FindInImage(frame.left, &left_unrefined);
   // A one-camera rig's frame has no right image: no corners and no size.
-  if (IsNoImage(frame.right)) {
-    corners.right.board_id = board_.id;
-    corners.right.image_width = corners.right.image_height = corners.right.n = 0;
-  } else {
-    corners.right = FindInImage(frame.right, &right_unrefined);
-  }
+  corners.right = IsNoImage(frame.right) ? NoCamera() : FindInImage(frame.right, &right_unrefined);
   if (unrefined) *unrefined = left_unrefined + right_unrefined;
   return corners;
+}
+
+widestereo::camera_corners_t StereoCornerFinder::NoCamera() const {
+  widestereo::camera_corners_t none{};
+  none.board_id = board_.id;
+  return none;
 }
 
 widestereo::camera_corners_t StereoCornerFinder::FindInImage(const widestereo::image_t& image,

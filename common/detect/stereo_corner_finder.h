@@ -29,6 +29,9 @@ class StereoCornerFinder {
   // carries only the corners kept.
   widestereo::stereo_corners_t Find(const widestereo::stereo_frame_t& frame, int* unrefined = nullptr) const;
   widestereo::camera_corners_t FindInImage(const widestereo::image_t& image, int* unrefined = nullptr) const;
+  // The corners of a camera a one-camera rig does not have: the board, no
+  // corners, no image size.
+  widestereo::camera_corners_t NoCamera() const;
 
   const BoardSpec& board() const { return board_; }
 

@@ -68,6 +68,26 @@ std::string NoBoardAdvice(const ImageFolder& folder, const BoardSpec& board) {
                   "a board of 10x7 squares is 9x6) and that the images show the whole board";
 }
 
+// One image's corners, or why it could not be searched.
+struct ImageCorners {
+  void Find(const StereoCornerFinder& finder, const widestereo::image_t& image) {
+    try {
+      corners = finder.FindInImage(image, &unrefined);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  widestereo::camera_corners_t corners{};
+  int unrefined = 0;
+  std::string error;
+};
+
+// A pair's corners, its two images searched by two jobs.
+struct PairCorners {
+  widestereo::stereo_corners_t corners{};
+  ImageCorners left, right;
+};
+
 // The names, the first kShown of them and how many more.
 std::string List(const std::vector<std::string>& names) {
   constexpr size_t kShown = 20;
@@ -110,39 +130,54 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     frame.left = MatToImage(pair->left, frame.utime);
     frame.right = one_camera ? NoImage(frame.utime) : MatToImage(pair->right, frame.utime);
     const ImagePairPaths paths = result.folder.pairs[size_t(id)];
+    // One job per image, not per pair: a pair whose one image holds part
+    // of a board (seconds of search, chessboard_detectors.cpp) then keeps
+    // one core, not both, and the other image's search runs beside it.
+    // The pair's last job delivers it, and finds both done (the pipeline
+    // delivers in order).
     auto shared = std::make_shared<const widestereo::stereo_frame_t>(std::move(frame));
-    pipeline.Submit([&, shared, paths]() -> OrderedPipeline::Delivery {
-      std::shared_ptr<widestereo::stereo_corners_t> corners;
-      int unrefined = 0;
-      try {
-        corners = std::make_shared<widestereo::stereo_corners_t>(finder.Find(*shared, &unrefined));
-      } catch (const std::exception& e) {
-        return [&, paths, why = std::string(e.what())] {
-          const std::string name = ImageName(paths.left, dir);
-          result.unreadable.push_back(name);
-          log.Error(name + ": " + why + ": left out");
-        };
+    auto pair_corners = std::make_shared<PairCorners>();
+    pair_corners->corners.utime = shared->utime;
+    pair_corners->corners.frame_id = shared->frame_id;
+    auto deliver = [&, pair_corners, paths] {
+      PairCorners& found = *pair_corners;
+      for (const auto& [image, path] : {std::pair{&found.left, paths.left}, std::pair{&found.right, paths.right}}) {
+        if (image->error.empty()) continue;
+        const std::string name = ImageName(path, dir);
+        result.unreadable.push_back(name);
+        log.Error(name + ": " + image->error + ": left out");
+        return;
       }
-      return [&, corners, paths, unrefined] {
-        events.push_back({int64_t(events.size()), corners->utime, channel::kStereoCorners, EncodeMessage(*corners)});
-        result.unrefined += unrefined;
-        if (corners->left.n > 0) {
-          ++result.left_boards;
-          if (first_board.empty()) {
-            first_board = paths.left;
-            for (int i = 0; i < corners->left.n; ++i)
-              first_corners.emplace_back(float(corners->left.image_points[i][0]), float(corners->left.image_points[i][1]));
-          }
-        } else {
-          result.left_without_board.push_back(ImageName(paths.left, dir));
+      widestereo::stereo_corners_t& corners = found.corners;
+      corners.left = found.left.corners;
+      corners.right = one_camera ? finder.NoCamera() : found.right.corners;
+      events.push_back({int64_t(events.size()), corners.utime, channel::kStereoCorners, EncodeMessage(corners)});
+      result.unrefined += found.left.unrefined + found.right.unrefined;
+      if (corners.left.n > 0) {
+        ++result.left_boards;
+        if (first_board.empty()) {
+          first_board = paths.left;
+          for (int i = 0; i < corners.left.n; ++i)
+            first_corners.emplace_back(float(corners.left.image_points[i][0]), float(corners.left.image_points[i][1]));
         }
-        if (one_camera) return;
-        if (corners->right.n > 0)
-          ++result.right_boards;
-        else
-          result.right_without_board.push_back(ImageName(paths.right, dir));
-      };
+      } else {
+        result.left_without_board.push_back(ImageName(paths.left, dir));
+      }
+      if (one_camera) return;
+      if (corners.right.n > 0)
+        ++result.right_boards;
+      else
+        result.right_without_board.push_back(ImageName(paths.right, dir));
+    };
+    pipeline.Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
+      pair_corners->left.Find(finder, shared->left);
+      return one_camera ? OrderedPipeline::Delivery(deliver) : [] {};
     });
+    if (!one_camera)
+      pipeline.Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
+        pair_corners->right.Find(finder, shared->right);
+        return deliver;
+      });
     if ((id + 1) * 10 / total != id * 10 / total)  // about ten lines however many images
       log.Progress("finding the board: " + std::to_string(id + 1) + " of " + std::to_string(total) + " " +
                    (one_camera ? "images" : "pairs"));
