@@ -10,9 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <random>
+#include <set>
 #include <vector>
 
 #include "calib/solver/camera_block.h"
@@ -452,12 +455,53 @@ TEST(Problem, LinearisedAtTheTruthHasOneBlockPerViewAndZeroResiduals) {
     EXPECT_EQ(block.pose, b);
     EXPECT_EQ(block.r.size(), 2 * p.rig.data.left.views[b].size()) << "view " << b;
     EXPECT_EQ(block.J_free.rows(), block.r.size());
+    // Without a field a view's corners are one block, in order.
+    std::vector<int> all(size_t(p.rig.data.left.views[b].size()));
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_EQ(block.corners, all) << "view " << b;
     // Without a field every view reads every free parameter.
     ASSERT_EQ(int(block.columns.size()), lin.free_size);
     for (int c = 0; c < lin.free_size; ++c) EXPECT_EQ(block.columns[size_t(c)], c);
     EXPECT_EQ(block.J_free.cols(), lin.free_size);
     EXPECT_EQ(block.J_pose.cols(), 6);
     EXPECT_LT(block.r.cwiseAbs().maxCoeff(), 1e-9) << "view " << b;
+  }
+}
+
+TEST(Problem, WithAFieldAViewIsLinearisedInBlocksOfCornersThatReadTheSameSegments) {
+  // The same normal equations as one block per view, in blocks that each
+  // read a few of the field's segments: a view's blocks hold each of its
+  // inlier corners once, and each block reads fewer parameters than the view.
+  CameraBlock start = Barrel();
+  start.field = NonRadialField(16, 12, {-1.0, 1.0, -0.75, 0.75});
+  start.coeffs.resize(start.coeffs.size() + size_t(start.field.NumCoeffs()), 0.0);
+  BarrelProblem p(start, 3);
+  for (int i = 0; i < 5; ++i) p.inliers[0][size_t(i)] = 0;
+  const Linearisation lin = Linearise(p.problem, "barrel with a field");
+  std::vector<std::vector<int>> seen(3);
+  std::vector<std::set<int>> view_columns(3);
+  for (const Linearisation::Block& block : lin.blocks) {
+    EXPECT_EQ(block.r.size(), 2 * Eigen::Index(block.corners.size()));
+    EXPECT_TRUE(std::is_sorted(block.corners.begin(), block.corners.end()));
+    EXPECT_LT(block.columns.size(), size_t(lin.free_size));
+    seen[size_t(block.observation)].insert(seen[size_t(block.observation)].end(), block.corners.begin(),
+                                           block.corners.end());
+    view_columns[size_t(block.observation)].insert(block.columns.begin(), block.columns.end());
+  }
+  for (int v = 0; v < 3; ++v) {
+    std::vector<int> inliers;
+    for (int i = 0; i < p.rig.data.left.views[v].size(); ++i)
+      if (p.inliers[size_t(v)][size_t(i)]) inliers.push_back(i);
+    std::sort(seen[size_t(v)].begin(), seen[size_t(v)].end());
+    EXPECT_EQ(seen[size_t(v)], inliers) << "view " << v;
+    EXPECT_GT(std::count_if(lin.blocks.begin(), lin.blocks.end(),
+                            [&](const Linearisation::Block& b) { return b.observation == v; }),
+              1)
+        << "view " << v;
+    for (const Linearisation::Block& block : lin.blocks)
+      if (block.observation == v) {
+        EXPECT_LT(block.columns.size(), view_columns[size_t(v)].size());
+      }
   }
 }
 

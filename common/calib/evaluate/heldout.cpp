@@ -175,17 +175,11 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
   Eigen::VectorXd b_all = lin.prior_J.transpose() * lin.prior_r;
   for (const PoseTerms& pose : poses)
     if (pose.App_inverse) AddPose(pose, 1, &S_all, &b_all);
-  // Each residual pair's corner: its index and distance from its camera's
-  // principal point (a block holds its observation's inlier corners in order).
+  // Each residual pair's corner's distance from its camera's principal point.
   std::vector<std::vector<double>> radius(lin.blocks.size());
-  std::vector<std::vector<int>> corner(lin.blocks.size());
   for (size_t b = 0; b < lin.blocks.size(); ++b) {
     const Observation& o = problem.observations[lin.blocks[b].observation];
-    for (int i = 0; i < o.corners->size(); ++i)
-      if ((*o.inliers)[i]) {
-        radius[b].push_back(PixelRadius(problem.cameras[o.camera], o.corners->image[i]));
-        corner[b].push_back(i);
-      }
+    for (int i : lin.blocks[b].corners) radius[b].push_back(PixelRadius(problem.cameras[o.camera], o.corners->image[i]));
   }
   std::vector<double> sum(n_cameras, 0.0);
   std::vector<int> count(n_cameras, 0);
@@ -239,7 +233,7 @@ CrossValidation CrossValidate(const Problem& solved, int folds) {
           const double squared = held_out.segment<2>(2 * j).squaredNorm();
           fold_sum[camera] += squared;
           ++fold_count[camera];
-          cv.corners.push_back({camera, pose.view, corner[pose.blocks[i]][j], k, squared});
+          cv.corners.push_back({camera, pose.view, block.corners[size_t(j)], k, squared});
         }
       }
     }

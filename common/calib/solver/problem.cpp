@@ -89,6 +89,7 @@ struct Built {
   ceres::Problem ceres;
   std::vector<ceres::ResidualBlockId> data_blocks;  // reprojection residuals (not the prior)
   std::vector<int> data_observation;  // per data block: its index in problem.observations
+  std::vector<std::vector<int>> data_corners;  // per data block: its observation's corners (ObservationCost)
   int data_residuals = 0;
   std::vector<double*> poses;        // board poses
   std::vector<double*> free_blocks;  // free camera blocks, the extrinsic, the warp
@@ -107,38 +108,43 @@ struct Built {
 struct ObservationCost {
   std::unique_ptr<ceres::CostFunction> cost;
   std::vector<int> segments;
+  std::vector<int> corners;  // the observation's corners it holds, ascending
 };
 std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Observation& o,
                                               bool per_corner, bool by_support) {
   const CameraBlock& camera = problem.cameras[o.camera];
   const double* intrinsics = camera.intrinsics.data();
-  std::map<std::vector<int>, ViewPoints> groups;  // by support; ordered, so the same order every run
-  std::vector<std::pair<std::vector<int>, ViewPoints>> corners;  // per_corner: in corner order
+  struct Group {
+    ViewPoints points;
+    std::vector<int> corners;
+  };
+  std::map<std::vector<int>, Group> groups;  // by support; ordered, so the same order every run
+  std::vector<std::pair<std::vector<int>, Group>> corners;  // per_corner: in corner order
   std::vector<double> all;  // every inlier pixel, for the view's support
   for (int i = 0; i < o.corners->size(); ++i) {
     if (!(*o.inliers)[i]) continue;
     const Eigen::Vector2d& x = o.corners->image[i];
     all.insert(all.end(), {x.x(), x.y()});
-    ViewPoints* points = nullptr;
+    Group* group = nullptr;
     if (per_corner || by_support) {
       std::vector<int> support = FieldSupport(camera.field, intrinsics, {x.x(), x.y()});
-      points = per_corner ? &corners.emplace_back(std::move(support), ViewPoints{}).second
-                          : &groups[std::move(support)];
+      group = per_corner ? &corners.emplace_back(std::move(support), Group{}).second : &groups[std::move(support)];
     } else {
-      points = &groups[{}];
+      group = &groups[{}];
     }
-    points->Add(o.corners->object[i], x, WarpBasis(problem.warp.extent, o.corners->object[i]));
+    group->points.Add(o.corners->object[i], x, WarpBasis(problem.warp.extent, o.corners->object[i]));
+    group->corners.push_back(i);
   }
   if (!per_corner && !by_support && !groups.empty())  // one block over the view's support
     corners.emplace_back(FieldSupport(camera.field, intrinsics, all), std::move(groups.begin()->second));
   else
     for (auto& group : groups) corners.emplace_back(group.first, std::move(group.second));
   std::vector<ObservationCost> costs;
-  for (auto& [segments, points] : corners) {
-    points.max_radius = camera.max_radius;
-    costs.push_back({std::unique_ptr<ceres::CostFunction>(
-                         MakeCost(camera.model, camera.field, std::move(points), o.via_extrinsic, segments)),
-                     segments});
+  for (auto& [segments, group] : corners) {
+    group.points.max_radius = camera.max_radius;
+    costs.push_back({std::unique_ptr<ceres::CostFunction>(MakeCost(camera.model, camera.field,
+                                                                   std::move(group.points), o.via_extrinsic, segments)),
+                     segments, std::move(group.corners)});
   }
   return costs;
 }
@@ -146,7 +152,7 @@ std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Obse
 // Fills `built` from the problem; observations that cannot be evaluated at
 // the current parameters move to problem.left_out. by_support: a view's
 // corners in blocks by the field's segments they read (ObservationCosts),
-// else one block per view, its corners in order (as Linearise reads them).
+// else one block per view.
 void Build(Problem& problem, const SolveSettings& settings, Built* built, bool by_support) {
   const bool per_corner = settings.robust_loss != RobustLoss::kNone;
   std::vector<Observation> kept;
@@ -177,6 +183,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built, bool b
       built->data_blocks.push_back(
           built->ceres.AddResidualBlock(costs[k].cost.release(), MakeLoss(settings), blocks[k]));
       built->data_observation.push_back(int(kept.size()) - 1);
+      built->data_corners.push_back(std::move(costs[k].corners));
     }
     double* pose = arena[o.pose->data.data()];
     if (!costs.empty() &&
@@ -374,7 +381,7 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
 
 Linearisation Linearise(Problem& problem, const std::string& what) {
   Built built(problem);
-  Build(problem, SolveSettings{what}, &built, false);
+  Build(problem, SolveSettings{what}, &built, true);
   ceres::Problem::EvaluateOptions options;
   options.parameter_blocks = built.poses;
   options.parameter_blocks.insert(options.parameter_blocks.end(), built.free_blocks.begin(),
@@ -429,6 +436,7 @@ Linearisation Linearise(Problem& problem, const std::string& what) {
     const int index = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
     Linearisation::Block block;
     block.observation = built.data_observation[b];
+    block.corners = std::move(built.data_corners[b]);
     block.pose = index;
     block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
     rows(row, count, 6 * index, &block.columns, &block.J_free, &block.J_pose);

@@ -84,7 +84,8 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings);
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome);
 
 // The problem linearised at its parameters, without a robust loss: per
-// observation with corners, its residuals (inlier corners, u and v) and their
+// set of an observation's inlier corners that read the same segments of
+// the field (all of them without a field), their residuals (u and v) and their
 // Jacobian by the free parameters (the free cameras, extrinsic and warp in
 // their tangent spaces, as EstimateStddev orders them) and by its board
 // pose; the smoothness prior's residuals and Jacobian by the free
@@ -94,6 +95,7 @@ struct Linearisation {
   struct Block {
     int observation = 0;  // index into problem.observations
     int pose = 0;         // the board pose's index among the distinct poses
+    std::vector<int> corners;  // the observation's corners, ascending: rows 2i and 2i + 1 are corners[i]'s
     Eigen::VectorXd r;
     // The free parameters its rows depend on (a view reads few of a
     // field's coefficients), ascending, and d r / d them: J_free's column
