@@ -68,14 +68,17 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     key = key_file(tmp_path)
     report = os.path.join(bus.folder, "report.json")
     # A keyed rig: every process has the key (images and corners are signed).
-    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key])
+    # The pages first, so that they hear every frame; the images PNG, as the
+    # calibrate launch records them, decoded by every process.
+    keyed_port, open_port = free_port(), free_port()
+    keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
+    readonly = bus.start("stereo-view", ["--port", str(open_port)])
+    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key,
+                                 "--compression", "png"])
     bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
                                    "--report", report, "--key-file", key, "--preview-every", "1"])
-    keyed_port, open_port = free_port(), free_port()
-    keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
-    readonly = bus.start("stereo-view", ["--port", str(open_port)])
 
     # Both images, the corners drawn on them (in the DOM and in the pixels).
     browser.get(bus.page(keyed_port, keyed))
@@ -159,8 +162,12 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert listed["count"] == len(listed["views"])
     solved_rms = [list(pair) for pair in zip(solved["cameras"][0]["view_rms"], solved["cameras"][1]["view_rms"])]
     assert listed["views"][:len(solved_rms)] == solved_rms
-    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card canvas[data-image='1']"), 30,
-          "a view's thumbnail drawn")
+    # Every view has its thumbnail, those accepted while no page showed this
+    # stereo-view's calibration view (the read-only one's was shown) too.
+    until(lambda: browser.execute_script("""
+        const canvases = [...document.querySelectorAll('#view-list .view-card canvas')];
+        return canvases.length > 0 && canvases.every(c => c.dataset.image === '1');"""), 30,
+          "every view's thumbnail drawn")
     screenshot(browser, bus, "calibration-views.png", "view-list")
 
     # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
@@ -171,6 +178,21 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     shown = "#view-list .view-card[data-frame-id='%d'][data-utime='%d']" % (frame_id, utime)
     until(lambda: not browser.find_elements(By.CSS_SELECTOR, shown), 30, "the removed view gone from the list")
     assert "remove frame %d sent" % frame_id in browser.find_element(By.ID, "command-why").text
+    # The page's list, kept by the changes since the whole list it got first,
+    # is the whole list a new stream gets now.
+    def lists_agree():
+        return browser.execute_async_script("""
+            const done = arguments[arguments.length - 1], stream = new EventSource('events');
+            stream.addEventListener('views', (e) => {
+              stream.close();
+              const text = (v) => v && JSON.stringify([v.frame_id, v.utime, v.thumbnail, v.left_rms, v.right_rms]);
+              const whole = JSON.parse(e.data).views.map(text);
+              const shown = [...document.querySelectorAll('#view-list .view-card')].map(
+                  c => text(viewList.views.get(`${c.dataset.frameId}:${c.dataset.utime}`)));
+              done(whole.length > 0 && viewList.views.size === whole.length &&
+                   JSON.stringify(whole) === JSON.stringify(shown));
+            });""")
+    until(lists_agree, 30, "the page's list as a new stream's whole list")
 
     bus.stop()
     views_file = os.path.join(bus.folder, "stereo-calibrate-views.lcmlog")
