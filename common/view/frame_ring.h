@@ -3,8 +3,8 @@
 // make a thumbnail of one once stereo-detect has found a board in it: the
 // corners come later than the frame, by the detector's latency. Bounded:
 // at most kFramesHeld frames and kBytesHeld bytes of images, the oldest
-// forgotten first: of 1280x960 pairs, 61 PNG ones (1.04 MB each: 12 s at
-// 5 Hz) or 26 raw ones (2.46 MB). Not thread-safe: the input thread's.
+// forgotten first: of 1280x960 pairs, 64 PNG ones (1.04 MB each: 13 s at
+// 5 Hz) or 27 raw ones (2.46 MB). Not thread-safe: the input thread's.
 #pragma once
 
 #include <cstddef>
