@@ -206,7 +206,10 @@ void ViewNode::PublishView() {
     rig = rig_source_;
   }
   const int64_t now = Clock();
-  if (recording_ && recording_->Check(now)) process_.ReportError(recording_->StoppedText());  // stereo-status shows it
+  if (recording_ && recording_->Check(now)) {  // stereo-status shows both; a later error replaces only the first
+    process_.ReportError(recording_->StoppedText());
+    process_.SetState("recording stopped");
+  }
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},
                                         {"counters", counters},

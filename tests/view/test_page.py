@@ -384,6 +384,7 @@ def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, 
     until(lambda: attribute(browser, "#stale", "data-recording-capped") == "true", 10, "the cap reached, on the page")
     assert "Recording stopped: " + recording + " reached its cap of 0.001 MB" in browser.find_element(By.ID, "stale").text
     assert "recording stopped" in browser.find_element(By.ID, "recording").text
-    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and
+    # In its last error, and in its state (stereo-status's STATE), which a later error does not replace.
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and s.state == "recording stopped" and
                    s.last_error.startswith("recording stopped: " + recording + " reached its cap")], 10,
           "stereo-view's heartbeat says the recording stopped (stereo-status shows it)")
