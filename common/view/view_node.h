@@ -29,7 +29,7 @@
 // CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h),
 // as a change from the list before. From its start (a calibration's first
 // frames come before its first status) and while a calibration is heard
-// (STEREO_CORNERS or CALIBRATION_STATUS in the last kCalibrationHeardUs),
+// (STEREO_CORNERS or CALIBRATION_STATUS in the last kCalibrationHeardUs, 30 s),
 // every frame is held as it came (view/frame_ring.h, bounded) and a
 // thumbnail made of each one the board was found in, so that every view
 // gets one, whatever the page was shown: one whose frame was forgotten
@@ -135,8 +135,9 @@ class ViewNode {
   std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
   // A calibration not heard for this long has stopped: frames are no longer
-  // held. stereo-calibrate's status comes every second.
-  static constexpr int64_t kCalibrationHeardUs = 5000000;
+  // held. stereo-calibrate's status comes every second; a loaded host may
+  // start it many seconds after the cameras.
+  static constexpr int64_t kCalibrationHeardUs = 30000000;
   ViewList view_list_;  // the input thread's, as are the next four
   FrameRing ring_;
   int64_t last_calibration_us_ = INT64_MIN;

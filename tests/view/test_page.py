@@ -73,6 +73,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     keyed_port, open_port = free_port(), free_port()
     keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
     readonly = bus.start("stereo-view", ["--port", str(open_port)])
+    keyed_page, readonly_page = bus.page(keyed_port, keyed), bus.page(open_port, readonly)  # listening
     bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key,
                                  "--compression", "png"])
     bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
@@ -81,7 +82,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
                                    "--report", report, "--key-file", key, "--preview-every", "1"])
 
     # Both images, the corners drawn on them (in the DOM and in the pixels).
-    browser.get(bus.page(keyed_port, keyed))
+    browser.get(keyed_page)
 
     def corners_drawn(side):  # the page redraws at every frame: both checks at one moment
         canvas = browser.find_element(By.CSS_SELECTOR, "#cam-%s canvas" % side)
@@ -112,7 +113,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
         (attribute(browser, "#spread", "data-enough") == "true")
 
     # Without the key: the buttons are disabled, say why, and the server sends nothing.
-    browser.get(bus.page(open_port, readonly))
+    browser.get(readonly_page)
     until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
     until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card button.remove"), 20, "the views listed")
     assert browser.execute_script(  # one look: the list is drawn anew as views come
@@ -121,7 +122,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
         assert post_command(browser, body) == 403
 
     # With it: solve from the page, accepted by the keyed stereo-calibrate.
-    browser.get(bus.page(keyed_port, keyed))
+    browser.get(keyed_page)
     until(lambda: browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").is_enabled(), 20,
           "the solve button enabled")
     until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 30, "coverage shown")
@@ -164,10 +165,16 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert listed["views"][:len(solved_rms)] == solved_rms
     # Every view has its thumbnail, those accepted while no page showed this
     # stereo-view's calibration view (the read-only one's was shown) too.
-    until(lambda: browser.execute_script("""
-        const canvases = [...document.querySelectorAll('#view-list .view-card canvas')];
-        return canvases.length > 0 && canvases.every(c => c.dataset.image === '1');"""), 30,
-          "every view's thumbnail drawn")
+    def without_thumbnail():
+        return browser.execute_script("""
+            const cards = [...document.querySelectorAll('#view-list .view-card')];
+            return cards.length ? cards.filter(c => c.querySelector('canvas').dataset.image !== '1')
+                                       .map(c => +c.dataset.frameId) : null;""")
+    try:
+        until(lambda: without_thumbnail() == [], 30, "every view's thumbnail drawn")
+    except BaseException:
+        print("the views of these frames have no thumbnail:", without_thumbnail())
+        raise
     screenshot(browser, bus, "calibration-views.png", "view-list")
 
     # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
