@@ -2,12 +2,13 @@
 
 namespace ws::view {
 
-void EventHub::Publish(const std::string& topic, std::string json) {
+void EventHub::Publish(const std::string& topic, std::string json, std::string delta) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     Topic& t = topics_[topic];
     ++t.version;
     t.json = std::make_shared<const std::string>(std::move(json));
+    t.delta = delta.empty() ? nullptr : std::make_shared<const std::string>(std::move(delta));
   }
   changed_.notify_all();
 }
@@ -30,9 +31,10 @@ std::vector<Event> EventHub::Next(Cursor& cursor, std::chrono::milliseconds time
     if (sent != cursor.sent.end() && sent->second >= topic.version) continue;
     // A stream's first version of a topic is the newest: those before it were
     // published before the browser came, not skipped.
+    const bool follows = sent != cursor.sent.end() && sent->second == topic.version - 1;
     if (sent != cursor.sent.end()) *skipped += topic.version - sent->second - 1;
     cursor.sent[name] = topic.version;
-    events.push_back({name, topic.json});
+    events.push_back({name, follows && topic.delta ? topic.delta : topic.json});
   }
   return events;
 }

@@ -4,6 +4,12 @@
 // a version replaced before the stream sent it is skipped for that browser
 // and counted. Publish never waits for a browser: a slow or closed one only
 // misses versions (newest wins), the bus side goes on at its own rate.
+//
+// A topic may also carry each version's change from the one before (a
+// delta: what a long list gained and lost): a stream that sent the version
+// before gets the delta, any other (a new or reconnected browser, one that
+// missed a version) the whole event, so a browser's copy is always whole
+// and an update costs what changed.
 #pragma once
 
 #include <chrono>
@@ -29,8 +35,10 @@ class EventHub {
     std::map<std::string, int64_t> sent;
   };
 
-  // Replaces the topic's event and wakes every stream.
-  void Publish(const std::string& topic, std::string json);
+  // Replaces the topic's event and wakes every stream. `delta` ("": none)
+  // is the change from the topic's previous version, sent instead of `json`
+  // to a stream that sent that version.
+  void Publish(const std::string& topic, std::string json, std::string delta = "");
   // Waits up to `timeout` for a topic newer than `cursor` has sent, then
   // returns every such topic's newest event (none: timed out, or Close()d)
   // and marks them sent. Versions the cursor never saw (published between
@@ -47,6 +55,7 @@ class EventHub {
   struct Topic {
     int64_t version = 0;  // publishes so far
     std::shared_ptr<const std::string> json;
+    std::shared_ptr<const std::string> delta;  // null: none
   };
   bool HasNews(const Cursor& cursor) const;
 

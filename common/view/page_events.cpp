@@ -29,8 +29,7 @@ cv::Mat To8Bit(const cv::Mat& image) {
 }
 
 json Image(const widestereo::image_t& image, int max_width, BlobStore& blobs) {
-  const cv::Mat mat = ImageView(image);
-  return {{"width", image.width}, {"height", image.height}, {"src", blobs.Put("frame", 2 * kFramesKept, Jpeg(To8Bit(mat), max_width))}};
+  return {{"width", image.width}, {"height", image.height}, {"src", blobs.Put("frame", 2 * kFramesKept, ImageJpeg(image, max_width))}};
 }
 
 json Corners(const widestereo::camera_corners_t& corners) {
@@ -60,6 +59,8 @@ Blob Jpeg(const cv::Mat& image, int max_width) {
   cv::imencode(".jpg", shown, jpeg.bytes, {cv::IMWRITE_JPEG_QUALITY, 80});
   return jpeg;
 }
+
+Blob ImageJpeg(const widestereo::image_t& image, int max_width) { return Jpeg(To8Bit(ImageView(image)), max_width); }
 
 std::string Arrived(std::string event, int64_t at_us) {
   if (event.size() < 2 || event.front() != '{' || event.back() != '}')

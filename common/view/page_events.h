@@ -60,5 +60,9 @@ std::string Arrived(std::string event, int64_t at_us);
 
 // An 8-bit image (gray or BGR) scaled to at most max_width across, as a JPEG blob.
 Blob Jpeg(const cv::Mat& image, int max_width);
+// An image message as Jpeg makes it: decoded after its size is checked
+// (lcm_io/image_codec.h ImageView), 16-bit and float images scaled to 8 bits.
+// Throws DecodeError.
+Blob ImageJpeg(const widestereo::image_t& image, int max_width);
 
 }  // namespace ws::view

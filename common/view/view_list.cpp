@@ -1,9 +1,6 @@
 #include "view/view_list.h"
 
-#include <set>
-
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "view/page_events.h"
 
@@ -22,15 +19,26 @@ json Rms(double rms) { return rms < 0 ? json(nullptr) : json(rms); }
 
 }  // namespace
 
-ViewList::ViewList(BlobStore& blobs, FrameImage frame_image) : blobs_(blobs), frame_image_(std::move(frame_image)) {}
+void ViewList::Found(const widestereo::stereo_corners_t& corners, const widestereo::stereo_frame_t& frame) {
+  const Key key{frame.frame_id, frame.utime};
+  if (candidates_.count(key) || thumbnails_.count(key)) return;
+  if (corners.left.n <= 0 && corners.right.n <= 0) return;  // no board: no view will come of it
+  // As the page draws a view: on its left image unless the left did not see the board.
+  const auto& image = corners.left.n > 0 ? frame.left : frame.right;
+  candidates_[key] = std::make_shared<const Blob>(ImageJpeg(image, kThumbnailWidth));
+  candidate_order_.push_back(key);
+  if (candidate_order_.size() > kCandidatesKept) {
+    candidates_.erase(candidate_order_.front());
+    candidate_order_.pop_front();
+  }
+}
 
-std::string ViewList::Thumbnail(const Key& key, const std::string& side) {
+std::string ViewList::Thumbnail(const Key& key) {
   if (const auto found = thumbnails_.find(key); found != thumbnails_.end()) return found->second;
-  const auto jpeg = frame_image_(key.first, key.second, side);
-  if (!jpeg) return "";
-  const cv::Mat image = cv::imdecode(jpeg->bytes, cv::IMREAD_COLOR);
-  if (image.empty()) return "";
-  const std::string src = blobs_.Put("thumbnail", kThumbnailsKept, Jpeg(image, kThumbnailWidth));
+  const auto candidate = candidates_.find(key);
+  if (candidate == candidates_.end()) return "";
+  const std::string src = blobs_.Put("thumbnail", kThumbnailsKept, *candidate->second);
+  candidates_.erase(candidate);  // its order entry goes in turn, finding nothing
   thumbnails_[key] = src;
   made_.emplace_back(key, src);
   if (made_.size() > kThumbnailsKept) {  // the store has just forgotten it
@@ -42,34 +50,43 @@ std::string ViewList::Thumbnail(const Key& key, const std::string& side) {
   return src;
 }
 
-std::optional<std::string> ViewList::Event(const widestereo::calibration_views_t& views) {
-  json list = json::array();
-  std::set<Key> held;
-  // Newest first: those are the ones whose frames may still be at hand.
-  for (auto view = views.views.rbegin(); view != views.views.rend(); ++view) {
-    const Key key{view->frame_id, view->frame_utime};
-    held.insert(key);
-    const std::string thumbnail = Thumbnail(key, view->left_corners > 0 ? "left" : "right");  // as the page draws
-    list.push_back({{"frame_id", view->frame_id},
-                    {"utime", view->frame_utime},
-                    {"left_corners", view->left_corners},
-                    {"right_corners", view->right_corners},
-                    {"left_outline", Outline(view->left_outline)},
-                    {"right_outline", Outline(view->right_outline)},
-                    {"left_rms", Rms(view->left_rms)},
-                    {"right_rms", Rms(view->right_rms)},
-                    {"thumbnail", thumbnail.empty() ? json(nullptr) : json(thumbnail)}});
+std::optional<ViewList::Update> ViewList::Event(const widestereo::calibration_views_t& views) {
+  const json header = {{"solve_utime", views.solve_utime},
+                       {"width", {views.image_width[0], views.image_width[1]}},
+                       {"height", {views.image_height[0], views.image_height[1]}}};
+  json whole = header, change = header;
+  whole["views"] = json::array();
+  change["put"] = json::array();
+  change["gone"] = json::array();
+  std::map<Key, std::string> sent;
+  for (const auto& view : views.views) {  // oldest first
+    const Key key{view.frame_id, view.frame_utime};
+    const std::string thumbnail = Thumbnail(key);
+    json item = {{"frame_id", view.frame_id},
+                 {"utime", view.frame_utime},
+                 {"left_corners", view.left_corners},
+                 {"right_corners", view.right_corners},
+                 {"left_outline", Outline(view.left_outline)},
+                 {"right_outline", Outline(view.right_outline)},
+                 {"left_rms", Rms(view.left_rms)},
+                 {"right_rms", Rms(view.right_rms)},
+                 {"thumbnail", thumbnail.empty() ? json(nullptr) : json(thumbnail)}};
+    std::string text = item.dump();
+    if (const auto last = last_views_.find(key); last == last_views_.end() || last->second != text)
+      change["put"].push_back(item);
+    whole["views"].insert(whole["views"].begin(), std::move(item));
+    sent[key] = std::move(text);
   }
-  for (auto it = thumbnails_.begin(); it != thumbnails_.end();)  // removed, reset: not shown again
-    it = held.count(it->first) ? std::next(it) : thumbnails_.erase(it);
-  std::string event = json{{"solve_utime", views.solve_utime},
-                           {"width", {views.image_width[0], views.image_width[1]}},
-                           {"height", {views.image_height[0], views.image_height[1]}},
-                           {"views", list}}
-                          .dump();
-  if (event == last_) return std::nullopt;
-  last_ = event;
-  return event;
+  for (const auto& [key, text] : last_views_)
+    if (!sent.count(key)) {
+      change["gone"].push_back({key.first, key.second});
+      thumbnails_.erase(key);  // removed, or reset: not shown again
+    }
+  const std::string header_text = header.dump();
+  if (change["put"].empty() && change["gone"].empty() && header_text == last_header_) return std::nullopt;
+  last_header_ = header_text;
+  last_views_ = std::move(sent);
+  return Update{whole.dump(), change.dump()};
 }
 
 }  // namespace ws::view

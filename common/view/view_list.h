@@ -2,16 +2,30 @@
 // stereo-calibrate holds (CALIBRATION_VIEWS), named by its frame id, with its
 // corner counts, the board's outline in each image, its RMS in the last
 // solve, and a thumbnail of its left image (of its right one when the left
-// did not see the board) when stereo-view still had that frame (one of the
-// last frames it showed). Thumbnails are small
-// (kThumbnailWidth pixels across) and few (the newest kThumbnailsKept, in
-// the BlobStore): a session of hundreds of views costs the page's server
-// at most kThumbnailsKept small JPEGs. Not thread-safe: the input thread's.
+// did not see the board).
+//
+// Thumbnails: one is made (kThumbnailWidth pixels across, JPEG) of each
+// frame in which stereo-detect found a board (Found), from the frame as it
+// came (view/frame_ring.h), before stereo-calibrate says whether it took a
+// view from it; the newest kCandidatesKept wait in memory for a
+// CALIBRATION_VIEWS that lists them. A listed one goes to the BlobStore
+// (the page fetches it) and stays while its view does, kThumbnailsKept at
+// most (stereo-calibrate keeps 300 views unless --max-views says more):
+// memory is bounded however long the session, and the bus carries nothing
+// more than it did.
+//
+// Each update is the whole list and its change from the list before
+// (EventHub sends a browser that holds the list before only the change):
+//   whole:  {"solve_utime", "width": [l, r], "height": [l, r], "views": [newest first]}
+//   change: {"solve_utime", "width", "height", "put": [views new or changed, oldest first],
+//            "gone": [[frame_id, utime], ...]}
+// A view is {"frame_id", "utime", "left_corners", "right_corners",
+// "left_outline", "right_outline", "left_rms", "right_rms", "thumbnail"}.
+// Not thread-safe: the input thread's.
 #pragma once
 
 #include <cstdint>
 #include <deque>
-#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -20,34 +34,45 @@
 
 #include "view/blob_store.h"
 #include "widestereo/calibration_views_t.hpp"
+#include "widestereo/stereo_corners_t.hpp"
+#include "widestereo/stereo_frame_t.hpp"
 
 namespace ws::view {
 
 inline constexpr int kThumbnailWidth = 128;
-inline constexpr size_t kThumbnailsKept = 64;
+inline constexpr size_t kCandidatesKept = 64;
+inline constexpr size_t kThumbnailsKept = 512;
 
 class ViewList {
  public:
-  // An image ("left" or "right") of a frame the page was shown (its JPEG blob), or null.
-  using FrameImage =
-      std::function<std::shared_ptr<const Blob>(int64_t frame_id, int64_t utime, const std::string& side)>;
+  struct Update {
+    std::string whole, change;
+  };
 
-  ViewList(BlobStore& blobs, FrameImage frame_image);
+  explicit ViewList(BlobStore& blobs) : blobs_(blobs) {}
 
-  // The "views" event for `views`, or nothing when it says what the last
-  // one said (the list changes when views come, go or are solved).
-  std::optional<std::string> Event(const widestereo::calibration_views_t& views);
+  // stereo-detect found `corners` in `frame` (the same frame id and utime):
+  // a thumbnail of the image a view of it would be drawn on. Throws
+  // DecodeError for a frame that cannot be decoded (nothing is kept).
+  void Found(const widestereo::stereo_corners_t& corners, const widestereo::stereo_frame_t& frame);
+
+  // The update for `views`, or nothing when it says what the last one said
+  // (the list changes when views come, go or are solved).
+  std::optional<Update> Event(const widestereo::calibration_views_t& views);
 
  private:
   using Key = std::pair<int64_t, int64_t>;  // frame id, utime
-  // The thumbnail's blob path of a view, made now if its frame is at hand; "" when not.
-  std::string Thumbnail(const Key& key, const std::string& side);
+  // The blob path of a listed view's thumbnail: kept, or made now of a
+  // candidate; "" when there is none.
+  std::string Thumbnail(const Key& key);
 
   BlobStore& blobs_;
-  FrameImage frame_image_;
-  std::map<Key, std::string> thumbnails_;  // the blob path of each view's thumbnail
-  std::deque<std::pair<Key, std::string>> made_;  // in the order made: the BlobStore forgets the oldest likewise
-  std::string last_;
+  std::map<Key, std::shared_ptr<const Blob>> candidates_;  // thumbnails of frames not listed yet
+  std::deque<Key> candidate_order_;                         // oldest first
+  std::map<Key, std::string> thumbnails_;                   // the blob path of each listed view's thumbnail
+  std::deque<std::pair<Key, std::string>> made_;  // in the order stored: the BlobStore forgets the oldest likewise
+  std::string last_header_;
+  std::map<Key, std::string> last_views_;  // each view of the last list, as sent
 };
 
 }  // namespace ws::view

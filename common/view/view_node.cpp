@@ -69,8 +69,7 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       blobs_(blobs),
       audience_(audience),
       options_(options),
-      view_list_(blobs, [this](int64_t frame_id, int64_t utime,
-                               const std::string& side) { return RecentImage(frame_id, utime, side); }),
+      view_list_(blobs),
       frames_(Stage<widestereo::stereo_frame_t>(process, channel::kStereoImages,
                                                 [this](auto& frame) { ShowFrame(frame); })),
       disparities_(Stage<widestereo::disparity_t>(process, channel::kStereoDisparity, [this](auto& d) {
@@ -118,19 +117,6 @@ std::string ViewNode::Command(const std::string& command, std::optional<std::pai
   process_.Publish(channel::kStereoCommand, msg);  // signed with the rig key
   process_.log().Info("sent " + command + (view ? " " + msg.args[0] : "") + " to stereo-calibrate, from the page");
   return "";
-}
-
-std::shared_ptr<const Blob> ViewNode::RecentImage(int64_t frame_id, int64_t utime, const std::string& side) {
-  std::string event;
-  {
-    std::lock_guard<std::mutex> lock(recent_mutex_);
-    const auto frame = recent_.find(frame_id);
-    if (frame == recent_.end()) return nullptr;
-    event = frame->second;
-  }
-  const auto parsed = nlohmann::json::parse(event);  // FrameEvent's: each image's src "blob/ID"
-  if (parsed.at("utime") != utime || !parsed.contains(side)) return nullptr;
-  return blobs_.Get(std::stoll(parsed.at(side).at("src").get<std::string>().substr(5)));
 }
 
 Rectification ShownRectification(const Rig& rig, int max_width) {
@@ -192,6 +178,9 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
+  last_calibration_us_ = Clock();
+  if (const auto frame = ring_.Find(corners.frame_id, corners.utime))
+    Guarded(process_, channel::kStereoImages, [&] { view_list_.Found(corners, *frame); });
   if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
     Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
@@ -217,7 +206,10 @@ void ViewNode::PublishView() {
     rig = rig_source_;
   }
   const int64_t now = Clock();
-  if (recording_ && recording_->Check(now)) process_.ReportError(recording_->StoppedText());  // stereo-status shows it
+  if (recording_ && recording_->Check(now)) {  // stereo-status shows both; a later error replaces only the first
+    process_.ReportError(recording_->StoppedText());
+    process_.SetState("recording stopped");
+  }
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},
                                         {"counters", counters},
@@ -243,6 +235,33 @@ void ViewNode::SubscribeSampled(const char* channel, Audience::Views views, int6
       gaps);
 }
 
+bool ViewNode::CalibrationHeard() const {
+  return last_calibration_us_ != INT64_MIN && Clock() - last_calibration_us_ < kCalibrationHeardUs;
+}
+
+void ViewNode::SubscribeImages() {
+  const Audience::Views both;
+  process_.SubscribeSampled<widestereo::stereo_frame_t>(
+      channel::kStereoImages,
+      [this, both] {
+        freshness_.Heard(channel::kStereoImages, Clock());  // asked once for every message that comes
+        frame_shown_ = audience_.Watching(both) && Due(last_frame_us_);
+        return frame_shown_ || CalibrationHeard();
+      },
+      [this](widestereo::stereo_frame_t& frame) {
+        if (!CalibrationHeard())
+          ring_.Clear();
+        else  // held as it came; the stage gets its own copy
+          ring_.Hold(frame_shown_ ? std::make_shared<const widestereo::stereo_frame_t>(frame)
+                                  : std::make_shared<const widestereo::stereo_frame_t>(std::move(frame)));
+        if (frame_shown_)
+          frames_.Offer(std::move(frame));
+        else
+          process_.Counters(channel::kStereoImages).skipped++;
+      },
+      2);  // LCM's queue holds two big messages at most: the stage takes the newest
+}
+
 template <class Msg>
 void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
                               Process::FrameGaps gaps) {
@@ -257,16 +276,18 @@ void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&
 
 void ViewNode::Start() {
   const bool live = !process_.file_input();
-  const Audience::Views both, depth{/*calibration=*/false, /*depth=*/true};
+  if (live) last_calibration_us_ = Clock();  // frames held from the start
+  const Audience::Views depth{/*calibration=*/false, /*depth=*/true};
   // The channels that carry only the frames their sender looked at (a
   // newest-frame stage, a once-a-second check): gaps there are skips by
   // design, not losses (runtime/process.h).
   constexpr auto sparse = Process::FrameGaps::skipped;
-  SubscribeSampled(channel::kStereoImages, both, last_frame_us_, frames_);
+  SubscribeImages();
   SubscribeShown<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
   SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
+    last_calibration_us_ = Clock();
     if (m.views_left + m.views_right < views_) {  // stereo-calibrate was reset: its views are gone
       spread_.Clear();
       Show("spread", spread_.Json().dump());
@@ -275,7 +296,8 @@ void ViewNode::Start() {
     Show("coverage", CoverageEvent(m));
   });
   SubscribeShown<widestereo::calibration_views_t>(channel::kCalibrationViews, [this](const auto& m) {
-    if (auto event = view_list_.Event(m)) Show("views", std::move(*event));
+    if (auto update = view_list_.Event(m))
+      hub_.Publish("views", Arrived(std::move(update->whole), Clock()), Arrived(std::move(update->change), Clock()));
   });
   process_.Subscribe<widestereo::calibration_result_t>(
       channel::kCalibrationResult, [this](const auto& m) { Show("result", ResultEvent(m)); });

@@ -26,7 +26,14 @@
 // some browser shows that view (view/audience.h); the others are skipped
 // undecoded, as sampled ones are.
 //
-// CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h).
+// CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h),
+// as a change from the list before. From its start (a calibration's first
+// frames come before its first status) and while a calibration is heard
+// (STEREO_CORNERS or CALIBRATION_STATUS in the last kCalibrationHeardUs, 30 s),
+// every frame is held as it came (view/frame_ring.h, bounded) and a
+// thumbnail made of each one the board was found in, so that every view
+// gets one, whatever the page was shown: one whose frame was forgotten
+// before its corners came (a detector seconds behind) has none.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file), and remove with the view's frame id
@@ -47,6 +54,7 @@
 #include "view/blob_store.h"
 #include "view/board_spread.h"
 #include "view/event_hub.h"
+#include "view/frame_ring.h"
 #include "view/freshness.h"
 #include "view/page_events.h"
 #include "view/recording_watch.h"
@@ -105,14 +113,16 @@ class ViewNode {
   template <class Msg>
   void SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us, NewestFirst<Msg>& stage,
                         Process::FrameGaps gaps = Process::FrameGaps::count);
+  // STEREO_IMAGES: a frame a browser shows (at most image_hz) to the frame
+  // stage; while a calibration is heard, every frame to the ring.
+  void SubscribeImages();
+  bool CalibrationHeard() const;
   // Subscribes `show` to `channel`, every message heard (freshness_).
   template <class Msg>
   void SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
                       Process::FrameGaps gaps = Process::FrameGaps::count);
   void ShowCorners(const widestereo::stereo_corners_t& corners);
   void ShowFrame(widestereo::stereo_frame_t& frame);
-  // The JPEG of an image ("left", "right") of a recent frame shown, or null (view/view_list.h).
-  std::shared_ptr<const Blob> RecentImage(int64_t frame_id, int64_t utime, const std::string& side);
   void PublishView();
 
   Process& process_;
@@ -124,7 +134,14 @@ class ViewNode {
   Freshness freshness_;
   std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
-  ViewList view_list_;  // the input thread's
+  // A calibration not heard for this long has stopped: frames are no longer
+  // held. stereo-calibrate's status comes every second; a loaded host may
+  // start it many seconds after the cameras.
+  static constexpr int64_t kCalibrationHeardUs = 30000000;
+  ViewList view_list_;  // the input thread's, as are the next four
+  FrameRing ring_;
+  int64_t last_calibration_us_ = INT64_MIN;
+  bool frame_shown_ = false;  // the frame being received goes to the frame stage
   int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)

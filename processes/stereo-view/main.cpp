@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   ws::ProcessCli cli("stereo-view",
                      "Serves the rig's live page over HTTP (open http://ADDRESS:PORT/): the calibration "
                      "view (both images with the corners found, the coverage, the projection uncertainty of the "
-                     "views so far, the list of views with a remove button each, the residual and projection "
+                     "views so far, the list of views with a thumbnail and a remove button each, the residual and projection "
                      "uncertainty maps and the model table after a solve, the hint, buttons for solve, "
                      "save, reset and restore) and the depth view (the rectified pair, the disparity in "
                      "metres, the filtered cloud in 3-D, the plane, the health, the processes' rates). "

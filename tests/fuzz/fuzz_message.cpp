@@ -58,6 +58,17 @@ void Use(const stereo_frame_t& frame) {
   Authenticate(frame, ws::channel::kStereoImages);
   Use(frame.left);
   if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
+  // stereo-view makes a thumbnail of a frame the board was found in.
+  ws::view::BlobStore blobs;
+  ws::view::ViewList list(blobs);
+  widestereo::stereo_corners_t corners{};
+  corners.frame_id = frame.frame_id;
+  corners.utime = frame.utime;
+  corners.left.n = 1;
+  try {
+    list.Found(corners, frame);
+  } catch (const ws::DecodeError&) {
+  }
 }
 
 // stereo-view colours every disparity it shows (stereo-match --save-disparity likewise).
@@ -132,7 +143,7 @@ void Use(const calibration_result_t& result) { ws::view::ResultEvent(result); }
 // stereo-view lists every view stereo-calibrate holds (no frame at hand: no thumbnail).
 void Use(const calibration_views_t& views) {
   ws::view::BlobStore blobs;
-  ws::view::ViewList list(blobs, [](int64_t, int64_t, const std::string&) { return nullptr; });
+  ws::view::ViewList list(blobs);
   if (!list.Event(views) || list.Event(views)) Violated("the same views listed twice, or not at all");
 }
 

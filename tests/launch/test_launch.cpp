@@ -70,6 +70,10 @@ TEST(Launch, RestartsAKilledProcessAndCtrlCLeavesACompleteReplayableLog) {
   const std::vector<LogEvent> events = ReadLog(log);
   const auto images = FrameIds<widestereo::stereo_frame_t>(events, ws::channel::kStereoImages);
   ASSERT_GE(images.size(), 7u) << "the images of both detectors' corners";
+  for (const auto& frame : Messages<widestereo::stereo_frame_t>(events, ws::channel::kStereoImages))
+    EXPECT_TRUE(frame.left.pixelformat == widestereo::image_t::PIXEL_FORMAT_PNG &&
+                frame.right.pixelformat == widestereo::image_t::PIXEL_FORMAT_PNG)
+        << "the calibrate launch records its images PNG (lossless), so that a session fits under its cap";
   for (size_t i = 1; i < images.size(); ++i)
     EXPECT_EQ(images[i], images[i - 1] + 1) << "STEREO_IMAGES lost frames while stereo-detect restarted";
 

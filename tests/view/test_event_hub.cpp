@@ -34,6 +34,23 @@ TEST(EventHub, AStreamGetsEachTopicsNewestAndCountsWhatItMissed) {
   EXPECT_EQ(hub.Unsent(cursor), 2);
 }
 
+TEST(EventHub, AStreamThatSentTheVersionBeforeGetsTheDeltaAnyOtherTheWhole) {
+  EventHub hub;
+  EventHub::Cursor first, late;
+  int64_t skipped = 0;
+  hub.Publish("views", "[a]");
+  EXPECT_EQ(*hub.Next(first, 0ms, &skipped)[0].json, "[a]");
+  hub.Publish("views", "[a,b]", "+b");
+  EXPECT_EQ(*hub.Next(first, 0ms, &skipped)[0].json, "+b");  // it holds [a]
+  EXPECT_EQ(*hub.Next(late, 0ms, &skipped)[0].json, "[a,b]");  // it held nothing
+  hub.Publish("views", "[a,b,c]", "+c");
+  hub.Publish("views", "[b,c]", "-a");
+  EXPECT_EQ(*hub.Next(first, 0ms, &skipped)[0].json, "[b,c]");  // it missed +c
+  EXPECT_EQ(skipped, 1);
+  hub.Publish("views", "[b,c,d]");  // no delta: the whole
+  EXPECT_EQ(*hub.Next(first, 0ms, &skipped)[0].json, "[b,c,d]");
+}
+
 TEST(EventHub, PublishNeverWaitsForAStreamAndCloseWakesIt) {
   EventHub hub;
   EventHub::Cursor stalled;  // a stream that never asks again

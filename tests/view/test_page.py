@@ -68,17 +68,21 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     key = key_file(tmp_path)
     report = os.path.join(bus.folder, "report.json")
     # A keyed rig: every process has the key (images and corners are signed).
-    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key])
+    # The pages first, so that they hear every frame; the images PNG, as the
+    # calibrate launch records them, decoded by every process.
+    keyed_port, open_port = free_port(), free_port()
+    keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
+    readonly = bus.start("stereo-view", ["--port", str(open_port)])
+    keyed_page, readonly_page = bus.page(keyed_port, keyed), bus.page(open_port, readonly)  # listening
+    bus.start("stereo-capture", ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop", "--key-file", key,
+                                 "--compression", "png"])
     bus.start("stereo-detect", ["--board", "chessboard:9x6:0.05", "--key-file", key])
     # The quickest solve: one model, no non-radial field or board bow to choose.
     bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off", "--out", os.path.join(bus.folder, "calib.yaml"),
                                    "--report", report, "--key-file", key, "--preview-every", "1"])
-    keyed_port, open_port = free_port(), free_port()
-    keyed = bus.start("stereo-view", ["--port", str(keyed_port), "--key-file", key])
-    readonly = bus.start("stereo-view", ["--port", str(open_port)])
 
     # Both images, the corners drawn on them (in the DOM and in the pixels).
-    browser.get(bus.page(keyed_port, keyed))
+    browser.get(keyed_page)
 
     def corners_drawn(side):  # the page redraws at every frame: both checks at one moment
         canvas = browser.find_element(By.CSS_SELECTOR, "#cam-%s canvas" % side)
@@ -109,7 +113,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
         (attribute(browser, "#spread", "data-enough") == "true")
 
     # Without the key: the buttons are disabled, say why, and the server sends nothing.
-    browser.get(bus.page(open_port, readonly))
+    browser.get(readonly_page)
     until(lambda: "rig key" in browser.find_element(By.ID, "command-why").text, 20, "the page says why it is read-only")
     until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card button.remove"), 20, "the views listed")
     assert browser.execute_script(  # one look: the list is drawn anew as views come
@@ -118,7 +122,7 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
         assert post_command(browser, body) == 403
 
     # With it: solve from the page, accepted by the keyed stereo-calibrate.
-    browser.get(bus.page(keyed_port, keyed))
+    browser.get(keyed_page)
     until(lambda: browser.find_element(By.CSS_SELECTOR, "button[data-command=solve]").is_enabled(), 20,
           "the solve button enabled")
     until(lambda: int(attribute(browser, "#cam-left", "data-coverage")) > 0, 30, "coverage shown")
@@ -159,8 +163,18 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert listed["count"] == len(listed["views"])
     solved_rms = [list(pair) for pair in zip(solved["cameras"][0]["view_rms"], solved["cameras"][1]["view_rms"])]
     assert listed["views"][:len(solved_rms)] == solved_rms
-    until(lambda: browser.find_elements(By.CSS_SELECTOR, "#view-list .view-card canvas[data-image='1']"), 30,
-          "a view's thumbnail drawn")
+    # Every view has its thumbnail, those accepted while no page showed this
+    # stereo-view's calibration view (the read-only one's was shown) too.
+    def without_thumbnail():
+        return browser.execute_script("""
+            const cards = [...document.querySelectorAll('#view-list .view-card')];
+            return cards.length ? cards.filter(c => c.querySelector('canvas').dataset.image !== '1')
+                                       .map(c => +c.dataset.frameId) : null;""")
+    try:
+        until(lambda: without_thumbnail() == [], 30, "every view's thumbnail drawn")
+    except BaseException:
+        print("the views of these frames have no thumbnail:", without_thumbnail())
+        raise
     screenshot(browser, bus, "calibration-views.png", "view-list")
 
     # Remove the newest view: stereo-calibrate takes it out of its list and of its views file.
@@ -171,6 +185,21 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     shown = "#view-list .view-card[data-frame-id='%d'][data-utime='%d']" % (frame_id, utime)
     until(lambda: not browser.find_elements(By.CSS_SELECTOR, shown), 30, "the removed view gone from the list")
     assert "remove frame %d sent" % frame_id in browser.find_element(By.ID, "command-why").text
+    # The page's list, kept by the changes since the whole list it got first,
+    # is the whole list a new stream gets now.
+    def lists_agree():
+        return browser.execute_async_script("""
+            const done = arguments[arguments.length - 1], stream = new EventSource('events');
+            stream.addEventListener('views', (e) => {
+              stream.close();
+              const text = (v) => v && JSON.stringify([v.frame_id, v.utime, v.thumbnail, v.left_rms, v.right_rms]);
+              const whole = JSON.parse(e.data).views.map(text);
+              const shown = [...document.querySelectorAll('#view-list .view-card')].map(
+                  c => text(viewList.views.get(`${c.dataset.frameId}:${c.dataset.utime}`)));
+              done(whole.length > 0 && viewList.views.size === whole.length &&
+                   JSON.stringify(whole) === JSON.stringify(shown));
+            });""")
+    until(lists_agree, 30, "the page's list as a new stream's whole list")
 
     bus.stop()
     views_file = os.path.join(bus.folder, "stereo-calibrate-views.lcmlog")
@@ -362,6 +391,7 @@ def test_stale_a_source_that_stops_is_named_and_the_page_is_no_longer_live(bus, 
     until(lambda: attribute(browser, "#stale", "data-recording-capped") == "true", 10, "the cap reached, on the page")
     assert "Recording stopped: " + recording + " reached its cap of 0.001 MB" in browser.find_element(By.ID, "stale").text
     assert "recording stopped" in browser.find_element(By.ID, "recording").text
-    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and
+    # In its last error, and in its state (stereo-status's STATE), which a later error does not replace.
+    until(lambda: [s for s in bus.events("PROCESS_STATUS") if s.name == "stereo-view" and s.state == "recording stopped" and
                    s.last_error.startswith("recording stopped: " + recording + " reached its cap")], 10,
           "stereo-view's heartbeat says the recording stopped (stereo-status shows it)")
