@@ -10,6 +10,7 @@
 #include "match/match_region.h"
 #include "rectify/calibration_size.h"
 #include "rig/rig_message.h"
+#include "runtime/wall_clock.h"
 #include "view/disparity_colour.h"
 
 namespace ws {
@@ -91,6 +92,7 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
       rectified_writer_(config_.save_rectified, "--save-rectified"),
       disparity_writer_(config_.save_disparity, "--save-disparity"),
       matcher_(AtMatchScale(config_.matcher)),
+      budget_(config_.latency_budget_ms),
       maps_(Live<MapsJob>(process, NewestFirst<MapsJob>::Policy::newest), [this](MapsJob& job) { BuildMaps(job); },
             [this](const MapsJob& job) {
               process_.log().Info("maps for " + job.source + " not built: a newer calibration replaced it");
@@ -224,6 +226,10 @@ void MatchNode::OnCloudStats(const widestereo::cloud_stats_t& stats) {
 }
 
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
+  // Whole, before any work is spent on it. The budget first: the gate,
+  // once open, times this matching.
+  if (!process_.file_input() && budget_.Late(frame.utime, WallMicros(), downstream_.ToAcknowledgement()))
+    return process_.CountSkipped(channel::kStereoImages, LatencyBudget::kSkipReason);
   if (!process_.file_input() && !downstream_.Open(DownstreamGate::Clock::now()))
     return process_.CountSkipped(channel::kStereoImages, "the cloud filter had a cloud waiting");
   try {

@@ -7,6 +7,7 @@
 #include "match/match_node.h"
 #include "rectify/rectify_options.h"
 #include "rig/rig_file.h"
+#include "runtime/latency_budget.h"
 #include "runtime/max_image_pixels_option.h"
 #include "runtime/process_cli.h"
 
@@ -20,7 +21,8 @@ int main(int argc, char** argv) {
                      "built (they would be stale once they are), and, when stereo-cloud would still be filtering "
                      "one of its clouds with another waiting by the time the pair's cloud came (its "
                      "CLOUD_STATS acknowledge them), skips the pair before matching it rather than have "
-                     "stereo-cloud skip its cloud; the pairs it skips are "
+                     "stereo-cloud skip its cloud; with --latency-budget, it skips a pair whose cloud "
+                     "would come later than the budget; the pairs it skips are "
                      "counted in PROCESS_STATUS, and with their reasons in its log. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
@@ -53,6 +55,8 @@ int main(int argc, char** argv) {
   app.add_flag("--whole-image", whole_image,
                "Match the whole rectified image, not only the box where both rectified images hold "
                "image (the common field) grown by the matcher's reach (for comparisons)");
+  ws::AddLatencyBudgetOption(app, config.latency_budget_ms, "matching a pair",
+                             "the filter's acknowledgement of its cloud (CLOUD_STATS; without a filter, its cloud)");
   ws::AddRectifyOptions(app, config.rectify);
   ws::AddMaxImagePixelsOption(app, config.max_image_pixels);
   std::string rectification = "auto";
