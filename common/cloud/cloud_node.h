@@ -79,7 +79,7 @@ class CloudNode {
   const CommandDispatcher commands_;
   const CloudFilter filter_;
   const CloudSaveConfig save_;
-  const LatencyBudget budget_;
+  LatencyBudget budget_;  // used by the stage only
   RecentDurations runs_{16};  // the chain's last runs, filter and publish: the stage's only
   mutable std::mutex mutex_;  // guards what follows, but for the stage
   std::optional<widestereo::point_cloud_t> newest_;

@@ -142,10 +142,13 @@ void MatchNode::BuildMaps(MapsJob& job) {
     Rectification rect = *job.geometry;
     BuildRectificationMaps(*job.rig, &rect);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const cv::Rect region = MatchRegion(rect, matcher_.config());
     process_.log().Info("rectification maps for " + job.source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                         std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
                         std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " +
-                        std::to_string(rect.baseline) + " m, " + ModelName(job.rig->left.distortion.kind) + " model");
+                        std::to_string(rect.baseline) + " m, " + ModelName(job.rig->left.distortion.kind) +
+                        " model; matching " + std::to_string(region.width) + "x" + std::to_string(region.height) +
+                        " of it (match/match_region.h)");
     auto built = std::make_shared<const Rectification>(std::move(rect));
     std::lock_guard<std::mutex> lock(rect_mutex_);
     if (rig_ == job.rig) {  // not replaced meanwhile

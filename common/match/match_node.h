@@ -173,7 +173,7 @@ class MatchNode {
   std::string ready_source_;
   int64_t frames_without_calibration_ = 0;
   DownstreamGate downstream_;
-  const LatencyBudget budget_;
+  LatencyBudget budget_;  // used by the matching stage only
   // Builds the maps of the newest calibration. Declared before the stages:
   // destroyed after them, since matching may wait for it.
   NewestFirst<MapsJob> maps_;

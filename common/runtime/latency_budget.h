@@ -8,10 +8,15 @@
 // before spending work on it, counted as skipped with kSkipReason
 // (Process::CountSkipped). The median, not the slowest, so that only a frame
 // already late by the usual pace is dropped: a chain that keeps up drops
-// none, and one that does not keeps the frames that can still make it.
-// When the rest alone takes the whole budget, no frame could make it, and
-// none is skipped for it: on a machine too slow for the budget every frame
-// comes late rather than none at all.
+// none.
+//
+// A frame is skipped only while a fresher one could make it: while the
+// youngest of the last kAges frames offered, plus the rest, is within the
+// budget. A frame comes to the stage no younger than its transport and the
+// stages before allow; where even that age plus the rest exceeds the budget
+// (a machine too slow for it), skipping would deliver nothing at all, and
+// every frame comes late instead. A skipped frame leaves the stage free, so
+// the next comes about as young as the youngest: skipping cannot starve it.
 //
 // The ages need stamps on this host's wall clock (stereo-capture's own, or
 // an Aravis camera's host timestamp); a stamp more than kClockMismatch away
@@ -20,6 +25,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 
 #include <CLI/CLI.hpp>
@@ -32,17 +38,20 @@ class LatencyBudget {
  public:
   static constexpr const char* kSkipReason = "it would come later than the latency budget";
   static constexpr std::chrono::seconds kClockMismatch{60};
+  static constexpr size_t kAges = 16;
 
   // budget_ms 0: no bound.
   explicit LatencyBudget(double budget_ms = 0) : budget_(std::chrono::microseconds(int64_t(budget_ms * 1000))) {}
   bool bounded() const { return budget_.count() > 0; }
   // True when a frame stamped `utime`, whose remaining work starts at
   // `now_utime` (both microseconds of the wall clock) and takes `rest`, would
-  // be done later than the budget allows.
-  bool Late(int64_t utime, int64_t now_utime, RecentDurations::Duration rest) const;
+  // be done later than the budget allows while a fresher one would not.
+  // Not thread-safe: one stage's, called once per frame it is offered.
+  bool Late(int64_t utime, int64_t now_utime, RecentDurations::Duration rest);
 
  private:
   std::chrono::microseconds budget_;
+  RecentDurations ages_{kAges};  // of the last frames offered
 };
 
 // --latency-budget MS for a process whose stage `stage` ("matching a pair")

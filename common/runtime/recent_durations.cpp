@@ -21,4 +21,8 @@ RecentDurations::Duration RecentDurations::Slowest() const {
   return last_.empty() ? Duration::zero() : *std::max_element(last_.begin(), last_.end());
 }
 
+RecentDurations::Duration RecentDurations::Fastest() const {
+  return last_.empty() ? Duration::zero() : *std::min_element(last_.begin(), last_.end());
+}
+
 }  // namespace ws

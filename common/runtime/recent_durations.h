@@ -20,6 +20,7 @@ class RecentDurations {
   // Zero while none is kept.
   Duration Median() const;
   Duration Slowest() const;
+  Duration Fastest() const;
   bool empty() const { return last_.empty(); }
 
  private:
