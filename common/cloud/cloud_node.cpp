@@ -1,6 +1,5 @@
 #include "cloud/cloud_node.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -9,7 +8,6 @@
 #include "lcm_io/channels.h"
 #include "runtime/escaped.h"
 #include "runtime/output_folder.h"
-#include "runtime/wall_clock.h"
 
 namespace ws {
 namespace {
@@ -62,13 +60,12 @@ void WarmUp(const CloudFilter& filter) {
 
 }  // namespace
 
-CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save, LatencyBudget budget)
+CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save)
     : process_(process),
       commands_(kProcessName, {{"save", "save [path=NAME.pcd]", {"path", "overwrite"},
                                 [this](const CommandArgs& args) { SaveCommand(args); }}}),
       filter_(filter),
       save_(std::move(save)),
-      budget_(budget),
       stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
                                   : NewestFirst<widestereo::point_cloud_t>::Policy::newest,
              [this](widestereo::point_cloud_t& msg) { Filter(msg); },
@@ -93,9 +90,6 @@ CloudNode::~CloudNode() { stage_.Drain(); }
 void CloudNode::OnCloud(widestereo::point_cloud_t& msg) { stage_.Offer(std::move(msg)); }
 
 void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
-  if (!process_.file_input() && budget_.Late(msg.utime, WallMicros(), runs_.Median()))
-    return process_.CountSkipped(channel::kStereoCloud, LatencyBudget::kSkipReason);
-  const auto start = std::chrono::steady_clock::now();
   CloudFilterResult result;
   try {
     StageTimer timer(process_.stage_times(), "filter");
@@ -122,7 +116,6 @@ void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   }
   process_.Publish(channel::kStereoCloudFiltered, result.cloud);
   process_.Publish(channel::kCloudStats, result.stats);
-  runs_.Add(std::chrono::steady_clock::now() - start);
   std::lock_guard<std::mutex> lock(mutex_);
   ++filtered_;
   newest_stats_ = result.stats;

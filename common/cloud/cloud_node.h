@@ -19,10 +19,7 @@
 // is counted as skipped on STEREO_CLOUD, so that the output stays about one
 // chain time behind the input, whatever its rate; the chain is run once at
 // start on a made-up plane (nothing published), so that the first clouds do
-// not wait for what its first run allocates. With a latency budget, live, a
-// cloud whose age (from its pair's capture stamp) plus the median of the
-// chain's last runs (filter and publish) would exceed it is skipped before
-// it is filtered (runtime/latency_budget.h). From a log, every cloud is
+// not wait for what its first run allocates. From a log, every cloud is
 // filtered, in line.
 //
 // Counting: a cloud that fails validation is rejected (by Process); a valid
@@ -39,10 +36,8 @@
 
 #include "cloud/cloud_filter.h"
 #include "runtime/command_dispatcher.h"
-#include "runtime/latency_budget.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
-#include "runtime/recent_durations.h"
 #include "widestereo/command_t.hpp"
 #include "widestereo/point_cloud_t.hpp"
 
@@ -57,8 +52,7 @@ class CloudNode {
  public:
   // Creates pcd_dir. Throws ConfigError for an invalid filter config or a
   // negative save_every, std::runtime_error when pcd_dir cannot be created.
-  CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save,
-            LatencyBudget budget = LatencyBudget());
+  CloudNode(Process& process, const CloudFilterConfig& filter, CloudSaveConfig save);
   ~CloudNode();
 
   // Takes the cloud (moves it to the filter's stage).
@@ -79,8 +73,6 @@ class CloudNode {
   const CommandDispatcher commands_;
   const CloudFilter filter_;
   const CloudSaveConfig save_;
-  LatencyBudget budget_;  // used by the stage only
-  RecentDurations runs_{16};  // the chain's last runs, filter and publish: the stage's only
   mutable std::mutex mutex_;  // guards what follows, but for the stage
   std::optional<widestereo::point_cloud_t> newest_;
   widestereo::cloud_stats_t newest_stats_{};

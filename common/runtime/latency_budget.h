@@ -28,8 +28,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include <CLI/CLI.hpp>
-
 #include "runtime/recent_durations.h"
 
 namespace ws {
@@ -53,9 +51,5 @@ class LatencyBudget {
   std::chrono::microseconds budget_;
   RecentDurations ages_{kAges};  // of the last frames offered
 };
-
-// --latency-budget MS for a process whose stage `stage` ("matching a pair")
-// starts with the check above, `rest` naming what the time after it covers.
-void AddLatencyBudgetOption(CLI::App& app, double& budget_ms, const std::string& stage, const std::string& rest);
 
 }  // namespace ws

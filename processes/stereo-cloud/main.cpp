@@ -6,7 +6,6 @@
 #include "cloud/cloud_filter_options.h"
 #include "cloud/cloud_node.h"
 #include "lcm_io/channels.h"
-#include "runtime/latency_budget.h"
 #include "runtime/process_cli.h"
 
 int main(int argc, char** argv) {
@@ -14,7 +13,6 @@ int main(int argc, char** argv) {
                      "Filters the point clouds on STEREO_CLOUD with PCL (depth pass-through, voxel "
                      "grid, statistical outlier removal, RANSAC plane) and publishes "
                      "STEREO_CLOUD_FILTERED and CLOUD_STATS. Live, it filters the newest cloud waiting; "
-                     "with --latency-budget, it skips a cloud that would come out later than the budget; "
                      "the clouds it skips, and the frames stereo-match did not make a cloud of, are counted as "
                      "skipped in PROCESS_STATUS. Writes PCD files every --save-every "
                      "clouds into --pcd-dir, and there on a 'save [path=NAME.pcd]' command on "
@@ -30,14 +28,12 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str()
       ->needs(pcd_dir);
-  double latency_budget_ms = 0;
-  ws::AddLatencyBudgetOption(app, latency_budget_ms, "filtering a cloud", "its filtered cloud sent");
   if (auto rc = cli.Parse(argc, argv)) return *rc;
 
   try {
     ws::SilencePclConsole();
     ws::Process process(cli.options());
-    ws::CloudNode node(process, filter, save, ws::LatencyBudget(latency_budget_ms));
+    ws::CloudNode node(process, filter, save);
     process.SetProgress([&] { return node.Progress(); });
     // stereo-match makes a cloud of the newest pair only: the frame ids it
     // passed over are skipped by design, not lost (runtime/process.h).

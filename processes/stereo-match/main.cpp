@@ -7,7 +7,6 @@
 #include "match/match_node.h"
 #include "rectify/rectify_options.h"
 #include "rig/rig_file.h"
-#include "runtime/latency_budget.h"
 #include "runtime/max_image_pixels_option.h"
 #include "runtime/process_cli.h"
 
@@ -55,8 +54,14 @@ int main(int argc, char** argv) {
   app.add_flag("--whole-image", whole_image,
                "Match the whole rectified image, not only the box where both rectified images hold "
                "image (the common field) grown by the matcher's reach (for comparisons)");
-  ws::AddLatencyBudgetOption(app, config.latency_budget_ms, "matching a pair",
-                             "the filter's acknowledgement of its cloud (CLOUD_STATS; without a filter, its cloud)");
+  app.add_option("--latency-budget", config.latency_budget_ms,
+                 "Live, milliseconds from a pair's capture stamp (this host's clock) to stereo-cloud's "
+                 "CLOUD_STATS of its cloud: a pair whose age plus the median time of that rest would exceed it "
+                 "is skipped before it is matched, while one of the last pairs was young enough to make it, so "
+                 "that a chain that cannot keep up drops pairs early instead of delivering each one later "
+                 "(0: no bound)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   ws::AddRectifyOptions(app, config.rectify);
   ws::AddMaxImagePixelsOption(app, config.max_image_pixels);
   std::string rectification = "auto";
