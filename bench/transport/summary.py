@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Summary of a bench/transport/run.sh run with ROUNDS > 1: for each
 variant, each figure's median over the rounds and its range (lowest,
-highest), from every round's bench_transport.out, then each stage's median
+highest), from every round's bench_transport.out (and the pairs stereo-match
+skipped for each reason, from its log), then each stage's median
 and p99 per frame (the medians over the rounds); with --rounds, one
 Markdown table row per round and variant instead, in the order they ran.
 
   bench/transport/summary.py [--rounds] RUN_DIR VARIANT...
 """
 import glob
+import os
 import re
 import statistics
 import sys
@@ -27,7 +29,14 @@ FIGURES = {
     "stereo-cloud filter, median ms": r"^  stereo-cloud +filter +([\d.]+) ",
 }
 PROCESSES = ("stereo-match", "stereo-cloud", "stereo-view", "stereo-status")
-NAMES = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES]  # every figure, in table order
+# figure name -> a reason stereo-match skips a pair for, counted in its log's
+# last line of counters (STEREO_IMAGES ... skipped N (REASON COUNT, ...))
+SKIPS = {
+    "pairs skipped: a newer pair": "a newer pair came while matching",
+    "pairs skipped: filter busy": "the cloud filter had a cloud waiting",
+    "pairs skipped: latency budget": "it would come later than the latency budget",
+}
+NAMES = list(FIGURES) + ["CPU %s %%" % p for p in PROCESSES] + list(SKIPS)  # every figure, in table order
 
 
 BUDGET_ROW = re.compile(r"^  (\S+)\s+(.+?)\s+([\d.]+)\s+([\d.]+)\s+\d+$")
@@ -56,6 +65,15 @@ def figures(path):
         m = re.search(r"^  %s\s+([\d.]+) %%" % process, cpu, re.M)
         if m:
             out["CPU %s %%" % process] = float(m.group(1))
+    try:
+        finals = [l for l in open(os.path.join(os.path.dirname(path), "stereo-match.log")) if " final: " in l]
+    except OSError:
+        finals = []
+    if finals:
+        images = re.search(r"STEREO_IMAGES in [^|]*", finals[-1])
+        for name, reason in SKIPS.items():
+            m = re.search(re.escape(reason) + r" (\d+)", images.group(0) if images else "")
+            out[name] = float(m.group(1)) if m else 0.0
     return out
 
 

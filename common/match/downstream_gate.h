@@ -24,10 +24,11 @@
 
 #include <chrono>
 #include <cstdint>
-#include <deque>
 #include <map>
 #include <mutex>
 #include <optional>
+
+#include "runtime/recent_durations.h"
 
 namespace ws {
 
@@ -48,14 +49,17 @@ class DownstreamGate {
   void Acknowledge(int64_t frame_id, Clock::time_point now);
   // Sent and neither acknowledged nor forgotten, as of the last call.
   int in_hand() const;
+  // What a pair whose matching starts now takes until the filter
+  // acknowledges its cloud: the median matching (Open to Sent) plus the
+  // median acknowledgement (Sent to Acknowledge), the latter zero until a
+  // filter has acknowledged one (runtime/latency_budget.h).
+  Clock::duration ToAcknowledgement() const;
 
  private:
-  Clock::duration Slowest() const;
-
   mutable std::mutex mutex_;
   std::map<int64_t, Clock::time_point> sent_;  // frame id -> when
-  std::deque<Clock::duration> delays_;         // the last acknowledgements' (Sent to Acknowledge)
-  std::deque<Clock::duration> matchings_;      // the last matchings' (Open to Sent)
+  RecentDurations delays_{kDelays};            // the last acknowledgements' (Sent to Acknowledge)
+  RecentDurations matchings_{kDelays};         // the last matchings' (Open to Sent)
   std::optional<Clock::time_point> opened_;    // the matching under way's start
   bool acknowledged_ = false;                  // a filter is there
 };

@@ -10,6 +10,7 @@
 #include "match/match_region.h"
 #include "rectify/calibration_size.h"
 #include "rig/rig_message.h"
+#include "runtime/wall_clock.h"
 #include "view/disparity_colour.h"
 
 namespace ws {
@@ -91,6 +92,7 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
       rectified_writer_(config_.save_rectified, "--save-rectified"),
       disparity_writer_(config_.save_disparity, "--save-disparity"),
       matcher_(AtMatchScale(config_.matcher)),
+      budget_(config_.latency_budget_ms),
       maps_(Live<MapsJob>(process, NewestFirst<MapsJob>::Policy::newest), [this](MapsJob& job) { BuildMaps(job); },
             [this](const MapsJob& job) {
               process_.log().Info("maps for " + job.source + " not built: a newer calibration replaced it");
@@ -140,10 +142,13 @@ void MatchNode::BuildMaps(MapsJob& job) {
     Rectification rect = *job.geometry;
     BuildRectificationMaps(*job.rig, &rect);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const cv::Rect region = MatchRegion(rect, matcher_.config());
     process_.log().Info("rectification maps for " + job.source + " built in " + std::to_string(int(ms)) + " ms: f = " +
                         std::to_string(rect.f) + " px, " + RectificationModeName(rect.mode) + " rectification at " +
                         std::to_string(rect.size.width) + "x" + std::to_string(rect.size.height) + ", baseline = " +
-                        std::to_string(rect.baseline) + " m, " + ModelName(job.rig->left.distortion.kind) + " model");
+                        std::to_string(rect.baseline) + " m, " + ModelName(job.rig->left.distortion.kind) +
+                        " model; matching " + std::to_string(region.width) + "x" + std::to_string(region.height) +
+                        " of it (match/match_region.h)");
     auto built = std::make_shared<const Rectification>(std::move(rect));
     std::lock_guard<std::mutex> lock(rect_mutex_);
     if (rig_ == job.rig) {  // not replaced meanwhile
@@ -224,6 +229,10 @@ void MatchNode::OnCloudStats(const widestereo::cloud_stats_t& stats) {
 }
 
 void MatchNode::Match(widestereo::stereo_frame_t& frame) {
+  // Whole, before any work is spent on it. The budget first: the gate,
+  // once open, times this matching.
+  if (!process_.file_input() && budget_.Late(frame.utime, WallMicros(), downstream_.ToAcknowledgement()))
+    return process_.CountSkipped(channel::kStereoImages, LatencyBudget::kSkipReason);
   if (!process_.file_input() && !downstream_.Open(DownstreamGate::Clock::now()))
     return process_.CountSkipped(channel::kStereoImages, "the cloud filter had a cloud waiting");
   try {

@@ -14,6 +14,7 @@
 #include "match/frame_image_writer.h"
 #include "rectify/disparity_cloud.h"
 #include "rectify/rectification.h"
+#include "runtime/latency_budget.h"
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
 #include "widestereo/cloud_stats_t.hpp"
@@ -29,6 +30,9 @@ struct MatchConfig {
   CloudSampling cloud;
   ImageSaveConfig save_rectified;  // left_/right_NNNNNN.png
   ImageSaveConfig save_disparity;  // disparity_NNNNNN.png, in colour with its legend
+  // Live, milliseconds from a pair's capture to its filtered cloud (its
+  // CLOUD_STATS; without a filter, to its cloud): 0, no bound.
+  double latency_budget_ms = 0;
 };
 
 struct MatchResult {
@@ -94,7 +98,10 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // cloud filter downstream would still have one cloud being filtered and
 // another waiting by the time its cloud came (match/downstream_gate.h: its
 // CLOUD_STATS acknowledge them), instead of being matched for a cloud that
-// would replace the waiting one unfiltered.
+// would replace the waiting one unfiltered; and with config.latency_budget_ms,
+// when its age plus the median time from a matching's start to the filter's
+// acknowledgement would exceed it (runtime/latency_budget.h): matched, its
+// cloud would come too late to use, and its matching would delay the next.
 // Every frame from the first received is thus published, counted as skipped
 // (each skip with its reason: Process::CountSkipped), dropped (a frame-id
 // gap), or rejected. From a log, both stages run in line: nothing is dropped
@@ -166,6 +173,7 @@ class MatchNode {
   std::string ready_source_;
   int64_t frames_without_calibration_ = 0;
   DownstreamGate downstream_;
+  LatencyBudget budget_;  // used by the matching stage only
   // Builds the maps of the newest calibration. Declared before the stages:
   // destroyed after them, since matching may wait for it.
   NewestFirst<MapsJob> maps_;

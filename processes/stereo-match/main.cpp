@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
                      "built (they would be stale once they are), and, when stereo-cloud would still be filtering "
                      "one of its clouds with another waiting by the time the pair's cloud came (its "
                      "CLOUD_STATS acknowledge them), skips the pair before matching it rather than have "
-                     "stereo-cloud skip its cloud; the pairs it skips are "
+                     "stereo-cloud skip its cloud; with --latency-budget, it skips a pair whose cloud "
+                     "would come later than the budget; the pairs it skips are "
                      "counted in PROCESS_STATUS, and with their reasons in its log. With "
                      "--save-rectified it writes the rectified pairs as PNG files to inspect, with "
                      "--save-disparity the disparity in colour with a legend in metres.");
@@ -53,6 +54,14 @@ int main(int argc, char** argv) {
   app.add_flag("--whole-image", whole_image,
                "Match the whole rectified image, not only the box where both rectified images hold "
                "image (the common field) grown by the matcher's reach (for comparisons)");
+  app.add_option("--latency-budget", config.latency_budget_ms,
+                 "Live, milliseconds from a pair's capture stamp (this host's clock) to stereo-cloud's "
+                 "CLOUD_STATS of its cloud: a pair whose age plus the median time of that rest would exceed it "
+                 "is skipped before it is matched, while one of the last pairs was young enough to make it, so "
+                 "that a chain that cannot keep up drops pairs early instead of delivering each one later "
+                 "(0: no bound)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   ws::AddRectifyOptions(app, config.rectify);
   ws::AddMaxImagePixelsOption(app, config.max_image_pixels);
   std::string rectification = "auto";
