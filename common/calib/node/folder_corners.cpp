@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
@@ -109,7 +110,12 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
   // (atomic_file.h): a full disk is an error naming it, never a log cut
   // short that the solve would then read as damaged.
   std::vector<LcmLogEvent> events;
-  OrderedPipeline pipeline({workers, 2 * workers, OrderedPipeline::WhenFull::wait});
+  // A job per image, up to 16 a core in flight: an image holding part of a
+  // board (seconds of search, chessboard_detectors.cpp) keeps one core while
+  // the others go on through the next ones, delivered in order. Bounded by
+  // the decoded images' bytes too (kInFlightBytes, at least two a core).
+  constexpr size_t kInFlightBytes = size_t(512) << 20;
+  std::optional<OrderedPipeline> pipeline;
   const int64_t total = int64_t(result.folder.pairs.size());
   std::string first_board;  // the first left image with the board, and its corners
   std::vector<cv::Point2f> first_corners;
@@ -124,6 +130,11 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     }
     ++result.read;
     result.names[id] = pair->label;
+    if (!pipeline) {
+      const size_t image_bytes = std::max<size_t>(1, pair->left.total() * pair->left.elemSize());
+      const size_t most = std::clamp(kInFlightBytes / image_bytes, size_t(2 * workers), size_t(16 * workers));
+      pipeline.emplace(OrderedPipeline::Options{workers, int(most), OrderedPipeline::WhenFull::wait});
+    }
     widestereo::stereo_frame_t frame{};
     frame.frame_id = id;
     frame.utime = (id + 1) * 100000;
@@ -131,10 +142,8 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
     frame.right = one_camera ? NoImage(frame.utime) : MatToImage(pair->right, frame.utime);
     const ImagePairPaths paths = result.folder.pairs[size_t(id)];
     // One job per image, not per pair: a pair whose one image holds part
-    // of a board (seconds of search, chessboard_detectors.cpp) then keeps
-    // one core, not both, and the other image's search runs beside it.
-    // The pair's last job delivers it, and finds both done (the pipeline
-    // delivers in order).
+    // of a board then keeps one core, not both. The pair's last job
+    // delivers it, and finds both done (the pipeline delivers in order).
     auto shared = std::make_shared<const widestereo::stereo_frame_t>(std::move(frame));
     auto pair_corners = std::make_shared<PairCorners>();
     pair_corners->corners.utime = shared->utime;
@@ -169,12 +178,12 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
       else
         result.right_without_board.push_back(ImageName(paths.right, dir));
     };
-    pipeline.Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
+    pipeline->Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
       pair_corners->left.Find(finder, shared->left);
       return one_camera ? OrderedPipeline::Delivery(deliver) : [] {};
     });
     if (!one_camera)
-      pipeline.Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
+      pipeline->Submit([&, shared, pair_corners, deliver]() -> OrderedPipeline::Delivery {
         pair_corners->right.Find(finder, shared->right);
         return deliver;
       });
@@ -182,7 +191,7 @@ FolderCorners DetectFolder(const std::string& dir, bool mono, const StereoCorner
       log.Progress("finding the board: " + std::to_string(id + 1) + " of " + std::to_string(total) + " " +
                    (one_camera ? "images" : "pairs"));
   }
-  pipeline.Drain();
+  if (pipeline) pipeline->Drain();
   if (StopRequested()) throw Stopped();  // the log of part of the folder is no log of it: none
   const std::string what = one_camera ? " images" : " pairs";
   log.Info("read " + std::to_string(result.read) + " of " + std::to_string(total) + what + " (" +
