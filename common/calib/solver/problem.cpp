@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 
 #include "calib/solver/covariance.h"
 #include "calib/solver/field_blocks.h"
@@ -379,37 +380,50 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
   }
 }
 
+// Evaluated block by block, as Ceres evaluates (the same cost functions,
+// every value finite), without its CRS matrix of the whole problem: building
+// and copying that took twice the evaluation itself, in each fold of each
+// candidate's cross-validation.
 Linearisation Linearise(Problem& problem, const std::string& what) {
   Built built(problem);
   Build(problem, SolveSettings{what}, &built, true);
-  ceres::Problem::EvaluateOptions options;
-  options.parameter_blocks = built.poses;
-  options.parameter_blocks.insert(options.parameter_blocks.end(), built.free_blocks.begin(),
-                                  built.free_blocks.end());
-  std::vector<ceres::ResidualBlockId> all;
-  built.ceres.GetResidualBlocks(&all);
-  options.residual_blocks = built.data_blocks;
-  for (ceres::ResidualBlockId id : all)
-    if (std::find(built.data_blocks.begin(), built.data_blocks.end(), id) == built.data_blocks.end())
-      options.residual_blocks.push_back(id);
-  options.apply_loss_function = false;
-  options.num_threads = 1;
-  std::vector<double> residuals;
-  ceres::CRSMatrix crs;
-  if (!built.ceres.Evaluate(options, nullptr, &residuals, nullptr, &crs))
-    throw CalibrationError(what + ": the residuals cannot be evaluated at the solution");
-  const int pose_columns = 6 * int(built.poses.size());
+  ceres::Problem& cp = built.ceres;
   Linearisation out;
-  out.free_size = crs.num_cols - pose_columns;
-  // Rows [row, row + count) of the Jacobian: by the free parameters into
-  // *free, over the columns *columns (with `columns`, those with an entry;
-  // else every one) and, if pose_column >= 0, by that pose into *pose.
-  auto rows = [&](int row, int count, int pose_column, std::vector<int>* columns,
-                  Eigen::MatrixXd* free, Eigen::MatrixXd* pose) {
-    std::vector<int> at(size_t(out.free_size), -1);  // free column -> column of *free
+  // Each free block's column per entry, in their order (-1: an entry its
+  // manifold holds); a constant one has its columns and no entries, as in
+  // Ceres's Jacobian.
+  std::map<const double*, std::vector<int>> free_columns;
+  for (size_t f = 0; f < built.free_blocks.size(); ++f) {
+    double* block = built.free_blocks[f];
+    const std::vector<int>& held = built.held[f];
+    std::vector<int> columns(size_t(cp.ParameterBlockSize(block)), -1);
+    for (size_t e = 0; e < columns.size(); ++e)
+      if (std::find(held.begin(), held.end(), int(e)) == held.end()) columns[e] = out.free_size++;
+    free_columns[block] = cp.IsParameterBlockConstant(block) ? std::vector<int>{} : std::move(columns);
+  }
+  // A residual block's residuals and Jacobian: by the free parameters over
+  // *columns (with `columns`, those it depends on, ascending; else every
+  // one) and by `pose` (if not null) into *J_pose.
+  auto evaluate = [&](ceres::ResidualBlockId id, const double* pose, Eigen::VectorXd* r,
+                      std::vector<int>* columns, Eigen::MatrixXd* J_free, Eigen::MatrixXd* J_pose) {
+    std::vector<double*> blocks;
+    cp.GetParameterBlocksForResidualBlock(id, &blocks);
+    const ceres::CostFunction* cost = cp.GetCostFunctionForResidualBlock(id);
+    const int m = cost->num_residuals();
+    std::vector<std::vector<double>> jacobians(blocks.size());
+    std::vector<double*> wanted(blocks.size(), nullptr);
+    std::vector<int> at(size_t(out.free_size), -1);  // free column -> column of *J_free
+    for (size_t j = 0; j < blocks.size(); ++j) {
+      const auto free = free_columns.find(blocks[j]);
+      const bool is_free = free != free_columns.end() && !free->second.empty();
+      if (blocks[j] != pose && !is_free) continue;
+      jacobians[j].resize(size_t(m) * size_t(cost->parameter_block_sizes()[j]));
+      wanted[j] = jacobians[j].data();
+      if (is_free)
+        for (int c : free->second)
+          if (c >= 0) at[size_t(c)] = 0;
+    }
     if (columns) {
-      for (int k = crs.rows[row]; k < crs.rows[row + count]; ++k)
-        if (crs.cols[k] >= pose_columns) at[size_t(crs.cols[k] - pose_columns)] = 0;
       for (int c = 0; c < out.free_size; ++c)
         if (at[size_t(c)] == 0) {
           at[size_t(c)] = int(columns->size());
@@ -418,33 +432,56 @@ Linearisation Linearise(Problem& problem, const std::string& what) {
     } else {
       std::iota(at.begin(), at.end(), 0);
     }
-    free->setZero(count, columns ? Eigen::Index(columns->size()) : out.free_size);
-    if (pose) pose->setZero(count, 6);
-    for (int i = 0; i < count; ++i)
-      for (int k = crs.rows[row + i]; k < crs.rows[row + i + 1]; ++k) {
-        const int column = crs.cols[k];
-        if (column >= pose_columns) (*free)(i, at[size_t(column - pose_columns)]) = crs.values[k];
-        else if (pose && column >= pose_column && column < pose_column + 6)
-          (*pose)(i, column - pose_column) = crs.values[k];
+    r->resize(m);
+    bool valid = cost->Evaluate(blocks.data(), r->data(), wanted.data()) && r->allFinite();
+    J_free->setZero(m, columns ? Eigen::Index(columns->size()) : out.free_size);
+    if (J_pose) J_pose->setZero(m, 6);
+    for (size_t j = 0; j < blocks.size(); ++j) {
+      if (!wanted[j]) continue;
+      const int size = cost->parameter_block_sizes()[j];
+      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
+          wanted[j], m, size);
+      valid = valid && J.allFinite();
+      if (blocks[j] == pose) {
+        J_pose->leftCols(size) = J;
+        continue;
       }
+      const std::vector<int>& entry_column = free_columns.at(blocks[j]);
+      for (int e = 0; e < size; ++e)
+        if (entry_column[size_t(e)] >= 0) J_free->col(at[size_t(entry_column[size_t(e)])]) = J.col(e);
+    }
+    if (!valid) throw CalibrationError(what + ": the residuals cannot be evaluated at the solution");
   };
-  int row = 0;
   for (size_t b = 0; b < built.data_blocks.size(); ++b) {
-    const int count = built.ceres.GetCostFunctionForResidualBlock(built.data_blocks[b])->num_residuals();
     const Observation& o = problem.observations[built.data_observation[b]];
     const double* pose = built.arena[o.pose->data.data()];
-    const int index = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
     Linearisation::Block block;
     block.observation = built.data_observation[b];
     block.corners = std::move(built.data_corners[b]);
-    block.pose = index;
-    block.r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, count);
-    rows(row, count, 6 * index, &block.columns, &block.J_free, &block.J_pose);
+    block.pose = int(std::find(built.poses.begin(), built.poses.end(), pose) - built.poses.begin());
+    evaluate(built.data_blocks[b], pose, &block.r, &block.columns, &block.J_free, &block.J_pose);
     out.blocks.push_back(std::move(block));
-    row += count;
   }
-  out.prior_r = Eigen::Map<const Eigen::VectorXd>(residuals.data() + row, crs.num_rows - row);
-  rows(row, crs.num_rows - row, -1, nullptr, &out.prior_J, nullptr);
+  // The other residual blocks (the priors), stacked.
+  std::vector<ceres::ResidualBlockId> all;
+  cp.GetResidualBlocks(&all);
+  const std::set<ceres::ResidualBlockId> data(built.data_blocks.begin(), built.data_blocks.end());
+  std::vector<Eigen::VectorXd> r;
+  std::vector<Eigen::MatrixXd> J;
+  Eigen::Index rows = 0;
+  for (ceres::ResidualBlockId id : all) {
+    if (data.count(id)) continue;
+    r.emplace_back();
+    J.emplace_back();
+    evaluate(id, nullptr, &r.back(), nullptr, &J.back(), nullptr);
+    rows += r.back().size();
+  }
+  out.prior_r.resize(rows);
+  out.prior_J.resize(rows, out.free_size);
+  for (size_t k = 0, row = 0; k < r.size(); row += size_t(r[k].size()), ++k) {
+    out.prior_r.segment(Eigen::Index(row), r[k].size()) = r[k];
+    out.prior_J.middleRows(Eigen::Index(row), r[k].size()) = J[k];
+  }
   return out;
 }
 
