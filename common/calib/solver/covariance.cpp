@@ -3,8 +3,8 @@
 #include <ceres/crs_matrix.h>
 
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
 #include <cmath>
+#include <vector>
 
 namespace ws::calib {
 
@@ -30,20 +30,25 @@ std::optional<Eigen::MatrixXd> CameraCovariance(ceres::Problem& problem,
   const int cols = crs.num_cols;
   const int nf = cols - ne;
   if (nf <= 0) return std::nullopt;
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(crs.values.size());
+  // The blocks of J^T J the elimination needs, summed row by row over each
+  // row's entries (a corner's row reads its pose, its camera and a few of
+  // the field's control points): by the free parameters, by them and the
+  // poses, and each pose's own 6 x 6.
+  Eigen::MatrixXd Hff = Eigen::MatrixXd::Zero(nf, nf), Hfe = Eigen::MatrixXd::Zero(nf, ne);
+  std::vector<Eigen::Matrix<double, 6, 6>> Hee(poses.size(), Eigen::Matrix<double, 6, 6>::Zero());
   for (int r = 0; r < crs.num_rows; ++r)
-    for (int k = crs.rows[r]; k < crs.rows[r + 1]; ++k)
-      triplets.emplace_back(r, crs.cols[k], crs.values[k]);
-  Eigen::SparseMatrix<double> J(crs.num_rows, cols);
-  J.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::SparseMatrix<double> H = J.transpose() * J;
-  Eigen::MatrixXd Hff = Eigen::MatrixXd(H.bottomRightCorner(nf, nf));
-  const Eigen::MatrixXd Hfe = Eigen::MatrixXd(H.block(ne, 0, nf, ne));
-  for (int j = 0; j < ne; j += 6) {
-    const auto inv = PoseBlockInverse(Eigen::MatrixXd(H.block(j, j, 6, 6)));
+    for (int a = crs.rows[r]; a < crs.rows[r + 1]; ++a)
+      for (int b = crs.rows[r]; b < crs.rows[r + 1]; ++b) {
+        const int ca = crs.cols[a], cb = crs.cols[b];
+        const double v = crs.values[a] * crs.values[b];
+        if (ca >= ne && cb >= ne) Hff(ca - ne, cb - ne) += v;
+        else if (ca >= ne) Hfe(ca - ne, cb) += v;
+        else if (cb < ne && ca / 6 == cb / 6) Hee[size_t(ca / 6)](ca % 6, cb % 6) += v;
+      }
+  for (size_t j = 0; j < poses.size(); ++j) {
+    const auto inv = PoseBlockInverse(Hee[j]);
     if (!inv) return std::nullopt;
-    const auto Hfj = Hfe.middleCols(j, 6);
+    const auto Hfj = Hfe.middleCols(6 * Eigen::Index(j), 6);
     Hff.noalias() -= Hfj * *inv * Hfj.transpose();
   }
   Hff = 0.5 * (Hff + Hff.transpose());
