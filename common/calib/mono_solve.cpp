@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <iterator>
 #include <opencv2/core/utility.hpp>
 #include <optional>
@@ -581,10 +582,18 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
   }
   const std::string what = s->prepared.name + " camera (" + ModelName(plan.model) + ")";
   if (plan.nonradial != FieldRule::kNone) ChooseField(options, plan.nonradial, what, cores, s);
-  // The final solve: the chosen model, its outliers left out.
-  SolveAll(s->problem.cameras[0], AsAsked(options, what), s->warp.free, options, s);
+  // The final solve: the chosen model, its outliers left out. Then its
+  // standard deviations and its cross-validation, side by side where there
+  // are cores for both: each reads the solution and writes its own.
+  SolveAll(s->problem.cameras[0], RejectingOutliers(options, what), s->warp.free, options, s);
   RequireUnfolded(s->problem, 0, s->prepared.name);  // before the cross-validation it would waste
-  s->heldout = CrossValidate(s->problem, options.cv_folds);
+  const Problem solved = s->problem;
+  std::future<CrossValidation> heldout =
+      std::async(cores > 1 ? std::launch::async : std::launch::deferred,
+                 [&] { return CrossValidate(solved, options.cv_folds); });
+  if (options.covariance)
+    EstimateStddev(s->problem, StageSettings(options, what, options.max_iterations), &s->outcome);
+  s->heldout = heldout.get();
 }
 
 CrossValidation HeldOut(const MonoState& state, const CalibrationOptions& options) {

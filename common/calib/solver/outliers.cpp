@@ -59,11 +59,6 @@ SolveSettings StageSettings(const CalibrationOptions& options, const std::string
   return SolveSettings{what, max_iterations, options.robust_loss, options.robust_scale_px};
 }
 
-RejectionSettings AsAsked(const CalibrationOptions& options, const std::string& what) {
-  return {StageSettings(options, what, options.max_iterations), options.outliers,
-          options.outlier_sigma, options.outlier_min_px, options.covariance};
-}
-
 RejectionSettings RejectingOutliers(const CalibrationOptions& options, const std::string& what) {
   return {StageSettings(options, what, options.max_iterations), options.outliers,
           options.outlier_sigma, options.outlier_min_px};
@@ -83,7 +78,6 @@ SolveOutcome SolveWithRejection(Problem& problem, const RejectionSettings& setti
     if (changed == 0) break;
     outcome = Solve(problem, settings.solve);
   }
-  if (settings.covariance) EstimateStddev(problem, settings.solve, &outcome);
   return outcome;
 }
 

@@ -16,20 +16,16 @@ namespace ws::calib {
 SolveSettings StageSettings(const CalibrationOptions& options, const std::string& what,
                             int max_iterations);
 
-// How a solve's corners are judged and what it estimates after: one
-// stage's settings, built once from the options (AsAsked, OnTheCorners).
+// How a solve's corners are judged: one stage's settings, built once from
+// the options (RejectingOutliers, OnTheCorners).
 struct RejectionSettings {
   SolveSettings solve;
   OutlierRule outliers = OutlierRule::kOff;
   double outlier_sigma = 6, outlier_min_px = 0.25;  // kSigma's
-  bool covariance = false;                          // the standard deviations after
 };
 
-// The stage `what` as the options ask: their outlier rule and standard
-// deviations.
-RejectionSettings AsAsked(const CalibrationOptions& options, const std::string& what);
-// The stage `what` deciding outliers as the options ask, without standard
-// deviations (a start's gross outliers).
+// The stage `what` deciding outliers as the options ask (a start's gross
+// outliers, a camera's final solve).
 RejectionSettings RejectingOutliers(const CalibrationOptions& options, const std::string& what);
 // The stage `what` on the corners as they stand: no outlier decided, no
 // standard deviations (candidates compared on the same corners, a stereo
@@ -38,8 +34,7 @@ RejectionSettings OnTheCorners(const CalibrationOptions& options, const std::str
 
 // Solves the problem; unless settings.outliers is kOff it then decides
 // each free camera's outliers (MarkOutliers in quality.h) and solves again
-// while the decision changes, at most 5 rounds; last, with
-// settings.covariance, the standard deviations.
+// while the decision changes, at most 5 rounds.
 SolveOutcome SolveWithRejection(Problem& problem, const RejectionSettings& settings);
 
 }  // namespace ws::calib
