@@ -99,20 +99,18 @@ struct Built {
 };
 
 // The inlier corners of an observation as cost functions, each with the
-// field's segments its corners read (FieldSupport): one for the view; with a
-// robust loss one per corner (Ceres applies a loss per block); with
-// `by_support` and a field, one per set of corners that read the same
-// segments. A view's block in Ceres's Schur complement adds the outer
-// product of every pair of its blocks, dense: one block per support adds
-// only the segments' pairs that share a corner (on a 16 x 10 field, about a
-// tenth of the view's).
+// field's segments its corners read (FieldSupport): one per set of corners
+// that read the same segments (one for the view without a field); with a
+// robust loss one per corner (Ceres applies a loss per block). A view's
+// block in Ceres's Schur complement adds the outer product of every pair of
+// its blocks, dense: one block per support adds only the segments' pairs
+// that share a corner (on a 16 x 10 field, about a tenth of the view's).
 struct ObservationCost {
   std::unique_ptr<ceres::CostFunction> cost;
   std::vector<int> segments;
   std::vector<int> corners;  // the observation's corners it holds, ascending
 };
-std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Observation& o,
-                                              bool per_corner, bool by_support) {
+std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Observation& o, bool per_corner) {
   const CameraBlock& camera = problem.cameras[o.camera];
   const double* intrinsics = camera.intrinsics.data();
   struct Group {
@@ -121,25 +119,15 @@ std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Obse
   };
   std::map<std::vector<int>, Group> groups;  // by support; ordered, so the same order every run
   std::vector<std::pair<std::vector<int>, Group>> corners;  // per_corner: in corner order
-  std::vector<double> all;  // every inlier pixel, for the view's support
   for (int i = 0; i < o.corners->size(); ++i) {
     if (!(*o.inliers)[i]) continue;
     const Eigen::Vector2d& x = o.corners->image[i];
-    all.insert(all.end(), {x.x(), x.y()});
-    Group* group = nullptr;
-    if (per_corner || by_support) {
-      std::vector<int> support = FieldSupport(camera.field, intrinsics, {x.x(), x.y()});
-      group = per_corner ? &corners.emplace_back(std::move(support), Group{}).second : &groups[std::move(support)];
-    } else {
-      group = &groups[{}];
-    }
+    std::vector<int> support = FieldSupport(camera.field, intrinsics, {x.x(), x.y()});
+    Group* group = per_corner ? &corners.emplace_back(std::move(support), Group{}).second : &groups[std::move(support)];
     group->points.Add(o.corners->object[i], x, WarpBasis(problem.warp.extent, o.corners->object[i]));
     group->corners.push_back(i);
   }
-  if (!per_corner && !by_support && !groups.empty())  // one block over the view's support
-    corners.emplace_back(FieldSupport(camera.field, intrinsics, all), std::move(groups.begin()->second));
-  else
-    for (auto& group : groups) corners.emplace_back(group.first, std::move(group.second));
+  for (auto& group : groups) corners.emplace_back(group.first, std::move(group.second));
   std::vector<ObservationCost> costs;
   for (auto& [segments, group] : corners) {
     group.points.max_radius = camera.max_radius;
@@ -150,11 +138,10 @@ std::vector<ObservationCost> ObservationCosts(const Problem& problem, const Obse
   return costs;
 }
 
-// Fills `built` from the problem; observations that cannot be evaluated at
-// the current parameters move to problem.left_out. by_support: a view's
-// corners in blocks by the field's segments they read (ObservationCosts),
-// else one block per view.
-void Build(Problem& problem, const SolveSettings& settings, Built* built, bool by_support) {
+// Fills `built` from the problem, a view's corners in blocks by the field's
+// segments they read (ObservationCosts); observations that cannot be
+// evaluated at the current parameters move to problem.left_out.
+void Build(Problem& problem, const SolveSettings& settings, Built* built) {
   const bool per_corner = settings.robust_loss != RobustLoss::kNone;
   std::vector<Observation> kept;
   ParameterArena& arena = built->arena;
@@ -165,7 +152,7 @@ void Build(Problem& problem, const SolveSettings& settings, Built* built, bool b
     if (o.via_extrinsic) rig.push_back(arena[problem.extrinsic.data.data()]);
     const std::vector<std::pair<double*, int>> coeff_blocks = CoeffBlocks(camera);
     if (camera.field.tilt()) rig.push_back(arena[coeff_blocks.back().first]);
-    auto costs = ObservationCosts(problem, o, per_corner, by_support);
+    auto costs = ObservationCosts(problem, o, per_corner);
     std::vector<std::vector<double*>> blocks;  // per cost: the rig's, then its segments
     bool valid = true;
     for (const ObservationCost& c : costs) {
@@ -299,7 +286,7 @@ Pose BoardPose(const Problem& problem, const Observation& o) {
 SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
   ThrowIfStopRequested();
   Built built(problem);
-  Build(problem, settings, &built, true);
+  Build(problem, settings, &built);
   ceres::Solver::Options options;
   if (built.free_blocks.empty() && built.poses.size() == 1) {
     options.linear_solver_type = ceres::DENSE_QR;  // one pose: nothing to eliminate
@@ -337,7 +324,7 @@ SolveOutcome Solve(Problem& problem, const SolveSettings& settings) {
 void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcome* outcome) {
   ThrowIfStopRequested();
   Built built(problem);
-  Build(problem, settings, &built, true);
+  Build(problem, settings, &built);
   if (built.free_blocks.empty()) return;
   // sigma^2 from the data residuals only (the prior is not a measurement).
   ceres::Problem::EvaluateOptions evaluate;
@@ -386,7 +373,7 @@ void EstimateStddev(Problem& problem, const SolveSettings& settings, SolveOutcom
 // candidate's cross-validation.
 Linearisation Linearise(Problem& problem, const std::string& what) {
   Built built(problem);
-  Build(problem, SolveSettings{what}, &built, true);
+  Build(problem, SolveSettings{what}, &built);
   ceres::Problem& cp = built.ceres;
   Linearisation out;
   // Each free block's column per entry, in their order (-1: an entry its
