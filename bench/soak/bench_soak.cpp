@@ -39,7 +39,6 @@
 #include "lcm_io/channels.h"
 #include "rig/rig_file.h"
 #include "sim/simulator.h"
-#include "sim/truth_calibration.h"
 #include "widestereo/command_t.hpp"
 #include "widestereo/process_status_t.hpp"
 
@@ -157,7 +156,7 @@ int main(int argc, char** argv) {
   if (source.empty()) source = "sim:" + sim_path;
   if (calib.empty()) {
     calib = out + "/true-calibration.yaml";
-    ws::WriteCalibrationFile(calib, ws::TrueStereoRig(ws::Simulator(sim).Truth()));
+    ws::WriteCalibrationFile(calib, ws::Simulator(sim).Truth().rig);
   }
 
   const std::string url = "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 10000) +

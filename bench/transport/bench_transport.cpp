@@ -37,7 +37,6 @@
 #include "runtime/process.h"
 #include "runtime/process_cli.h"
 #include "runtime/wall_clock.h"
-#include "sim/truth_calibration.h"
 #include "source/sim_source.h"
 #include "widestereo/point_cloud_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -53,7 +52,7 @@ int Prepare(const std::string& sim_config, const std::string& dir) {
     cv::imwrite(dir + "/left" + name, pair->left);
     cv::imwrite(dir + "/right" + name, pair->right);
   }
-  ws::WriteCalibrationFile(dir + "/calibration.yaml", ws::TrueStereoRig(source->simulator().Truth()));
+  ws::WriteCalibrationFile(dir + "/calibration.yaml", source->simulator().Truth().rig);
   std::printf("wrote %d pairs and the true calibration.yaml to %s\n", n, dir.c_str());
   return 0;
 }

@@ -31,10 +31,10 @@
 //     views: ...                       stereo views used
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
 #include "rig/rig.h"
+#include "rig/yaml_reader.h"
 
 namespace ws {
 
@@ -43,10 +43,8 @@ namespace ws {
 inline constexpr char kCalibrationFileTitle[] = "widestereo stereo calibration";
 
 // What ReadCalibrationFile throws: "FILE: FIELD: REASON", e.g.
-// "calib.yaml: left.camera_matrix: not a 3x3 matrix".
-struct CalibrationFileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// "calib.yaml: left.camera_matrix: not a 3x3 matrix" (rig/yaml_reader.h).
+using CalibrationFileError = YamlFieldError;
 
 // Writes the file (to a temporary beside it, then renamed, so a reader never
 // sees half a file). Throws std::runtime_error when it cannot.

@@ -5,9 +5,9 @@
 // a sim: source, see sim_source.h):
 //
 //   config: "config/sim/default.yaml"     seed: 1
-//   cameras:                               # calibration-file style, "left" then "right"
-//     - { name: left, kind: bspline, degree: 3, knots: [...], alpha: [...],   (bspline_theta too; poly, kb4: k: [...])
-//         fx, fy, cx, cy, p1, p2, image_width, image_height, K: !!opencv-matrix,
+//   cameras:                               # "left" then "right"
+//     - { name: left, image_width, image_height, camera_matrix, model, degree, knots, alpha (or k),
+//         p1, p2, nonradial,   # the calibration file's camera fields (rig/camera_fields.h)
 //         field_deg: 200 }     # the lens's full field (sim_config.h; 360: no limit; optional when reading)
 //   R: !!opencv-matrix, T: !!opencv-matrix     # X_right = R X_left + T (metres)
 //   board: "chessboard:9x6:0.05"               # --board spec; "" without board frames
@@ -40,6 +40,7 @@
 #include <opencv2/core.hpp>
 
 #include "models/camera_model.h"
+#include "rig/rig.h"
 #include "sim/sim_config.h"
 
 namespace ws {
@@ -72,10 +73,8 @@ struct SimFrameTruth {
 struct SimTruth {
   std::string config;
   uint64_t seed = 0;
-  CameraModel left, right;
+  Rig rig;  // the true cameras, R and T (no quality figures)
   std::array<double, 2> max_theta{M_PI, M_PI};  // each lens's half field (SimConfig::max_theta)
-  cv::Matx33d R = cv::Matx33d::eye();
-  cv::Vec3d T{0, 0, 0};
   std::string board;
   SimRendering rendering;
   std::vector<SimFrameTruth> frames;
@@ -83,7 +82,8 @@ struct SimTruth {
 
 // Throws std::runtime_error when the file cannot be written.
 void WriteSimTruth(const std::string& path, const SimTruth& truth);
-// Throws std::runtime_error naming the file and the field that is missing or wrong.
+// Throws YamlFieldError (rig/yaml_reader.h) naming the file and the field
+// that is missing or wrong.
 SimTruth LoadSimTruth(const std::string& path);
 
 }  // namespace ws

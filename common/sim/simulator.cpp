@@ -7,6 +7,8 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include "sim/truth_calibration.h"
+
 namespace ws {
 namespace {
 
@@ -454,11 +456,8 @@ SimTruth Simulator::Truth() const {
   SimTruth truth;
   truth.config = config_.source;
   truth.seed = config_.seed;
-  truth.left = config_.left;
-  truth.right = config_.right;
+  truth.rig = TrueStereoRig(config_);
   truth.max_theta = config_.max_theta;
-  truth.R = config_.R;
-  truth.T = config_.T;
   truth.board = config_.board ? config_.board->board.id : "";
   truth.rendering = config_.rendering;
   for (int i = 0; i < frame_count(); ++i) truth.frames.push_back(FrameTruth(i));

@@ -49,10 +49,10 @@ TEST(CalibNonRadial, ATiltedSensorIsRecoveredWhereTheRadialModelIsOff) {
     const StereoCalibration solved = CalibrateStereo(data, options);
     for (int c = 0; c < 2; ++c) {
       const CameraCalibration& camera = c == 0 ? solved.left : solved.right;
-      const ProjectionError error = CornerRayError(c == 0 ? truth.left : truth.right, camera.model,
+      const ProjectionError error = CornerRayError(c == 0 ? truth.rig.left : truth.rig.right, camera.model,
                                                    Corners(c == 0 ? data.left : data.right));
       const NonRadial& field = camera.model.nonradial;
-      const NonRadial& true_field = (c == 0 ? truth.left : truth.right).nonradial;
+      const NonRadial& true_field = (c == 0 ? truth.rig.left : truth.rig.right).nonradial;
       std::printf("tilted sensor, %-5s %-11s tilt (%.5f, %.5f) rad (truth (%.5f, %.5f)), field "
                   "%2d x %2d: rms %.4f px, held-out %.4f px, projection error vs truth at the "
                   "corners' true rays %.4f px\n",

@@ -69,7 +69,7 @@ std::map<std::string, KnotRun> RenderDetectCalibrate(const std::string& config,
   const StereoCalibration solved = CalibrateStereo(exact, defaults);
   for (int c = 0; c < 2; ++c) {
     const ProjectionError error =
-        CornerRayError(c == 0 ? truth.left : truth.right, c == 0 ? solved.left.model : solved.right.model,
+        CornerRayError(c == 0 ? truth.rig.left : truth.rig.right, c == 0 ? solved.left.model : solved.right.model,
                        Corners(c == 0 ? exact.left : exact.right));
     std::printf("%s exact corners %-5s: projection error vs truth %.4f px\n", config.c_str(),
                 c == 0 ? "left" : "right", error.turned_px);
@@ -86,7 +86,7 @@ std::map<std::string, KnotRun> RenderDetectCalibrate(const std::string& config,
     for (int c = 0; c < 2; ++c) {
       const auto& camera = report["cameras"][c];
       const ProjectionError error =
-          CornerRayError(c == 0 ? truth.left : truth.right, c == 0 ? file.left : file.right,
+          CornerRayError(c == 0 ? truth.rig.left : truth.rig.right, c == 0 ? file.left : file.right,
                          Corners(c == 0 ? data.left : data.right));
       const double rms = camera["rms_px"], heldout = camera["heldout_rms_px"];
       const size_t coeffs = camera["alpha"].size() - 2;

@@ -29,7 +29,7 @@ TEST(CalibSimFisheye, RenderedDetectedAndCalibratedRecoversTheTruth) {
   std::filesystem::remove(dir + "/images.lcmlog");  // 80 MB
   const SimTruth truth = LoadSimTruth(truth_path);
   const StereoData data = ReadCorners(corners);
-  const double true_baseline = cv::norm(truth.T);
+  const double true_baseline = truth.rig.T.norm();
   for (const std::string model : {"bspline_theta", "kb4"}) {
     SCOPED_TRACE(model);
     // The knee (4.6 degrees wide) needs finer knots than the default 13 over
@@ -43,7 +43,7 @@ TEST(CalibSimFisheye, RenderedDetectedAndCalibratedRecoversTheTruth) {
     const double baseline_error = std::abs(file.T.norm() / true_baseline - 1);
     for (int c = 0; c < 2; ++c) {
       const auto& camera = report["cameras"][c];
-      const ProjectionError error = MaxProjectionError(c == 0 ? truth.left : truth.right,
+      const ProjectionError error = MaxProjectionError(c == 0 ? truth.rig.left : truth.rig.right,
                                                        c == 0 ? file.left : file.right,
                                                        c == 0 ? data.left : data.right);
       const double theta_deg = camera["max_observed_radius"].get<double>() * 180 / M_PI;

@@ -165,10 +165,8 @@ TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   const Rig file = ReadCalibrationFile(dir + "/sim.yaml");  // the B-spline
   for (const std::string model : {"bspline", "poly6", "poly12"})  // and one file per model
     EXPECT_EQ(ModelName(ReadCalibrationFile(dir + "/sim." + model + ".yaml").kind()), model);
-  Eigen::Vector3d true_T(truth.T(0), truth.T(1), truth.T(2));
-  Eigen::Matrix3d true_R;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) true_R(r, c) = truth.R(r, c);
+  const Eigen::Vector3d& true_T = truth.rig.T;
+  const Eigen::Matrix3d& true_R = truth.rig.R;
   const double baseline_error = std::abs(file.T.norm() / true_T.norm() - 1);
   const double rotation_error = Eigen::AngleAxisd(file.R * true_R.transpose()).angle();
   std::printf("bspline: baseline %.5f m (true %.5f, error %.3f %%), R off by %.4f deg\n",
@@ -177,7 +175,7 @@ TEST(StereoCalibrateProcess, SimulatorEndToEndRecoversTheTruth) {
   EXPECT_LE(rotation_error * 180 / M_PI, 0.05);
   for (int c = 0; c < 2; ++c) {
     const ProjectionError error =
-        MaxProjectionError(c == 0 ? truth.left : truth.right, c == 0 ? file.left : file.right,
+        MaxProjectionError(c == 0 ? truth.rig.left : truth.rig.right, c == 0 ? file.left : file.right,
                            c == 0 ? data.left : data.right);
     std::printf("bspline %s: projection error in the observed field %.4f px (%.4f px unturned)\n",
                 c == 0 ? "left" : "right", error.turned_px, error.direct_px);

@@ -13,7 +13,6 @@
 #include "calib_process_support.h"
 #include "rig/rig_file.h"
 #include "sim/simulator.h"
-#include "sim/truth_calibration.h"
 #include "synthetic_rig.h"
 
 namespace {
@@ -37,8 +36,7 @@ const Files& RigFiles() {
   static const Files files = [] {
     Files f;
     f.dir = TempDir("stereo-compare");
-    f.truth_file = TrueStereoRig(
-        Simulator(LoadSimConfig(SourceDir() + "/config/sim/default.yaml")).Truth());
+    f.truth_file = Simulator(LoadSimConfig(SourceDir() + "/config/sim/default.yaml")).Truth().rig;
     SyntheticRigOptions rig;
     rig.left = GaugeNormalized(f.truth_file.left);
     rig.right = GaugeNormalized(f.truth_file.right);

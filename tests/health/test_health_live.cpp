@@ -18,7 +18,6 @@
 #include "rig/rig_file.h"
 #include "rig/rig_message.h"
 #include "sim/ground_truth.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "widestereo/process_status_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
@@ -60,7 +59,7 @@ struct Bus {
 TEST(HealthLive, RefineCommandRepairsTheCalibrationAndStereoMatchRebuildsItsMaps) {
   const std::string dir = TempDir("health-live");
   RenderScene("config/sim/wall.yaml", 3, dir, "wall");
-  const ws::Rig truth = TrueStereoRig(ws::LoadSimTruth(dir + "/wall.truth.yaml"));
+  const ws::Rig truth = ws::LoadSimTruth(dir + "/wall.truth.yaml").rig;
   const std::string calib = dir + "/pitched.yaml";
   WriteCalibrationFile(calib, RightCameraTurned(truth, Eigen::Vector3d::UnitX(), 0.2));
   const auto frames = Messages<widestereo::stereo_frame_t>(ReadLog(dir + "/wall.lcmlog"), ws::channel::kStereoImages);

@@ -11,7 +11,6 @@
 #include "match_fixtures.h"
 #include "rig/rig_file.h"
 #include "sim/ground_truth.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 
 namespace {
@@ -26,7 +25,7 @@ class HealthReplay : public ::testing::Test {
     dir_ = new std::string(TempDir("health-replay"));
     RenderScene("config/sim/default.yaml", 8, *dir_, "board");  // the first 8 board poses
     RenderScene("config/sim/wall.yaml", 3, *dir_, "wall");
-    truth_ = new ws::Rig(TrueStereoRig(ws::LoadSimTruth(*dir_ + "/wall.truth.yaml")));
+    truth_ = new ws::Rig(ws::LoadSimTruth(*dir_ + "/wall.truth.yaml").rig);
   }
   static void TearDownTestSuite() {
     delete truth_;

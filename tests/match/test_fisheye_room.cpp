@@ -12,7 +12,6 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "room_analysis.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "wall_analysis.h"
 #include "wall_chain.h"
@@ -28,7 +27,7 @@ TEST(FisheyeRoom, LatLonCoversTheCommonFieldAndFindsEveryWall) {
   ASSERT_EQ(truth.frames.size(), 1u);
   const std::vector<cv::Vec4d>& planes = truth.frames[0].room_planes;
   ASSERT_EQ(planes.size(), 6u);
-  const ws::Rig rig = TrueStereoRig(truth);
+  const ws::Rig rig = truth.rig;
   const RoomField field = TrueRoomField(rig, planes);
   // The search range reaches the nearest face's disparity.
   double largest = 0;

@@ -10,7 +10,6 @@
 
 #include "match_fixtures.h"
 #include "rectify/rectification.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "wall_analysis.h"
 #include "wall_chain.h"
@@ -27,7 +26,7 @@ using namespace ws::test;
 TEST(FisheyeWall, BsplineThetaCalibrationGivesTheWallAtTwoMetres) {
   const std::string dir = TempDir("fisheye-wall");
   const ws::SimTruth truth = CaptureWall(dir, FisheyeSceneConfig(dir, "wall"), 1);
-  const ws::Rig rig = TrueStereoRig(truth);
+  const ws::Rig rig = truth.rig;
   ASSERT_EQ(rig.left.distortion.kind, ws::ModelKind::kBsplineTheta);
   const double z = truth.frames.front().wall_distance;
   struct Mode {

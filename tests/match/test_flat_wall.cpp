@@ -10,7 +10,6 @@
 #include <cstdio>
 
 #include "match_fixtures.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "wall_chain.h"
 
@@ -54,7 +53,7 @@ std::string* FlatWall::dir_ = nullptr;
 ws::SimTruth* FlatWall::truth_ = nullptr;
 
 TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
-  const ws::Rig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = truth_->rig;
   const WallRun bspline = Run(rig, "bspline");
   const WallRun poly6 = Run(RigFittedAs(rig, "poly6"), "poly6");
   ASSERT_EQ(bspline.wall.size(), size_t(kFrames));
@@ -104,7 +103,7 @@ TEST_F(FlatWall, BsplineCalibrationGivesAFlatWallAtTwoMetresAndPoly6IsWorse) {
 // The accuracy cost of the fast matcher modes (docs/depth.md, "Matcher modes"): the
 // same wall, the exact calibration, each mode against full SGBM.
 TEST_F(FlatWall, FastMatcherModesKeepTheWallAtTwoMetres) {
-  const ws::Rig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = truth_->rig;
   const double z = truth_->frames.front().wall_distance;
   struct Mode {
     std::string name;

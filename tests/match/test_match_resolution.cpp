@@ -15,7 +15,6 @@
 
 #include "lcm_io/image_codec.h"
 #include "match/match_node.h"
-#include "sim/truth_calibration.h"
 #include "source/sim_source.h"
 
 namespace {
@@ -26,7 +25,7 @@ TEST(MatchResolution, RemapAtTheMatchersResolutionGivesTheDisparityOfAFullSizeRe
   auto source = ws::MakeSimSource("config/sim/wall.yaml", false);
   const auto pair = source->Next();
   ASSERT_TRUE(pair);
-  const ws::Rig rig = ws::TrueStereoRig(source->simulator().Truth());
+  const ws::Rig rig = source->simulator().Truth().rig;
   widestereo::stereo_frame_t frame{};
   frame.left = ws::MatToImage(pair->left, 1);
   frame.right = ws::MatToImage(pair->right, 1);

@@ -9,7 +9,6 @@
 #include "match_fixtures.h"
 #include "rectify/ray_triangulation.h"
 #include "sim/simulator.h"
-#include "sim/truth_calibration.h"
 
 namespace {
 
@@ -56,8 +55,8 @@ int CheckRoundTrip(const ws::Rig& rig, ws::RectificationMode mode, double max_th
 }
 
 TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
-  const ws::Rig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
-  const ws::Rig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  const ws::Rig demo = ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth().rig;
+  const ws::Rig fisheye = ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth().rig;
   EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kPinhole, M_PI / 3), 200);
   EXPECT_GT(CheckRoundTrip(demo, ws::RectificationMode::kLatLon, M_PI / 3), 200);
   EXPECT_GT(CheckRoundTrip(fisheye, ws::RectificationMode::kLatLon, M_PI * 100 / 180), 500);
@@ -69,7 +68,7 @@ TEST(RayTriangulation, PinholeAndLatLonGiveThePointBack) {
 // The range-accuracy formula against the triangulation itself: the range
 // change of a small disparity change, over each image.
 TEST(RayTriangulation, RangeChangeIsTheTriangulationsDerivative) {
-  const ws::Rig fisheye = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth());
+  const ws::Rig fisheye = ws::Simulator(ws::LoadSimConfig("config/sim/fisheye.yaml")).Truth().rig;
   for (const ws::RectificationMode mode : {ws::RectificationMode::kPinhole, ws::RectificationMode::kLatLon}) {
     const ws::Rectification rect = ws::BuildRectification(fisheye, {1.0, {}, mode});
     int checked = 0;
@@ -93,7 +92,7 @@ TEST(RayTriangulation, RangeChangeIsTheTriangulationsDerivative) {
 }
 
 TEST(RayTriangulation, PinholeIsFbOverD) {
-  const ws::Rig demo = TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth());
+  const ws::Rig demo = ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth().rig;
   const ws::Rectification rect = ws::BuildRectification(demo);
   const auto X = ws::TriangulateDisparity(rect, 100.5, 700.25, 37.5);
   ASSERT_TRUE(X);

@@ -14,7 +14,6 @@
 #include "rectified_board_rows.h"
 #include "rig/rig_file.h"
 #include "sim/ground_truth.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 
 namespace {
@@ -33,7 +32,7 @@ TEST(RectifiedRows, SimulatedFisheyeRigLatLonFindsMoreBoardsOnTheirRows) {
                                   300);
   ASSERT_EQ(capture.exit_code, 0) << capture.output;
   const std::string calib = dir + "/truth-calibration.yaml";
-  WriteCalibrationFile(calib, TrueStereoRig(ws::LoadSimTruth(dir + "/truth.yaml")));
+  ws::WriteCalibrationFile(calib, ws::LoadSimTruth(dir + "/truth.yaml").rig);
   BoardRows rows[2];
   for (int m = 0; m < 2; ++m) {
     rows[m] = MeasureRectifiedBoardRows(dir + "/images.lcmlog", calib, kModes[m],

@@ -17,7 +17,6 @@
 #include "match_fixtures.h"
 #include "rectify/rectification.h"
 #include "sim/simulator.h"
-#include "sim/truth_calibration.h"
 
 namespace {
 
@@ -162,7 +161,7 @@ ws::Simulator* RectificationQuality::simulator_ = nullptr;
 ws::SimTruth* RectificationQuality::truth_ = nullptr;
 
 TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
-  const ws::Rig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = truth_->rig;
   const RowErrors bspline = TrueCornerRows(rig);
   bspline.Print("true corners, bspline (the rig's own model)");
   EXPECT_GT(bspline.count(), 1000);
@@ -177,7 +176,7 @@ TEST_F(RectificationQuality, TrueCornersShareARowAcrossTheWholeField) {
 }
 
 TEST_F(RectificationQuality, DetectedCornersShareARowAcrossTheWholeField) {
-  const ws::Rig rig = TrueStereoRig(*truth_);
+  const ws::Rig rig = truth_->rig;
   const ws::Rectification rect = ws::BuildRectification(rig);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(*simulator_, *truth_, rig, rect, &frames, &boards);
@@ -209,7 +208,7 @@ const ws::RectifyOptions kLatLon{1.0, {}, ws::RectificationMode::kLatLon};
 
 TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
   const ws::SimTruth truth = FisheyeSimulator().Truth();
-  const ws::Rig rig = TrueStereoRig(truth);
+  const ws::Rig rig = truth.rig;
   const cv::Vec2d field = ws::CommonField(rig);
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   std::printf("[ rectify ] fisheye rig: common field %.1f x %.1f degrees, lat-lon image %d x %d at "
@@ -244,7 +243,7 @@ TEST(LatLonRectification, TrueCornerPairsShareARowBeyond90Degrees) {
 // it reaches past the lenses' field (the model's last knot): those pixels
 // are marked invalid and hold no image.
 TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
-  const ws::Rig rig = TrueStereoRig(FisheyeSimulator().Truth());
+  const ws::Rig rig = FisheyeSimulator().Truth().rig;
   const ws::Rectification fitted = ws::BuildRectification(rig, kLatLon);
   ws::RectifyOptions larger = kLatLon;
   larger.size = cv::Size(fitted.size.width * 3 / 2, fitted.size.height * 3 / 2);
@@ -273,7 +272,7 @@ TEST(LatLonRectification, PixelsOutsideTheLensFieldAreInvalid) {
 TEST(LatLonRectification, DetectedCornersShareARow) {
   const ws::Simulator& simulator = FisheyeSimulator();
   const ws::SimTruth truth = simulator.Truth();
-  const ws::Rig rig = TrueStereoRig(truth);
+  const ws::Rig rig = truth.rig;
   const ws::Rectification rect = ws::BuildRectification(rig, kLatLon);
   int frames = 0, boards = 0;
   const auto pairs = DetectedCornerPairs(simulator, truth, rig, rect, &frames, &boards);
@@ -295,8 +294,8 @@ TEST(LatLonRectification, DetectedCornersShareARow) {
 }
 
 TEST(LatLonRectification, CommonFieldOfTheDemoRigAndTheFisheyeRig) {
-  const cv::Vec2d demo = ws::CommonField(TrueStereoRig(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth()));
-  const cv::Vec2d fisheye = ws::CommonField(TrueStereoRig(FisheyeSimulator().Truth()));
+  const cv::Vec2d demo = ws::CommonField(ws::Simulator(ws::LoadSimConfig("config/sim/default.yaml")).Truth().rig);
+  const cv::Vec2d fisheye = ws::CommonField(FisheyeSimulator().Truth().rig);
   std::printf("[ rectify ] common field: demo rig %.1f x %.1f degrees, fisheye rig %.1f x %.1f degrees\n",
               demo[0] * 180 / M_PI, demo[1] * 180 / M_PI, fisheye[0] * 180 / M_PI, fisheye[1] * 180 / M_PI);
   EXPECT_GT(fisheye[0], demo[0]);

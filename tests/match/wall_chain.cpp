@@ -12,7 +12,6 @@
 #include "lcm_io/image_codec.h"
 #include "match_fixtures.h"
 #include "rig/rig_file.h"
-#include "sim/truth_calibration.h"
 #include "test_support.h"
 #include "widestereo/cloud_stats_t.hpp"
 #include "widestereo/disparity_t.hpp"
@@ -74,7 +73,7 @@ WallRun RunWallChain(const std::string& dir, const SimTruth& truth, const Rig& r
   // The truth, seen through the true rig's rectification (the frame the
   // cloud is in only differs by the calibration's own rectifying rotation,
   // which is the same here: both calibrations share R and T).
-  const Rig true_rig = TrueStereoRig(truth);
+  const Rig& true_rig = truth.rig;
   const Rectification rect = BuildRectification(true_rig, RectifyOptions{options.focal_scale, {}, options.mode});
   const SimFrameTruth& wall = truth.frames.front();
   const cv::Mat true_disparity = TrueWallDisparity(rect, true_rig, wall.wall_normal, wall.wall_offset);

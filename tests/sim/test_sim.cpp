@@ -430,7 +430,8 @@ TEST(SimTruth, FileRoundTrip) {
   const SimTruth loaded = LoadSimTruth(path);
   EXPECT_EQ(loaded.config, truth.config);
   EXPECT_EQ(loaded.seed, truth.seed);
-  for (const auto& [a, b] : {std::pair(&loaded.left, &truth.left), std::pair(&loaded.right, &truth.right)}) {
+  for (const auto& [a, b] :
+       {std::pair(&loaded.rig.left, &truth.rig.left), std::pair(&loaded.rig.right, &truth.rig.right)}) {
     EXPECT_EQ(a->distortion.kind, b->distortion.kind);
     EXPECT_EQ(a->distortion.degree, b->distortion.degree);
     EXPECT_EQ(a->distortion.knots, b->distortion.knots);
@@ -439,8 +440,8 @@ TEST(SimTruth, FileRoundTrip) {
     EXPECT_EQ(a->image_width, b->image_width);
     EXPECT_EQ(a->image_height, b->image_height);
   }
-  EXPECT_EQ(cv::norm(loaded.R - truth.R), 0);
-  EXPECT_EQ(cv::norm(loaded.T - truth.T), 0);
+  EXPECT_EQ(loaded.rig.R, truth.rig.R);
+  EXPECT_EQ(loaded.rig.T, truth.rig.T);
   EXPECT_EQ(loaded.board, truth.board);
   EXPECT_EQ(loaded.rendering.noise_sigma, truth.rendering.noise_sigma);
   ASSERT_EQ(loaded.frames.size(), truth.frames.size());
@@ -460,12 +461,12 @@ TEST(SimTruth, FileRoundTrip) {
     EXPECT_EQ(a.wall_distance, b.wall_distance);
     EXPECT_EQ(a.wall_offset, b.wall_offset);
   }
-  // OpenCV users read K, R and T directly.
+  // OpenCV users read K, R and T directly, as from a calibration file.
   cv::FileStorage fs(path, cv::FileStorage::READ);
   cv::Mat K, R;
-  fs["cameras"][0]["K"] >> K;
+  fs["cameras"][0]["camera_matrix"] >> K;
   fs["R"] >> R;
-  EXPECT_EQ(K.at<double>(0, 0), truth.left.fx);
+  EXPECT_EQ(K.at<double>(0, 0), truth.rig.left.fx);
   EXPECT_EQ(R.at<double>(1, 1), 1.0);
 }
 
@@ -498,13 +499,13 @@ TEST(SimTruth, LoaderNamesTheBadField) {
   std::stringstream text;
   text << in.rdbuf();
   std::string broken = text.str();
-  broken.replace(broken.find("fx:"), 3, "fz:");
+  broken.replace(broken.find("p1:"), 3, "pq:");
   std::ofstream(dir + "/bad.yaml") << broken;
   try {
     LoadSimTruth(dir + "/bad.yaml");
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("cameras[0].fx: is missing"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cameras[0].p1: missing"), std::string::npos) << e.what();
   }
   EXPECT_THROW(LoadSimTruth(dir + "/none.yaml"), std::runtime_error);
 }

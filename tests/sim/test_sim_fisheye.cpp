@@ -38,7 +38,7 @@ TEST(SimFisheye, ConfigDescribesTheKneeLensRig) {
   // The truth file keeps the lens, its image circle and the corners past it.
   WriteSimTruth(dir + "/truth.yaml", FisheyeSimulator().Truth());
   const SimTruth truth = LoadSimTruth(dir + "/truth.yaml");
-  EXPECT_EQ(truth.left.distortion.coeffs, config.left.distortion.coeffs);
+  EXPECT_EQ(truth.rig.left.distortion.coeffs, config.left.distortion.coeffs);
   EXPECT_NEAR(truth.max_theta[1], config.max_theta[1], 1e-12);
   const auto error = [&](const std::string& camera) {
     std::ofstream(dir + "/x.yaml") << "rig: {baseline: 0.15, left: " << camera << "}\nscene: {wall: {frames: 1}}\n";
