@@ -193,7 +193,7 @@ PYBIND11_MODULE(_widestereo, m) {
            "N x 2 pixels -> N x 3 unit rays; NaN where the model cannot be inverted")
       .def("in_field", &PyCamera::InField, py::arg("rays"),
            "N x 3 directions -> N booleans: within the field the model was calibrated over "
-           "(a B-spline's knots; every direction for the others)")
+           "(a B-spline's knots; for the others, imaged inside the image before the model folds)")
       .def_property_readonly("image_size",
                              [](const PyCamera& c) {
                                return py::make_tuple(c.camera->image_width(), c.camera->image_height());
