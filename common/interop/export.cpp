@@ -1,6 +1,7 @@
 #include "interop/export.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -52,6 +53,15 @@ std::string Described(const CameraModel& m) {
   return ModelName(m.distortion.kind) + (m.nonradial.cols > 0   ? " with a non-radial field"
                                          : m.nonradial.tilted() ? " with a sensor tilt"
                                                                 : "");
+}
+
+// "within the lens circle (r = 480.2 px about the principal point)", or
+// "(the whole image: the model does not fold)".
+std::string Within(const LensCircle& circle) {
+  if (!std::isfinite(circle.radius)) return "(all of it: the model does not fold, no lens circle)";
+  char text[96];
+  std::snprintf(text, sizeof text, "within the lens circle (r = %.1f px about the principal point)", circle.radius);
+  return text;
 }
 
 void RequireStereo(const Rig& file, const std::string& why) {
@@ -194,8 +204,10 @@ void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
       const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
                                ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
-                               Px(fit.error.rms_px) + ") over " + std::to_string(fit.error.points) +
-                               " points of the observed field";
+                               Px(fit.error.rms_px) + ") over the " + std::to_string(fit.error.points) +
+                               " pixels of the observed field " + Within(fit.circle) + ", where it was fitted; " +
+                               Px(fit.image_error.max_px) + " (RMS " + Px(fit.image_error.rms_px) +
+                               ") over all " + std::to_string(fit.image_error.points) + " of the observed field";
       report->lines.push_back(what);
       comments.push_back("NOT EXACT: " + what);
     }
