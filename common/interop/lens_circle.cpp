@@ -1,10 +1,11 @@
 #include "interop/lens_circle.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ws {
 
-LensCircle FindLensCircle(const Camera& camera) {
+LensCircle FindLensCircle(const Camera& camera, double observed_radius) {
   const CameraModel& m = camera.model();
   LensCircle circle;
   circle.centre = Eigen::Vector2d(m.cx, m.cy);
@@ -18,7 +19,8 @@ LensCircle FindLensCircle(const Camera& camera) {
           Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
       if (!pixel || !pixel->allFinite()) break;  // the model ends: a pinhole model at 90 degrees
       const double r = (*pixel - circle.centre).norm();
-      if (!(r > reached)) {  // folds
+      const double ideal = camera.IsAngleModel() ? theta : std::tan(theta);
+      if (!(r > reached) || ideal > observed_radius) {  // folds, or leaves the calibrated field
         circle.radius = std::min(circle.radius, reached);
         break;
       }

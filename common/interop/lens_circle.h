@@ -9,7 +9,8 @@
 // bends to follow what the lens never imaged. The circle's radius is the
 // smallest fold over the azimuths: the model, not a constant, says where
 // its lens ends. A model that rises all the way (a pinhole model to 90
-// degrees, most kb4) has no fold, and its circle holds the whole image.
+// degrees, most kb4) has no fold, and its circle holds the whole image,
+// unless the calibration's report bounds it.
 #pragma once
 
 #include <cmath>
@@ -27,7 +28,11 @@ struct LensCircle {
 };
 
 // Along 144 azimuths, rays every quarter degree off the axis up to straight
-// back, projected until the distance from the principal point stops growing.
-LensCircle FindLensCircle(const Camera& camera);
+// back, projected until the distance from the principal point stops growing
+// or, when the calibration says how far out it saw corners (its report's
+// max_observed_radius: the ideal radius, radial_coordinate.h, of its
+// outermost inlier corner), the ray goes past that: the circle is then the
+// smaller of the fold and the calibrated field.
+LensCircle FindLensCircle(const Camera& camera, double observed_radius = INFINITY);
 
 }  // namespace ws

@@ -135,10 +135,10 @@ std::vector<double> Solve(const MrcalSpline& spline, const std::vector<SplineSam
 
 }  // namespace
 
-MrcalSplineFit FitMrcalSpline(const Camera& camera, double target_px) {
+MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius, double target_px) {
   const CameraModel& m = camera.model();
   MrcalSplineFit best;
-  best.circle = FindLensCircle(camera);
+  best.circle = FindLensCircle(camera, observed_radius);
   // Every pixel of the observed field; the fit and its error within the lens circle.
   const std::vector<FieldSample> image = FieldSamples(camera, 1.0), field = Within(image, best.circle);
   if (field.empty()) throw std::invalid_argument("the camera's observed field is empty");

@@ -6,7 +6,7 @@
 // Fitted where the lens sees: the observed field (field_samples.h: the
 // image's pixels whose rays lie within the calibrated field) within the
 // lens circle (lens_circle.h: where the model's radial map folds, when it
-// does). fx, fy, cx, cy are the camera's own; with them fixed the
+// does, or, where the calibration's report says, its outermost corner). fx, fy, cx, cy are the camera's own; with them fixed the
 // projection is linear in the spline's control points, so they are the
 // least-squares fit of delta(u) = (q - c) / f - u, x and y apart, to the
 // rays of a grid in u (four to a knot spacing) that the camera projects
@@ -32,7 +32,9 @@ struct MrcalSplineFit {
   FitError image_error;    // over every pixel of the observed field
 };
 
-// Throws std::invalid_argument when the camera's observed field is empty.
-MrcalSplineFit FitMrcalSpline(const Camera& camera, double target_px = 0.01);
+// observed_radius: the calibration's outermost corner (FindLensCircle), or
+// infinite when unknown. Throws std::invalid_argument when the camera's
+// observed field is empty.
+MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius = INFINITY, double target_px = 0.01);
 
 }  // namespace ws

@@ -184,9 +184,11 @@ TEST(LensCircle, EndsWhereTheRadialMapFoldsAndNowhereWhenItRises) {
   EXPECT_EQ(folds.centre, Eigen::Vector2d(640, 480));
   EXPECT_TRUE(folds.Contains({640 + 360, 480}));
   EXPECT_FALSE(folds.Contains({640 + 370, 480}));
-  // An equidistant fisheye rises all the way round to straight back.
+  // An equidistant fisheye rises all the way round to straight back; its
+  // calibration's outermost corner (1.2 rad) bounds it, to a quarter degree.
   m.distortion = Distortion{ModelKind::kKb4, 0, {}, {0, 0, 0, 0}};
   EXPECT_TRUE(std::isinf(FindLensCircle(Camera(m)).radius));
+  EXPECT_NEAR(FindLensCircle(Camera(m), 1.2).radius, 300 * 1.2, 300 * M_PI / 720);
 }
 
 }  // namespace

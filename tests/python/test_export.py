@@ -8,6 +8,7 @@ import glob
 import json
 import os
 import re
+import subprocess
 
 import cv2
 import mrcal
@@ -295,6 +296,35 @@ def test_mrcal_loads_and_projects_to_the_printed_error(kinds, kind, tmp_path):
         back = mrcal.unproject(pixels, lensmodel, intrinsics, normalize=True)
         worst = np.linalg.norm(camera.project(back) - pixels, axis=1).max()
         assert worst <= error * 1.01 + 1e-6, (worst, error)
+
+
+def test_the_calibrations_report_bounds_the_fitted_region(kinds, tmp_path):
+    """With the calibration's report beside it (NAME.report.json) the spline
+    is fitted out to each camera's outermost calibrated corner only: a kb4
+    that never folds gets a lens circle there, on a finer grid than over
+    its whole image; a report of another calibration is refused."""
+    calibration = tmp_path / "rig.yaml"
+    calibration.write_text(open(kinds / "rig-kb4.yaml").read())
+    _, whole = export(str(calibration), "mrcal", tmp_path / "whole")
+    rig = widestereo.Rig.load(str(calibration))
+    report = {"model": "kb4", "cameras": [{"name": side, "fx": getattr(rig, side).parameters["fx"],
+                                           "max_observed_radius": 1.2} for side in ("left", "right")]}
+    (tmp_path / "rig.report.json").write_text(json.dumps(report))
+    text, error = export(str(calibration), "mrcal", tmp_path / "bounded")
+    assert "the calibrated field, from %s" % (tmp_path / "rig.report.json") in text
+    circles = fitted_circles(text)
+    for side in ("left", "right"):
+        camera = getattr(rig, side)
+        phi = np.radians(np.arange(0, 360, 2.5))  # the azimuths FindLensCircle walks, each to a quarter degree
+        ring = np.stack([np.sin(1.2) * np.cos(phi), np.sin(1.2) * np.sin(phi), np.full_like(phi, np.cos(1.2))], 1)
+        edge = np.linalg.norm(camera.project(ring) - [camera.parameters["cx"], camera.parameters["cy"]], axis=1).min()
+        assert edge - camera.parameters["fx"] * np.radians(0.25) - 0.1 < circles[side] <= edge + 0.1, (circles, edge)
+    assert error < whole
+    report["cameras"][0]["fx"] *= 1.001
+    (tmp_path / "other.json").write_text(json.dumps(report))
+    done = subprocess.run([os.path.join(BIN, "stereo-export"), str(calibration), "--to", "mrcal", str(tmp_path / "other"),
+                           "--report", str(tmp_path / "other.json")], capture_output=True, text=True)
+    assert done.returncode == 1 and "the report of another calibration" in done.stderr
 
 
 def test_an_export_compared_with_its_calibration_differs_by_at_most_its_error(kinds, tmp_path, sim_calibration):
