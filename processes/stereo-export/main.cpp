@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -34,16 +33,15 @@ int main(int argc, char** argv) {
   app.add_option("out", out, "the folder to write into (created when missing)")->required();
   std::string calibration_report;
   app.add_option("--report", calibration_report,
-                 "the calibration's report (stereo-calibrate --report; default: NAME.report.json beside "
-                 "NAME.yaml when there is one): mrcal's spline is then fitted only out to each camera's "
-                 "outermost calibrated corner (max_observed_radius), within the model's lens circle")
+                 "the calibration's report (stereo-calibrate --report, or NAME.report.json beside its --out): "
+                 "mrcal's spline is then fitted only out to each camera's outermost calibrated corner "
+                 "(max_observed_radius), within the model's lens circle, and is not promised beyond it "
+                 "(default: over the whole observed field within the lens circle)")
       ->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
 
   try {
     const ws::Rig file = ws::ReadCalibrationFile(in);
-    const std::filesystem::path beside = std::filesystem::path(in).replace_extension(".report.json");
-    if (calibration_report.empty() && std::filesystem::exists(beside)) calibration_report = beside.string();
     std::array<double, 2> observed{INFINITY, INFINITY};
     if (!calibration_report.empty() && format == "mrcal") {
       observed = ws::CalibrationReportRadii(calibration_report, file);

@@ -37,9 +37,9 @@ def kinds(tmp_path_factory):
     return folder
 
 
-def export(calibration, fmt, out):
+def export(calibration, fmt, out, *options):
     """stereo-export's output, and the error it printed (0 when exact)."""
-    text = run(os.path.join(BIN, "stereo-export"), calibration, "--to", fmt, out)
+    text = run(os.path.join(BIN, "stereo-export"), calibration, "--to", fmt, out, *options)
     found = re.search(r"error up to ([0-9.eE+-]+) px", text)
     assert ("NOT EXACT" in text) == bool(found), text
     return text, float(found.group(1)) if found else 0.0
@@ -299,10 +299,10 @@ def test_mrcal_loads_and_projects_to_the_printed_error(kinds, kind, tmp_path):
 
 
 def test_the_calibrations_report_bounds_the_fitted_region(kinds, tmp_path):
-    """With the calibration's report beside it (NAME.report.json) the spline
-    is fitted out to each camera's outermost calibrated corner only: a kb4
-    that never folds gets a lens circle there, on a finer grid than over
-    its whole image; a report of another calibration is refused."""
+    """With the calibration's report (--report) the spline is fitted out to
+    each camera's outermost calibrated corner only: a kb4 that never folds
+    gets a lens circle there, on a finer grid than over its whole image; a
+    report of another calibration is refused."""
     calibration = tmp_path / "rig.yaml"
     calibration.write_text(open(kinds / "rig-kb4.yaml").read())
     _, whole = export(str(calibration), "mrcal", tmp_path / "whole")
@@ -310,7 +310,8 @@ def test_the_calibrations_report_bounds_the_fitted_region(kinds, tmp_path):
     report = {"model": "kb4", "cameras": [{"name": side, "fx": getattr(rig, side).parameters["fx"],
                                            "max_observed_radius": 1.2} for side in ("left", "right")]}
     (tmp_path / "rig.report.json").write_text(json.dumps(report))
-    text, error = export(str(calibration), "mrcal", tmp_path / "bounded")
+    assert export(str(calibration), "mrcal", tmp_path / "default")[1] == whole  # only when asked
+    text, error = export(str(calibration), "mrcal", tmp_path / "bounded", "--report", tmp_path / "rig.report.json")
     assert "the calibrated field, from %s" % (tmp_path / "rig.report.json") in text
     circles = fitted_circles(text)
     for side in ("left", "right"):
