@@ -178,7 +178,8 @@ PYBIND11_MODULE(_widestereo, m) {
 
   py::class_<PyCamera>(m, "Camera",
                        "One camera of a calibration: widestereo's file, or another tool's "
-                       "(mrcal .cameramodel, Kalibr camchain, OpenCV calibration YAML)")
+                       "(mrcal .cameramodel, Kalibr camchain, OpenCV calibration YAML, ROS camera_info, "
+                       "any folder stereo-export writes)")
       .def_static(
           "load",
           [](const std::string& path, const std::string& side) {
