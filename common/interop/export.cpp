@@ -58,9 +58,9 @@ std::string Described(const CameraModel& m) {
                                                                 : "");
 }
 
-// "within the lens circle (r = 480.2 px about the principal point)", or
-// "(the whole image: the model does not fold)".
-std::string Within(const LensCircle& circle) {
+// Where the spline was fitted: "within the lens circle (r = 480.2 px about
+// the principal point)", or "(all of it: ...)" when the model has none.
+std::string FittedRegion(const LensCircle& circle) {
   if (!std::isfinite(circle.radius)) return "(all of it: the model does not fold, no lens circle)";
   char text[96];
   std::snprintf(text, sizeof text, "within the lens circle (r = %.1f px about the principal point)", circle.radius);
@@ -209,7 +209,7 @@ void Mrcal(const Rig& file, const std::string& out, const std::array<double, 2>&
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
                                ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
                                Px(fit.error.rms_px) + ") over the " + std::to_string(fit.error.points) +
-                               " pixels of the observed field " + Within(fit.circle) + ", where it was fitted; " +
+                               " pixels of the observed field " + FittedRegion(fit.circle) + ", where it was fitted; " +
                                Px(fit.image_error.max_px) + " (RMS " + Px(fit.image_error.rms_px) +
                                ") over all " + std::to_string(fit.image_error.points) + " of the observed field";
       report->lines.push_back(what);
