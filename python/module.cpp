@@ -178,7 +178,8 @@ PYBIND11_MODULE(_widestereo, m) {
 
   py::class_<PyCamera>(m, "Camera",
                        "One camera of a calibration: widestereo's file, or another tool's "
-                       "(mrcal .cameramodel, Kalibr camchain, OpenCV calibration YAML)")
+                       "(mrcal .cameramodel, Kalibr camchain, OpenCV calibration YAML, ROS camera_info, "
+                       "any folder stereo-export writes)")
       .def_static(
           "load",
           [](const std::string& path, const std::string& side) {
@@ -193,7 +194,7 @@ PYBIND11_MODULE(_widestereo, m) {
            "N x 2 pixels -> N x 3 unit rays; NaN where the model cannot be inverted")
       .def("in_field", &PyCamera::InField, py::arg("rays"),
            "N x 3 directions -> N booleans: within the field the model was calibrated over "
-           "(a B-spline's knots; every direction for the others)")
+           "(a B-spline's knots; for the others, imaged inside the image before the model folds)")
       .def_property_readonly("image_size",
                              [](const PyCamera& c) {
                                return py::make_tuple(c.camera->image_width(), c.camera->image_height());

@@ -49,8 +49,8 @@ AnyRig FromMrcal(const std::string& path) {
   const std::string left_path = path + "/camera-0.cameramodel", right_path = path + "/camera-1.cameramodel";
   if (!std::filesystem::exists(left_path))
     throw CalibrationFileError(path + ": camera-0.cameramodel: missing (a folder is read as "
-                                      "mrcal-calibrate-cameras' output, or stereo-export's for ROS: left.yaml "
-                                      "and right.yaml)");
+                                      "mrcal-calibrate-cameras' output, or stereo-export's: camera-0.cameramodel, "
+                                      "left.yaml, stereo.yaml or camchain.yaml)");
   const MrcalCameraModel left = ReadMrcalCameraModel(left_path);
   rig.left = MrcalCamera(left);
   rig.mono = !std::filesystem::exists(right_path);
@@ -98,13 +98,17 @@ AnyRig FromRosPair(const std::string& folder) {
   return rig;
 }
 
-// A folder: mrcal-calibrate-cameras' (camera-0.cameramodel) or
-// stereo-export's for ROS (left.yaml and right.yaml).
+// A folder: mrcal-calibrate-cameras' (camera-0.cameramodel) or any that
+// stereo-export writes: mrcal's, ROS's (left.yaml and right.yaml; left.yaml
+// alone of one camera), OpenCV's (stereo.yaml) or Kalibr's (camchain.yaml).
 AnyRig FromFolder(const std::string& folder) {
-  if (!std::filesystem::exists(folder + "/camera-0.cameramodel") && std::filesystem::exists(folder + "/left.yaml") &&
-      std::filesystem::exists(folder + "/right.yaml"))
-    return FromRosPair(folder);
-  return FromMrcal(folder);
+  const auto has = [&](const char* name) { return std::filesystem::exists(folder + "/" + name); };
+  if (has("camera-0.cameramodel")) return FromMrcal(folder);
+  if (has("left.yaml") && has("right.yaml")) return FromRosPair(folder);
+  if (has("left.yaml")) return FromRos(folder + "/left.yaml");
+  if (has("stereo.yaml")) return ReadOpenCvCalibration(folder + "/stereo.yaml");
+  if (has("camchain.yaml")) return ReadKalibrCamchain(folder + "/camchain.yaml");
+  return FromMrcal(folder);  // says what it missed
 }
 
 }  // namespace

@@ -12,12 +12,17 @@
 //               T or M1 D1 M2 D2 R T of a pair, camera_matrix
 //               distortion_coefficients of one camera; image_width and
 //               image_height; distortion_model pinhole or fisheye) opencv_stereo_file.h
-//   ros         a camera_info YAML (one camera: plumb_bob or equidistant),
+//   ros         a camera_info YAML (one camera: plumb_bob, equidistant or
+//               rational_polynomial of OpenCV's tilted model),
 //               or a folder of left.yaml and right.yaml (a pair, as
 //               stereo-export --format ros writes them)   ros_camera_info.h
 //
-// The format is told by the path: a folder is ROS's when it holds left.yaml
-// and right.yaml and no camera-0.cameramodel, mrcal's otherwise;
+// stereo-export's output folder of each reads too (any of its formats, a
+// camera OpenCV or ROS has no model of as the rectified pair its maps make).
+//
+// The format is told by the path: a folder by the file it holds
+// (camera-0.cameramodel: mrcal's; left.yaml: ROS's, a pair with
+// right.yaml; stereo.yaml: OpenCV's; camchain.yaml: Kalibr's);
 // *.cameramodel is mrcal's; a YAML file is Kalibr's when it has cam0, ROS's
 // when it has distortion_model and projection_matrix, widestereo's when it
 // has left and model, OpenCV's otherwise.

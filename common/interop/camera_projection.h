@@ -29,8 +29,9 @@ class CameraProjection {
   // The unit ray seen at a pixel; nullopt where the model cannot be inverted.
   virtual std::optional<Eigen::Vector3d> Unproject(const Eigen::Vector2d& pixel) const = 0;
   // Whether a direction lies in the field the model was calibrated over
-  // (Camera::InField); another tool's model: every direction it projects.
-  virtual bool InField(const Eigen::Vector3d&) const { return true; }
+  // (Camera::InField; another tool's model: imaged inside the image, before
+  // a fold, foreign_camera.h).
+  virtual bool InField(const Eigen::Vector3d& direction) const = 0;
   // The camera as widestereo's own model when it is one (then it can be
   // rectified, exported, ...); nullptr for another tool's model.
   virtual const Camera* AsCamera() const { return nullptr; }

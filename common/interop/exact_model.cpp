@@ -43,10 +43,13 @@ std::optional<TargetModel> ExactTargetModel(const CameraModel& camera, ExportFor
   if (camera.nonradial.tilted()) {
     // OpenCV's 14 coefficients k1 k2 p1 p2 k3 k4 k5 k6 s1 s2 s3 s4 tauX tauY
     // (CALIB_TILTED_MODEL), the same tilt after the same distortion.
+    // ROS's rational_polynomial is OpenCV's model with D as long as given
+    // (image_geometry hands it to cv::initUndistortRectifyMap as it stands).
     const auto k = Brown(camera);
-    if (!k || format != ExportFormat::kOpenCv) return std::nullopt;
+    if (!k || format == ExportFormat::kKalibr || format == ExportFormat::kMrcal) return std::nullopt;
     const std::array<double, 2>& tau = camera.nonradial.tilt;
-    return TargetModel{"pinhole", {(*k)[0], (*k)[1], p1, p2, (*k)[2], 0, 0, 0, 0, 0, 0, 0, tau[0], tau[1]}};
+    return TargetModel{format == ExportFormat::kRos ? "rational_polynomial" : "pinhole",
+                       {(*k)[0], (*k)[1], p1, p2, (*k)[2], 0, 0, 0, 0, 0, 0, 0, tau[0], tau[1]}};
   }
   if (const auto k = Brown(camera)) {
     const std::vector<double> opencv{(*k)[0], (*k)[1], p1, p2, (*k)[2]};

@@ -5,7 +5,7 @@
 //   poly6        pinhole (5 coeffs)   plumb_bob         radtan if k3 = 0      LENSMODEL_OPENCV5
 //   kb4          fisheye              equidistant       equidistant           -
 //   poly12       as poly6 when k4 = k5 = k6 = 0, else -
-//   poly6 + tilt pinhole (14 coeffs)  -              -                     -
+//   poly6 + tilt pinhole (14 coeffs)  rational_polynomial (14)  -        -
 //   bspline, bspline_theta: -
 //
 // and never with a non-radial field (models/nonradial_field.h) beyond the

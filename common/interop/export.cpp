@@ -1,8 +1,12 @@
 #include "interop/export.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 
@@ -52,6 +56,15 @@ std::string Described(const CameraModel& m) {
   return ModelName(m.distortion.kind) + (m.nonradial.cols > 0   ? " with a non-radial field"
                                          : m.nonradial.tilted() ? " with a sensor tilt"
                                                                 : "");
+}
+
+// Where the spline was fitted: "within the lens circle (r = 480.2 px about
+// the principal point)", or "(all of it: ...)" when the model has none.
+std::string FittedRegion(const LensCircle& circle) {
+  if (!std::isfinite(circle.radius)) return "(all of it: the model does not fold, no lens circle)";
+  char text[96];
+  std::snprintf(text, sizeof text, "within the lens circle (r = %.1f px about the principal point)", circle.radius);
+  return text;
 }
 
 void RequireStereo(const Rig& file, const std::string& why) {
@@ -174,7 +187,8 @@ void Kalibr(const Rig& file, const std::string& out, ExportReport* report) {
   report->files = {"camchain.yaml"};
 }
 
-void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
+void Mrcal(const Rig& file, const std::string& out, const std::array<double, 2>& observed_radius,
+           ExportReport* report) {
   const Cameras c = Of(file);
   for (size_t i = 0; i < c.models.size(); ++i) {
     const CameraModel& m = *c.models[i];
@@ -187,15 +201,17 @@ void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
       model.width = m.image_width, model.height = m.image_height;
       report->lines.push_back(std::string(kNames[i]) + ": mrcal's " + exact->name + ", exactly");
     } else {
-      const MrcalSplineFit fit = FitMrcalSpline(Camera(m));
+      const MrcalSplineFit fit = FitMrcalSpline(Camera(m), observed_radius[i]);
       model = fit.model;
       report->exact = false;
       report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
       const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
                                ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
-                               Px(fit.error.rms_px) + ") over " + std::to_string(fit.error.points) +
-                               " points of the observed field";
+                               Px(fit.error.rms_px) + ") over the " + std::to_string(fit.error.points) +
+                               " pixels of the observed field " + FittedRegion(fit.circle) + ", where it was fitted; " +
+                               Px(fit.image_error.max_px) + " (RMS " + Px(fit.image_error.rms_px) +
+                               ") over all " + std::to_string(fit.image_error.points) + " of the observed field";
       report->lines.push_back(what);
       comments.push_back("NOT EXACT: " + what);
     }
@@ -212,8 +228,8 @@ void Mrcal(const Rig& file, const std::string& out, ExportReport* report) {
 
 }  // namespace
 
-ExportReport ExportCalibration(const Rig& file, ExportFormat format,
-                               const std::string& out) {
+ExportReport ExportCalibration(const Rig& file, ExportFormat format, const std::string& out,
+                               const std::array<double, 2>& observed_radius) {
   std::error_code error;
   std::filesystem::create_directories(out, error);
   if (!std::filesystem::is_directory(out))
@@ -226,10 +242,40 @@ ExportReport ExportCalibration(const Rig& file, ExportFormat format,
     case ExportFormat::kOpenCv: OpenCv(file, out, &report); break;
     case ExportFormat::kRos: Ros(file, out, &report); break;
     case ExportFormat::kKalibr: Kalibr(file, out, &report); break;
-    case ExportFormat::kMrcal: Mrcal(file, out, &report); break;
+    case ExportFormat::kMrcal: Mrcal(file, out, observed_radius, &report); break;
   }
   set.Commit();
   return report;
+}
+
+std::array<double, 2> CalibrationReportRadii(const std::string& report, const Rig& file) {
+  const auto fail = [&](const std::string& why) { throw std::runtime_error(report + ": " + why); };
+  std::ifstream in(report);
+  if (!in) fail("cannot read it");
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  if (json.is_discarded() || !json.is_object()) fail("not a JSON object (stereo-calibrate's report)");
+  // One model's report, or several's ({"models": [...]}): the file's model's.
+  const std::string kind = ModelName(file.kind());
+  nlohmann::json entry = json;
+  if (json.contains("models") && json["models"].is_array()) {
+    entry = nullptr;
+    for (const auto& model : json["models"])
+      if (model.is_object() && model.value("model", "") == kind) entry = model;
+  }
+  if (!entry.is_object() || entry.value("model", "") != kind || !entry.contains("cameras") ||
+      !entry["cameras"].is_array() || entry["cameras"].size() != (file.mono ? 1u : 2u))
+    fail("no report of the calibration's " + kind + " model and its cameras");
+  std::array<double, 2> radii{INFINITY, INFINITY};
+  const CameraModel* models[2] = {&file.left, &file.right};
+  for (size_t i = 0; i < entry["cameras"].size(); ++i) {
+    const auto& camera = entry["cameras"][i];
+    const double fx = camera.value("fx", 0.0), radius = camera.value("max_observed_radius", 0.0);
+    if (!(std::abs(fx - models[i]->fx) <= 1e-9 * models[i]->fx))
+      fail(std::string(kNames[i]) + " camera's fx is not the calibration's: the report of another calibration");
+    if (!(radius > 0)) fail(std::string(kNames[i]) + " camera: no max_observed_radius");
+    radii[i] = radius;
+  }
+  return radii;
 }
 
 }  // namespace ws

@@ -17,6 +17,8 @@
 // what it wrote instead.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -32,10 +34,19 @@ struct ExportReport {
   double max_error_px = 0;         // the largest error printed (0 when exact)
 };
 
-// Creates `out` when missing. Throws std::invalid_argument when the format
-// cannot hold the calibration at all (a one-camera file has no stereo
-// rectification) and std::runtime_error when a file cannot be written.
-ExportReport ExportCalibration(const Rig& file, ExportFormat format,
-                               const std::string& out);
+// observed_radius: each camera's outermost calibrated corner
+// (CalibrationReportRadii), bounding the lens circle a fitted mrcal spline
+// is fitted within; infinite when unknown. Creates `out` when missing.
+// Throws std::invalid_argument when the format cannot hold the calibration
+// at all (a one-camera file has no stereo rectification) and
+// std::runtime_error when a file cannot be written.
+ExportReport ExportCalibration(const Rig& file, ExportFormat format, const std::string& out,
+                               const std::array<double, 2>& observed_radius = {INFINITY, INFINITY});
+
+// Each camera's max_observed_radius from the calibration's report
+// (stereo-calibrate --report, or NAME.report.json beside --out): the entry
+// of the file's model, whose fx must be the file's. Throws
+// std::runtime_error naming the report for a report that is not the file's.
+std::array<double, 2> CalibrationReportRadii(const std::string& report, const Rig& file);
 
 }  // namespace ws

@@ -53,6 +53,17 @@ class ForeignCamera final : public CameraProjection {
       return std::nullopt;
     return ray;
   }
+  // The field such a model describes keeps no record of where it was
+  // calibrated: as for widestereo's polynomials, a direction imaged inside
+  // the image, once (its pixel unprojects back to it: not past a fold).
+  bool InField(const Eigen::Vector3d& direction) const override {
+    const auto pixel = Project(direction);
+    if (!pixel || !((*pixel)[0] >= -0.5 && (*pixel)[1] >= -0.5 && (*pixel)[0] <= width_ - 0.5 &&
+                    (*pixel)[1] <= height_ - 0.5))
+      return false;
+    const auto back = Unproject(*pixel);
+    return back && (*back - direction.normalized()).norm() < 1e-6;
+  }
 
  private:
   std::string name_;

@@ -15,6 +15,10 @@
 // prism terms are not, so a calibration with them is compared through this.
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
+#include "models/camera_model.h"
 #include "models/radial_coordinate.h"
 #include "models/radial_tangential.h"
 
@@ -48,5 +52,19 @@ class OpenCvLens {
            1.0;
   }
 };
+
+// OpenCV's D as widestereo's poly6 into `m` (its distortion, p1, p2 and
+// tilt): 4 or 5 coefficients k1 k2 p1 p2 [k3], or the 14 of
+// CALIB_TILTED_MODEL with only k1 k2 p1 p2 k3 and the tilt tauX tauY set.
+// False for another count, or 14 with a rational or thin-prism term
+// (k4..k6, s1..s4), which poly6 has not.
+inline bool OpenCvPoly6(const std::vector<double>& d, CameraModel* m) {
+  if (d.size() != 4 && d.size() != 5 && d.size() != 14) return false;
+  if (d.size() == 14 && std::any_of(d.begin() + 5, d.begin() + 12, [](double v) { return v != 0; })) return false;
+  m->distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], d.size() > 4 ? d[4] : 0.0}};
+  m->p1 = d[2], m->p2 = d[3];
+  if (d.size() == 14) m->nonradial.tilt = {d[12], d[13]};
+  return true;
+}
 
 }  // namespace ws

@@ -14,6 +14,8 @@
 namespace ws {
 namespace {
 
+constexpr const char* kNoOpenCvModel = "none: widestereo";
+
 cv::Mat Row(const std::vector<double>& values) { return cv::Mat(values, true).reshape(1, 1); }
 
 // The pinhole rectification's projection matrices and the rotations.
@@ -80,20 +82,10 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
       m.distortion = Distortion{ModelKind::kKb4, 0, {}, d};
       return std::make_shared<WidestereoProjection>(m);
     }
-    if (d.size() == 4 || d.size() == 5) {
-      m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], d.size() == 5 ? d[4] : 0.0}};
-      m.p1 = d[2], m.p2 = d[3];
-      return std::make_shared<WidestereoProjection>(m);
-    }
-    if (d.size() == 14) {  // CALIB_TILTED_MODEL: widestereo's poly6 + tilt when it has no other term
-      if (std::any_of(d.begin() + 5, d.begin() + 12, [](double v) { return v != 0; }))
-        in.Fail(d_key, "14 coefficients with a rational or thin-prism part (k4 to k6, s1 to s4): only a "
-                       "tilted sensor over k1 k2 p1 p2 k3 is read");
-      m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {d[0], d[1], d[4]}};
-      m.p1 = d[2], m.p2 = d[3];
-      m.nonradial.tilt = {d[12], d[13]};
-      return std::make_shared<WidestereoProjection>(m);
-    }
+    if (OpenCvPoly6(d, &m)) return std::make_shared<WidestereoProjection>(m);
+    if (d.size() == 14)  // CALIB_TILTED_MODEL: widestereo's poly6 + tilt when it has no other term
+      in.Fail(d_key, "14 coefficients with a rational or thin-prism part (k4 to k6, s1 to s4): only a "
+                     "tilted sensor over k1 k2 p1 p2 k3 is read");
     if (d.size() != 8 && d.size() != 12)
       in.Fail(d_key, std::to_string(d.size()) + " coefficients: 4, 5, 8, 12 or 14 are read");
     std::vector<double> k{d[0], d[1], d[4], d[5], d[6], d[7], 0, 0, 0, 0};
@@ -106,6 +98,36 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
   }
 }
 
+// stereo-export's file of cameras OpenCV has no model of: the rectified
+// pair its maps make, pinhole cameras of P1 and P2 without distortion in the
+// rectified image, side by side (R = I), the right one at P2's x
+// translation -f baseline.
+AnyRig RectifiedPair(const Reader& in, const cv::FileNode& root) {
+  const cv::Mat P[2] = {in.Matrix(root, "P1", 3, 4), in.Matrix(root, "P2", 3, 4)};
+  CameraModel m;
+  m.image_width = in.Size(root, "rectified_width");
+  m.image_height = in.Size(root, "rectified_height");
+  m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {0, 0, 0}};
+  AnyRig rig;
+  rig.format = "opencv";
+  for (int i = 0; i < 2; ++i) {
+    const cv::Mat& p = P[i];
+    if (p.at<double>(0, 1) != 0 || p.at<double>(1, 0) != 0 || p.at<double>(2, 0) != 0 || p.at<double>(2, 1) != 0 ||
+        p.at<double>(2, 2) != 1 || p.at<double>(1, 3) != 0 || p.at<double>(2, 3) != 0 ||
+        p.at<double>(0, 0) != P[0].at<double>(0, 0))
+      in.Fail(i == 0 ? "P1" : "P2", "not a rectified pinhole camera [f 0 cx tx; 0 f cy 0; 0 0 1 0]");
+    m.fx = p.at<double>(0, 0), m.fy = p.at<double>(1, 1), m.cx = p.at<double>(0, 2), m.cy = p.at<double>(1, 2);
+    try {
+      (i == 0 ? rig.left : rig.right) = std::make_shared<WidestereoProjection>(m);
+    } catch (const std::invalid_argument& e) {
+      in.Fail(i == 0 ? "P1" : "P2", e.what());
+    }
+  }
+  rig.T = Eigen::Vector3d(P[1].at<double>(0, 3) / m.fx, 0, 0);
+  if (rig.T.x() == 0) in.Fail("P2", "no baseline (P2's x translation is 0)");
+  return rig;
+}
+
 }  // namespace
 
 void WriteOpenCvStereoFile(const std::string& path, const Rig& rig, const Rectification& rect,
@@ -115,7 +137,7 @@ void WriteOpenCvStereoFile(const std::string& path, const Rig& rig, const Rectif
   for (const std::string& line : comments) fs.writeComment(line);
   fs << "image_width" << rig.left.image_width << "image_height" << rig.left.image_height;
   fs << "distortion_model"
-     << (exact[0] && exact[1] ? exact[0]->name : "none: widestereo " + ModelName(rig.left.distortion.kind));
+     << (exact[0] && exact[1] ? exact[0]->name : kNoOpenCvModel + (" " + ModelName(rig.left.distortion.kind)));
   const CameraModel* cameras[2] = {&rig.left, &rig.right};
   for (int i = 0; i < 2; ++i) {
     const CameraModel& m = *cameras[i];
@@ -157,11 +179,11 @@ AnyRig ReadOpenCvCalibration(const std::string& path) {
     if (!root["distortion_model"].isString()) in.Fail("distortion_model", "not a string");
     model = std::string(root["distortion_model"]);
   }
-  if (model != "pinhole" && model != "fisheye")
-    in.Fail("distortion_model", "'" + model + "': pinhole or fisheye (a camera OpenCV has no model "
-                                "of is exported as its maps: compare the widestereo file itself)");
   AnyRig rig;
   rig.format = "opencv";
+  if (model.rfind(kNoOpenCvModel, 0) == 0) return RectifiedPair(in, root);
+  if (model != "pinhole" && model != "fisheye")
+    in.Fail("distortion_model", "'" + model + "': pinhole, fisheye or '" + kNoOpenCvModel + " MODEL'");
   const bool fisheye = model == "fisheye";
   if (!root["camera_matrix"].empty()) {
     rig.mono = true;

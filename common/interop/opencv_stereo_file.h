@@ -19,8 +19,12 @@
 // stereo_calib's M1 D1 M2 D2 R T) of a pair, camera_matrix and
 // distortion_coefficients of one camera, with image_width and image_height
 // and, optionally, distortion_model (pinhole, the default, or fisheye). D
-// of 4 or 5 coefficients is widestereo's poly6; 8, 12 or 14 are OpenCV's
-// rational and thin prism model (opencv_lens.h; 14, tilted: refused).
+// of 4 or 5 coefficients is widestereo's poly6; 8 or 12 OpenCV's rational
+// and thin prism model (opencv_lens.h); 14 (CALIB_TILTED_MODEL) poly6 with
+// its sensor tilt when no rational or thin-prism term is set. A stereo.yaml
+// of cameras OpenCV has no model of ("none: widestereo MODEL", no D) reads
+// as the rectified pair its maps make: pinhole cameras of P1 and P2 in the
+// rectified image, R = I, T = (P2's x translation / f, 0, 0).
 #pragma once
 
 #include <optional>

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "interop/number_text.h"
+#include "interop/opencv_lens.h"
 #include "interop/yaml_fields.h"
 #include "rig/rig_file.h"
 #include "runtime/atomic_file.h"
@@ -56,15 +57,16 @@ CameraModel RosCameraModel(const RosCameraInfo& info, const std::string& path) {
   if (info.K(0, 1) != 0 || info.K(1, 0) != 0 || info.K(2, 0) != 0 || info.K(2, 1) != 0 || info.K(2, 2) != 1)
     in.Fail("camera_matrix", "not [fx 0 cx; 0 fy cy; 0 0 1]");
   const std::vector<double>& D = info.D;
-  if (info.distortion_model == "plumb_bob" && (D.empty() || D.size() == 5)) {
-    m.distortion = Distortion{ModelKind::kPoly6, 0, {}, D.empty() ? std::vector<double>{0, 0, 0}
-                                                                  : std::vector<double>{D[0], D[1], D[4]}};
-    if (!D.empty()) m.p1 = D[2], m.p2 = D[3];
-  } else if (info.distortion_model == "equidistant" && D.size() == 4) {
+  const std::string& model = info.distortion_model;
+  const bool opencv = (model == "plumb_bob" && D.size() == 5) || (model == "rational_polynomial" && D.size() == 14);
+  if (model == "plumb_bob" && D.empty()) {
+    m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {0, 0, 0}};
+  } else if (model == "equidistant" && D.size() == 4) {
     m.distortion = Distortion{ModelKind::kKb4, 0, {}, D};
-  } else {
-    in.Fail("distortion_model", "'" + info.distortion_model + "' with " + std::to_string(D.size()) +
-                                    " coefficients: only plumb_bob (5 or none) and equidistant (4) are read");
+  } else if (!opencv || !OpenCvPoly6(D, &m)) {
+    in.Fail("distortion_model", "'" + model + "' with " + std::to_string(D.size()) +
+                                    " coefficients: only plumb_bob (5 or none), rational_polynomial (14: "
+                                    "OpenCV's tilted sensor over k1 k2 p1 p2 k3) and equidistant (4) are read");
   }
   try {
     const Camera check(m);

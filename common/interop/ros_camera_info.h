@@ -41,7 +41,10 @@ void WriteRosCameraInfo(const std::string& path, const RosCameraInfo& info,
 RosCameraInfo ReadRosCameraInfo(const std::string& path);
 
 // The camera `info` describes as widestereo's model: plumb_bob (k1 k2 p1 p2
-// k3, or no coefficients) as poly6, equidistant (k1 k2 k3 k4) as kb4.
+// k3, or no coefficients) as poly6, rational_polynomial with OpenCV's 14
+// (CALIB_TILTED_MODEL: image_geometry hands D to OpenCV as it stands) and
+// only k1 k2 p1 p2 k3 and the tilt set as poly6 with its sensor tilt,
+// equidistant (k1 k2 k3 k4) as kb4.
 // Throws CalibrationFileError naming `path` for another distortion model.
 CameraModel RosCameraModel(const RosCameraInfo& info, const std::string& path);
 

@@ -5,6 +5,8 @@
 //
 //   stereo-export calib.yaml --to mrcal mrcal/
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -22,18 +24,33 @@ int main(int argc, char** argv) {
       "(camchain.yaml), mrcal (camera-0.cameramodel, camera-1.cameramodel). A camera whose model "
       "the format has is written exactly; otherwise the export says so, in the files and here, "
       "and prints the error of what it wrote instead (the maps; Kalibr's closest model; mrcal's "
-      "fitted LENSMODEL_SPLINED_STEREOGRAPHIC)."};
+      "LENSMODEL_SPLINED_STEREOGRAPHIC fitted within the lens circle, docs/export.md)."};
   std::string in, format, out;
   app.add_option("calibration", in, "the calibration file")->required()->check(CLI::ExistingFile);
   app.add_option("--to", format, "opencv-stereo, ros, kalibr or mrcal")
       ->required()
       ->check(CLI::IsMember({"opencv-stereo", "ros", "kalibr", "mrcal"}));
   app.add_option("out", out, "the folder to write into (created when missing)")->required();
+  std::string calibration_report;
+  app.add_option("--report", calibration_report,
+                 "the calibration's report (stereo-calibrate --report, or NAME.report.json beside its --out): "
+                 "mrcal's spline is then fitted only out to each camera's outermost calibrated corner "
+                 "(max_observed_radius), within the model's lens circle, and is not promised beyond it "
+                 "(default: over the whole observed field within the lens circle)")
+      ->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
 
   try {
     const ws::Rig file = ws::ReadCalibrationFile(in);
-    const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out);
+    std::array<double, 2> observed{INFINITY, INFINITY};
+    if (!calibration_report.empty() && format == "mrcal") {
+      observed = ws::CalibrationReportRadii(calibration_report, file);
+      std::printf("the calibrated field, from %s: out to ideal radius %.4g (left)", calibration_report.c_str(),
+                  observed[0]);
+      if (!file.mono) std::printf(", %.4g (right)", observed[1]);
+      std::printf("\n");
+    }
+    const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out, observed);
     for (const std::string& line : report.lines) std::printf("%s\n", line.c_str());
     std::printf("%s: %s into %s:", report.exact ? "exact" : "NOT EXACT", format.c_str(), out.c_str());
     for (const std::string& name : report.files) std::printf(" %s", name.c_str());

@@ -8,6 +8,7 @@
 #include "interop/any_rig.h"
 #include "interop/exact_model.h"
 #include "interop/kalibr_camchain.h"
+#include "interop/lens_circle.h"
 #include "interop/mrcal_cameramodel.h"
 #include "interop/python_literal.h"
 #include "rig/rig_file.h"
@@ -157,11 +158,37 @@ TEST(ExactTargetModel, OnlyModelsTheFormatHas) {
   EXPECT_EQ(ExactTargetModel(kb4, ExportFormat::kOpenCv)->name, "fisheye");
   EXPECT_EQ(ExactTargetModel(kb4, ExportFormat::kKalibr)->name, "equidistant");
   EXPECT_FALSE(ExactTargetModel(kb4, ExportFormat::kMrcal));
+  CameraModel tilted = poly6;  // OpenCV's and ROS's 14 coefficients; Kalibr and mrcal have no tilt
+  tilted.nonradial.tilt = {0.01, -0.02};
+  const std::vector<double> d14{0.1, 0.01, 0.002, 0.003, 0.001, 0, 0, 0, 0, 0, 0, 0, 0.01, -0.02};
+  EXPECT_EQ(ExactTargetModel(tilted, ExportFormat::kOpenCv)->coeffs, d14);
+  EXPECT_EQ(ExactTargetModel(tilted, ExportFormat::kRos)->name, "rational_polynomial");
+  EXPECT_EQ(ExactTargetModel(tilted, ExportFormat::kRos)->coeffs, d14);
+  EXPECT_FALSE(ExactTargetModel(tilted, ExportFormat::kKalibr));
+  EXPECT_FALSE(ExactTargetModel(tilted, ExportFormat::kMrcal));
   CameraModel spline;
   spline.distortion.kind = ModelKind::kBsplineTheta;
   for (ExportFormat f : {ExportFormat::kOpenCv, ExportFormat::kRos, ExportFormat::kKalibr, ExportFormat::kMrcal})
     EXPECT_FALSE(ExactTargetModel(spline, f)) << ExportFormatName(f);
   EXPECT_THROW(ParseExportFormat("colmap"), std::invalid_argument);
+}
+
+TEST(LensCircle, EndsWhereTheRadialMapFoldsAndNowhereWhenItRises) {
+  CameraModel m;
+  m.image_width = 1280, m.image_height = 960;
+  m.fx = m.fy = 300, m.cx = 640, m.cy = 480;
+  // r (1 + k1 r^2), k1 < 0, rises to (2/3) r_f at r_f = 1 / sqrt(-3 k1), then folds.
+  m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {-0.1, 0, 0}};
+  const LensCircle folds = FindLensCircle(Camera(m));
+  EXPECT_NEAR(folds.radius, 300 * 2.0 / 3.0 / std::sqrt(0.3), 0.05);
+  EXPECT_EQ(folds.centre, Eigen::Vector2d(640, 480));
+  EXPECT_TRUE(folds.Contains({640 + 360, 480}));
+  EXPECT_FALSE(folds.Contains({640 + 370, 480}));
+  // An equidistant fisheye rises all the way round to straight back; its
+  // calibration's outermost corner (1.2 rad) bounds it, to a quarter degree.
+  m.distortion = Distortion{ModelKind::kKb4, 0, {}, {0, 0, 0, 0}};
+  EXPECT_TRUE(std::isinf(FindLensCircle(Camera(m)).radius));
+  EXPECT_NEAR(FindLensCircle(Camera(m), 1.2).radius, 300 * 1.2, 300 * M_PI / 720);
 }
 
 }  // namespace
