@@ -22,6 +22,7 @@ prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" --component dev > "$work/install.log"
 cmake --install "$build" --prefix "$prefix" --component python >> "$work/install.log"
 test -f "$prefix/include/widestereo/widestereo.h"
+test -f "$prefix/include/widestereo/lcm.h"
 if grep -rlI -e "$build" -e "$source" "$prefix"; then
   echo "FAIL: the installed files above name $build or $source"
   exit 1
@@ -67,6 +68,21 @@ only_core "widestereo-core's link flags" "$(pkg-config --libs widestereo-core)"
 c++ -std=c++17 -O0 "$work/examples/use_calibration.cpp" -o "$work/use_calibration_pc" \
   $(pkg-config --cflags --libs widestereo-core)
 "$work/use_calibration_pc" "$calibration"
+
+# The message layer on top: a rig as its message, with widestereo-lcm's flags.
+echo "== pkg-config widestereo-lcm: a rig as its message"
+cat > "$work/rig_message.cpp" <<'CPP'
+#include <cstdio>
+#include <widestereo/lcm.h>
+int main(int, char** argv) {
+  const widestereo::stereo_calibration_t msg = ws::MessageFromRig(ws::StereoRigFromFile(argv[1]), 1);
+  ws::Validate(msg);
+  std::printf("STEREO_CALIBRATION of %s: %d bytes\n", argv[1], msg.getEncodedSize());
+  return ws::RigFromMessage(msg).T == ws::StereoRigFromFile(argv[1]).T ? 0 : 1;
+}
+CPP
+c++ -std=c++17 -O0 "$work/rig_message.cpp" -o "$work/rig_message" $(pkg-config --cflags --libs widestereo-lcm)
+"$work/rig_message" "$calibration"
 
 # A program of before the layers: everything, widestereo::widestereo and widestereo.pc.
 echo "== find_package(widestereo): widestereo::widestereo, every layer"
