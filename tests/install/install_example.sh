@@ -69,6 +69,17 @@ c++ -std=c++17 -O0 "$work/examples/use_calibration.cpp" -o "$work/use_calibratio
   $(pkg-config --cflags --libs widestereo-core)
 "$work/use_calibration_pc" "$calibration"
 
+# A component the package has not: find_package says which it has.
+mkdir "$work/nosuch"
+printf 'cmake_minimum_required(VERSION 3.19)\nproject(nosuch LANGUAGES CXX)\nfind_package(widestereo REQUIRED COMPONENTS core nosuch)\n' \
+  > "$work/nosuch/CMakeLists.txt"
+if cmake -S "$work/nosuch" -B "$work/nosuch/build" -DCMAKE_PREFIX_PATH="$prefix" > "$work/nosuch.log" 2>&1; then
+  echo "FAIL: find_package(widestereo COMPONENTS nosuch) succeeded"
+  exit 1
+fi
+grep -q "widestereo has no component 'nosuch' (core, calib, lcm, capture, runtime)" "$work/nosuch.log" ||
+  { cat "$work/nosuch.log"; echo "FAIL: find_package did not name the components"; exit 1; }
+
 # The message layer on top: a rig as its message, with widestereo-lcm's flags.
 echo "== pkg-config widestereo-lcm: a rig as its message"
 cat > "$work/rig_message.cpp" <<'CPP'
