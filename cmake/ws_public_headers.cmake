@@ -1,12 +1,13 @@
-# ws_public_headers(OUT ROOT_DIR HEADER): the headers under ROOT_DIR that
-# HEADER (a path relative to ROOT_DIR) includes with #include "...", directly
-# or through one another, HEADER itself among them; relative to ROOT_DIR.
+# ws_public_headers(OUT ROOT_DIR HEADER...): the headers under ROOT_DIR that
+# the HEADERs (paths relative to ROOT_DIR) include with #include "...",
+# directly or through one another, the HEADERs themselves among them;
+# relative to ROOT_DIR.
 # The install puts exactly these beside the umbrella header, so a header the
 # public interface starts to include is installed with it. Configure runs
 # again when any of them changes.
-function(ws_public_headers out root header)
+function(ws_public_headers out root)
   set(found "")
-  set(pending ${header})
+  set(pending ${ARGN})
   while(pending)
     list(POP_FRONT pending current)
     if(current IN_LIST found OR NOT EXISTS ${root}/${current})

@@ -17,8 +17,17 @@ Fails (exit 1), saying which files make each edge, when
   - a file of the solver core (SOLVER_CORE: files, or every file of a
     folder given as "folder/") includes, directly or through other headers
     of common/, an LCM header or a file-format header (FORBIDDEN_IN_SOLVER),
-    other than the known SOLVER_CORE_ALLOWED ones.
-Prints the graph either way. Python 3 standard library only.
+    other than the known SOLVER_CORE_ALLOWED ones;
+  - a file includes a header of a library layer (LAYERS) that its own layer
+    is not built on. A file's layer is read from the folders' CMakeLists.txt
+    (`target_sources(widestereo_LAYER ...` and `add_library(widestereo_LAYER
+    ...`); a header's is its .cpp's, or, with none, the lowest layer of its
+    folder's sources (UMBRELLAS: the umbrella headers'); a .cpp in no layer
+    fails too;
+  - a file of the core layer includes a library the core does not link
+    (FORBIDDEN_IN_CORE: Ceres, LCM, Aravis, GLib, libsodium, JSON, CLI11,
+    OpenCV's other modules), other than CORE_ALLOWED_EXTERNAL.
+Prints the graph and the layers either way. Python 3 standard library only.
 """
 import os
 import re
@@ -49,6 +58,35 @@ FORBIDDEN_IN_SOLVER = {
 # (solver core file, forbidden include) pairs known today, to be removed;
 # the goal is an empty list.
 SOLVER_CORE_ALLOWED = []
+
+# The library's layers (common/CMakeLists.txt), lowest first, each with the
+# layers it is built on: a file includes headers of its own layer and of
+# those only. widestereo_cloud (cloud/) is on top of them all.
+LAYERS = {
+    "core": [],
+    "calib": ["core"],
+    "lcm": ["core"],
+    "capture": ["core"],
+    "runtime": ["core", "calib", "lcm", "capture"],
+    "cloud": ["core", "calib", "lcm", "capture", "runtime"],
+}
+
+# Headers in a folder of no sources: the umbrella headers.
+UMBRELLAS = {"widestereo/widestereo.h": "core", "widestereo/lcm.h": "lcm"}
+
+# Include prefixes of libraries the core must not need (docs/library.md: it
+# links Eigen, OpenCV's core, imgproc and calib3d, and yaml-cpp).
+FORBIDDEN_IN_CORE = {
+    "ceres/": "Ceres", "glog/": "glog", "lcm/": "LCM", "widestereo/": "an LCM message type",
+    "arv": "Aravis", "glib": "GLib", "gio/": "GLib", "sodium": "libsodium", "nlohmann/": "JSON",
+    "CLI/": "CLI11", "opencv2/imgcodecs": "OpenCV imgcodecs", "opencv2/aruco": "OpenCV aruco",
+    "opencv2/features2d": "OpenCV features2d", "opencv2/video": "OpenCV video",
+    "opencv2/highgui": "OpenCV highgui", "pcl/": "PCL",
+}
+
+# Ceres's Jet is header-only (the models' templated code, for the solver's
+# automatic derivatives): the core includes it and links nothing of Ceres.
+CORE_ALLOWED_EXTERNAL = ["ceres/jet.h"]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 SOURCE_ENDINGS = (".h", ".hpp", ".cpp", ".cc", ".in")
@@ -86,6 +124,73 @@ def node_of(rel, folders):
     if len(parts) > 2 and "/".join(parts[:2]) in folders:
         return "/".join(parts[:2])
     return parts[0]
+
+
+LAYER_SOURCES = re.compile(r"(?:target_sources|add_library)\(\s*widestereo_(\w+)([^)]*)\)")
+LAYER_SOURCE = re.compile(r"\$\{CMAKE_CURRENT_SOURCE_DIR\}/([\w./-]+\.cpp)")
+
+
+def file_layers(common, files, folders, layers, umbrellas):
+    """{file relative to common: its layer} from the folders' CMakeLists.txt:
+    a .cpp's from the target it is a source of; a header's from its .cpp,
+    else the lowest layer of its folder's sources, else UMBRELLAS."""
+    order = list(layers)
+    of = {}
+    for folder in os.listdir(common):
+        lists = os.path.join(common, folder, "CMakeLists.txt")
+        if not os.path.isfile(lists):
+            continue
+        with open(lists, encoding="utf-8") as f:
+            text = re.sub(r"#[^\n]*", "", f.read())
+        for layer, body in LAYER_SOURCES.findall(text):
+            for source in LAYER_SOURCE.findall(body):
+                of["%s/%s" % (folder, source)] = layer
+    folder_layers = {}
+    for rel, layer in of.items():
+        folder_layers.setdefault(node_of(rel, folders), set()).add(layer)
+    for rel in files:
+        if rel in of or rel.endswith(".cpp") or rel.endswith(".in"):
+            continue
+        own = os.path.splitext(rel)[0] + ".cpp"
+        if own in of:
+            of[rel] = of[own]
+        elif rel in umbrellas:
+            of[rel] = umbrellas[rel]
+        elif node_of(rel, folders) in folder_layers:
+            of[rel] = min(folder_layers[node_of(rel, folders)], key=lambda l: order.index(l) if l in order else 0)
+    return of
+
+
+def check_layers(common, files, folders, layers, umbrellas, out):
+    """The failures of the layer rules (see the module's doc)."""
+    of = file_layers(common, files, folders, layers, umbrellas)
+    if not of:
+        return []
+    failures = []
+    counts = {}
+    for layer in of.values():
+        counts[layer] = counts.get(layer, 0) + 1
+    out.write("layers (files): %s\n" % ", ".join("%s %d" % (l, counts.get(l, 0)) for l in layers))
+    for rel in sorted(files):
+        if rel.endswith(".cpp") and rel not in of:
+            failures.append("%s is in no layer: add it to a target_sources(widestereo_LAYER ...)" % rel)
+    for rel, layer in sorted(of.items()):
+        if layer not in layers:
+            failures.append("%s is in widestereo_%s, no layer of LAYERS" % (rel, layer))
+            continue
+        below = set(layers[layer]) | {layer}
+        for include, quoted in files.get(rel, []):
+            if quoted and include in files:
+                there = of.get(include)
+                if there is not None and there not in below:
+                    failures.append("%s (%s) includes %s (%s): the %s layer is not built on %s"
+                                    % (rel, layer, include, there, layer, there))
+            elif layer == "core" and include not in CORE_ALLOWED_EXTERNAL:
+                for prefix, what in FORBIDDEN_IN_CORE.items():
+                    if include.startswith(prefix):
+                        failures.append("the core's %s includes <%s> (%s), which the core does not link"
+                                        % (rel, include, what))
+    return failures
 
 
 def folder_graph(files, folders):
@@ -165,11 +270,11 @@ def reached_includes(files, start):
     return reached
 
 
-def check(common, allowed_edges, solver_core, solver_allowed, out):
+def check(common, allowed_edges, solver_core, solver_allowed, out, layers=LAYERS, umbrellas=UMBRELLAS):
     files = read_includes(common)
     folders = node_folders(common)
     graph = folder_graph(files, folders)
-    failures = []
+    failures = check_layers(common, files, folders, layers, umbrellas, out)
 
     out.write("folder include graph of %s:\n" % common)
     width = max(map(len, folders), default=0)
@@ -271,6 +376,37 @@ def self_test():
         ("a core folder's other file including LCM fails", core_lcm, [], ["core/"], False),
         ("a core folder reaching file I/O through a sub-folder fails", core_file, [], ["core/"], False),
         ("an empty core folder fails", clean, [], ["nowhere/"], False),
+    ]
+    # Layers from the folders' CMakeLists.txt: low/ in the core, up/ in calib
+    # (Ceres), msg/ in lcm.
+    def sources(layer, *names):
+        return "target_sources(widestereo_%s PRIVATE\n%s)\n" % (
+            layer, "\n".join("  ${CMAKE_CURRENT_SOURCE_DIR}/%s" % n for n in names))
+    layer_ok = {
+        "low/CMakeLists.txt": sources("core", "m.cpp"),
+        "low/m.h": "#include <Eigen/Core>\n", "low/m.cpp": '#include "low/m.h"\n#include <ceres/jet.h>\n',
+        "low/only.h": '#include "low/m.h"\n',
+        "up/CMakeLists.txt": "# target_sources(widestereo_core ${CMAKE_CURRENT_SOURCE_DIR}/s.cpp)\n" + sources("calib", "s.cpp"),
+        "up/s.h": '#include "low/only.h"\n', "up/s.cpp": '#include "up/s.h"\n#include <ceres/ceres.h>\n',
+        "msg/CMakeLists.txt": sources("lcm", "c.cpp"),
+        "msg/c.h": '#include "low/m.h"\n#include "widestereo/image_t.hpp"\n', "msg/c.cpp": '#include "msg/c.h"\n',
+    }
+    cases += [
+        ("layers from the CMakeLists pass", layer_ok, [], [], True),
+        ("a core file including a higher layer's header fails",
+         dict(layer_ok, **{"low/m.cpp": '#include "up/s.h"\n'}), [], [], False),
+        ("a core header of no .cpp including a higher layer's fails",
+         dict(layer_ok, **{"low/only.h": '#include "msg/c.h"\n'}), [], [], False),
+        ("a layer including a sibling layer's header fails",
+         dict(layer_ok, **{"msg/c.cpp": '#include "up/s.h"\n'}), [], [], False),
+        ("the core including Ceres's solver fails",
+         dict(layer_ok, **{"low/m.cpp": "#include <ceres/ceres.h>\n"}), [], [], False),
+        ("the core including LCM fails",
+         dict(layer_ok, **{"low/m.h": "#include <lcm/lcm-cpp.hpp>\n"}), [], [], False),
+        ("the core including Aravis fails",
+         dict(layer_ok, **{"low/m.cpp": "#include <arv.h>\n"}), [], [], False),
+        ("a .cpp in no layer fails",
+         dict(layer_ok, **{"low/stray.cpp": '#include "low/m.h"\n'}), [], [], False),
     ]
     ok = True
     for name, files, allowed, core, expect in cases:

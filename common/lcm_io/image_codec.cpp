@@ -42,13 +42,6 @@ void RequireCompressedSize(const image_t& msg, int64_t width, int64_t height) {
 
 }  // namespace
 
-bool ImageSizeAcceptable(int64_t width, int64_t height) {
-  constexpr int64_t kMaxSide = 1 << 16;
-  constexpr int64_t kMaxPixels = int64_t(1) << 28;
-  return width > 0 && height > 0 && width <= kMaxSide && height <= kMaxSide &&
-         width * height <= kMaxPixels;
-}
-
 void RequireAtMostPixels(int64_t width, int64_t height, int64_t max_pixels) {
   if (width * height > max_pixels)
     Reject("a " + std::to_string(width) + "x" + std::to_string(height) + " image is " +

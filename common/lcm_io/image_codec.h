@@ -6,6 +6,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "models/image_size.h"  // ImageSizeAcceptable
 #include "widestereo/image_t.hpp"
 
 namespace ws {
@@ -19,10 +20,6 @@ enum class Compression { none, jpeg, png };
 
 // Parses "none", "jpeg" or "png"; throws std::invalid_argument otherwise.
 Compression ParseCompression(const std::string& name);
-
-// Whether an image (or a camera) of this size is one we accept anywhere: at
-// most 65536 pixels a side and 2^28 pixels in all.
-bool ImageSizeAcceptable(int64_t width, int64_t height);
 
 // The largest image a process decodes or builds rectification maps for,
 // unless its --max-image-pixels says otherwise: 2^25 pixels (33.5 M), above

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "board/board_spec.h"
+#include "lcm_io/camera_fields.h"
 #include "lcm_io/image_codec.h"
-#include "models/distortion_function.h"
-#include "models/nonradial_field.h"
+#include "models/camera_ranges.h"
 
 namespace ws {
 namespace {
@@ -24,10 +24,6 @@ bool AllFinite(const Range& values) {
   return std::all_of(std::begin(values), std::end(values),
                      [](double v) { return std::isfinite(v); });
 }
-
-constexpr double kMaxFocalPx = 1e6;
-constexpr double kMinFocalPx = 1;  // a focal length under a pixel is no camera's (fx = 1e-300 gave f = 0 px)
-constexpr double kMaxCoefficient = 1e8;
 
 // A row-major 3x3 matrix with orthonormal rows and determinant +1, to 1e-6.
 bool IsRotation(const double* R) {
@@ -88,47 +84,11 @@ void Validate(const widestereo::stereo_corners_t& msg) {
 }
 
 void Validate(const widestereo::camera_calibration_t& msg) {
-  const char* t = "camera_calibration_t";
-  Require(ImageSizeAcceptable(msg.image_width, msg.image_height), t,
-          "bad image size " + std::to_string(msg.image_width) + "x" + std::to_string(msg.image_height));
-  Require(AllFinite(msg.knots) && AllFinite(msg.coeffs), t, "non-finite knots or coefficients");
-  Require(std::all_of(msg.coeffs.begin(), msg.coeffs.end(), [](double c) { return std::abs(c) <= kMaxCoefficient; }),
-          t, "a distortion coefficient beyond 1e8 (no lens's: the model's arithmetic loses every digit)");
-  Require(std::is_sorted(msg.knots.begin(), msg.knots.end()), t, "knots are not non-decreasing");
-  const double intrinsics[] = {msg.fx, msg.fy, msg.cx, msg.cy, msg.p1, msg.p2};
-  Require(AllFinite(intrinsics), t, "non-finite intrinsics");
-  // Bounds no real camera comes near; beyond them the model's arithmetic
-  // loses every digit (a 1e270 px focal length was found by tests/fuzz).
-  Require(msg.fx >= kMinFocalPx && msg.fy >= kMinFocalPx && msg.fx <= kMaxFocalPx && msg.fy <= kMaxFocalPx, t,
-          "fx and fy must be in [1, " + std::to_string(int(kMaxFocalPx)) + "] pixels");
-  Require(msg.cx >= -msg.image_width && msg.cx <= 2.0 * msg.image_width && msg.cy >= -msg.image_height &&
-              msg.cy <= 2.0 * msg.image_height,
-          t, "the principal point (cx, cy) lies more than an image size outside the image");
-  Require(std::abs(msg.p1) <= 1 && std::abs(msg.p2) <= 1, t, "|p1| and |p2| must be at most 1");
-  try {  // every kind of the model table: its knots and number of coefficients
-    DistortionFunction(Distortion{ParseModelKind(msg.model), msg.degree, msg.knots, msg.coeffs});
+  try {
+    CheckCameraRanges(CameraModelFields(msg));
   } catch (const std::invalid_argument& e) {
-    Reject(t, e.what());
+    Reject("camera_calibration_t", e.what());
   }
-  // The non-radial field: none, or a grid of its coefficients over a
-  // rectangle; a correction of more than the focal length is no lens's.
-  Require((msg.field_cols == 0 && msg.field_rows == 0 && msg.nfield == 0) ||
-              (msg.field_cols >= 4 && msg.field_rows >= 4 &&
-               msg.field_cols <= NonRadialField::kMaxControlPoints &&
-               msg.field_rows <= NonRadialField::kMaxControlPoints &&
-               msg.nfield == 2 * msg.field_cols * msg.field_rows),
-          t, "a non-radial field has 4 to 64 control points a side and 2 cols rows coefficients");
-  Require(AllFinite(msg.field_domain) && AllFinite(msg.field_coeffs), t,
-          "non-finite non-radial field");
-  Require(msg.nfield == 0 || (msg.field_domain[1] > msg.field_domain[0] &&
-                              msg.field_domain[3] > msg.field_domain[2]),
-          t, "empty non-radial field rectangle");
-  Require(std::all_of(msg.field_coeffs.begin(), msg.field_coeffs.end(),
-                      [](double c) { return std::abs(c) <= 1; }),
-          t, "a non-radial field coefficient beyond 1 (the focal length)");
-  Require(std::all_of(msg.sensor_tilt, msg.sensor_tilt + 2,
-                      [](double tau) { return std::abs(tau) < kMaxSensorTilt; }),
-          t, "a sensor tilt angle not below kMaxSensorTilt (0.35 rad) or not finite");
 }
 
 void Validate(const widestereo::stereo_calibration_t& msg) {

@@ -8,7 +8,7 @@
 #include <opencv2/core/eigen.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "lcm_io/image_codec.h"
+#include "models/image_size.h"
 
 namespace ws {
 namespace {

@@ -5,11 +5,9 @@
 #include <cmath>
 #include <opencv2/core.hpp>
 
-#include "lcm_io/image_codec.h"
-#include "lcm_io/validate.h"
+#include "models/camera_ranges.h"
 #include "models/model_registry.h"
 #include "rig/camera_fields.h"
-#include "rig/rig_message.h"
 #include "runtime/atomic_file.h"
 
 namespace ws {
@@ -94,12 +92,12 @@ Rig ReadCalibrationFile(const std::string& path) {
   Rig f;
   const ModelKind model = ReadModelKind(in, root, "model");
   f.left = ReadCamera(in, root, "left", &f.left_rms, &f.left_views);
-  // The ranges every way in shares (a STEREO_CALIBRATION message's:
-  // lcm_io/validate.h): fx = 1e-300 would load, and match with f = 0 px.
+  // The ranges every way in shares (a STEREO_CALIBRATION message's too:
+  // models/camera_ranges.h): fx = 1e-300 would load, and match with f = 0 px.
   auto in_range = [&](const CameraModel& camera, const char* name) {
     try {
-      Validate(MessageFromCameraModel(camera, name));
-    } catch (const DecodeError& e) {
+      CheckCameraRanges(camera);
+    } catch (const std::invalid_argument& e) {
       in.Fail(name, e.what());
     }
   };

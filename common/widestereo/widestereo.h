@@ -7,8 +7,10 @@
 //   const ws::Camera left(rig.left);
 //   std::optional<Eigen::Vector3d> ray = left.Unproject({640, 480});
 //
-// Installed, CMake's find_package(widestereo) gives the target
-// widestereo::widestereo and pkg-config the package widestereo.
+// It is the core layer's: installed, CMake's find_package(widestereo
+// COMPONENTS core) gives the target widestereo::core and pkg-config the
+// package widestereo-core, with Eigen, OpenCV and yaml-cpp only. The LCM
+// message types and their codecs are <widestereo/lcm.h>'s.
 #pragma once
 
 #include "interop/any_rig.h"             // LoadAnyRig: mrcal, Kalibr, OpenCV calibrations
@@ -18,5 +20,3 @@
 #include "rectify/rectification.h"       // BuildRectification: pinhole and lat-lon maps
 #include "rig/rig.h"                   // Rig: the calibrated rig, its cameras, R, T
 #include "rig/rig_file.h"              // ReadCalibrationFile, StereoRigFromFile, WriteCalibrationFile
-#include "rig/rig_message.h"           // RigFromMessage, MessageFromRig
-#include "widestereo/messages.hpp"       // every LCM message type (lcm-gen)

@@ -318,8 +318,8 @@ TEST(RigFile, EachDamagedFieldIsNamed) {
 TEST(RigFile, RefusesValuesNoCameraHasAsItsMessageDoes) {
   const std::string path = test::TempDir("calib-file-ranges") + "/calib.yaml";
   const std::vector<std::pair<std::function<void(Rig&)>, std::string>> absurd = {
-      {[](Rig& f) { f.left.fx = 1e-300; }, "left: camera_calibration_t: fx and fy must be in"},
-      {[](Rig& f) { f.right.fy = 1e308; }, "right: camera_calibration_t: fx and fy must be in"},
+      {[](Rig& f) { f.left.fx = 1e-300; }, "left: fx and fy must be in"},
+      {[](Rig& f) { f.right.fy = 1e308; }, "right: fx and fy must be in"},
       {[](Rig& f) { f.left.distortion.coeffs.back() = 1e300; }, "a distortion coefficient beyond 1e8"},
       {[](Rig& f) { f.T.setZero(); }, "stereo.T: a zero baseline"},
   };
