@@ -26,7 +26,7 @@ DEB_PACKAGES := build-essential cmake pkg-config default-jdk-headless \
   libsodium-dev mrcal python3-mrcal python3-opencv pybind11-dev python3-pybind11 python3-numpy \
   python3-pytest libjs-three chromium chromium-driver python3-selenium
 
-.PHONY: deps build built test test-asan fuzz demo spy clean
+.PHONY: deps build build-tests built test test-asan fuzz demo spy clean
 
 deps:
 	@missing=$$(for p in $(DEB_PACKAGES); do \
@@ -37,7 +37,13 @@ deps:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; \
 	else echo "make deps: all $(words $(DEB_PACKAGES)) Debian packages present"; fi
 
+# Everything, the benchmarks (bench/) included; `make test` builds what the
+# tests run and leaves the benchmarks out.
 build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS) --target all bench
+
+build-tests: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS)
 
@@ -48,7 +54,7 @@ built: deps
 	@[ -f $(BUILD)/CMakeCache.txt ] || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	@set -o pipefail; cmake --build $(BUILD) -j$(JOBS) | { grep -v -e 'Built target' -e 'Consolidate compiler' -e 'ing directory' || true; }
 
-test: build
+test: build-tests
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
 
 # The tests of the asan_checks target (tests/CMakeLists.txt: decoders and

@@ -6,7 +6,6 @@
 #include <limits>
 #include <numeric>
 
-#include <Eigen/Dense>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -14,6 +13,7 @@
 
 #include "calib/solver/covariance.h"
 #include "calib/start/pose_fit.h"
+#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 

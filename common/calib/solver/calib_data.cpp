@@ -1,9 +1,10 @@
 #include "calib/solver/calib_data.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 

@@ -1,9 +1,10 @@
 #include "calib/start/homography.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 namespace {

@@ -1,7 +1,8 @@
 #include "calib/start/ray_pose.h"
 
-#include <Eigen/Dense>
 #include <cmath>
+
+#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 
