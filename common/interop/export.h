@@ -36,12 +36,15 @@ struct ExportReport {
 
 // observed_radius: each camera's outermost calibrated corner
 // (CalibrationReportRadii), bounding the lens circle a fitted mrcal spline
-// is fitted within; infinite when unknown. Creates `out` when missing.
+// is fitted within; infinite when unknown. mrcal_nx > 0: the spline's knots
+// across, instead of the first grid within 0.01 px (mrcal_spline_fit.h).
+// Creates `out` when missing.
 // Throws std::invalid_argument when the format cannot hold the calibration
 // at all (a one-camera file has no stereo rectification) and
 // std::runtime_error when a file cannot be written.
 ExportReport ExportCalibration(const Rig& file, ExportFormat format, const std::string& out,
-                               const std::array<double, 2>& observed_radius = {INFINITY, INFINITY});
+                               const std::array<double, 2>& observed_radius = {INFINITY, INFINITY},
+                               int mrcal_nx = 0);
 
 // Each camera's max_observed_radius from the calibration's report
 // (stereo-calibrate --report, or NAME.report.json beside --out): the entry

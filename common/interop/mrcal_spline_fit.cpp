@@ -16,8 +16,11 @@ namespace {
 
 // mrcal's own users' spline densities: its documentation's and tour's
 // knots across (LENSMODEL_SPLINED_STEREOGRAPHIC_order=3_Nx=16_Ny=12 .. Nx=30_Ny=18),
-// tried in turn until one follows the camera within the target.
-constexpr int kKnotsAcross[] = {16, 20, 24, 30};
+// tried in turn until one follows the camera within the target; then,
+// for a lens they cannot follow (a wide pinhole lens's steep corners),
+// finer ones up to 160 across (a 200-degree lens's field at a few degrees
+// to a knot spacing; 800 kB).
+constexpr int kKnotsAcross[] = {16, 20, 24, 30, 40, 48, 64, 96, 128, 160};
 
 // The samples within the lens circle.
 std::vector<FieldSample> Within(const std::vector<FieldSample>& samples, const LensCircle& circle) {
@@ -135,7 +138,7 @@ std::vector<double> Solve(const MrcalSpline& spline, const std::vector<SplineSam
 
 }  // namespace
 
-MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius, double target_px) {
+MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius, double target_px, int nx) {
   const CameraModel& m = camera.model();
   MrcalSplineFit best;
   best.circle = FindLensCircle(camera, observed_radius);
@@ -148,12 +151,16 @@ MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius, doub
     if (Stereographic::Ideal(f.ray.data(), u.data())) u_max = u_max.cwiseMax(u.cwiseAbs());
   }
   const auto in_circle = [&](const Eigen::Vector2d& pixel) { return best.circle.Contains(pixel); };
-  for (int nx : kKnotsAcross) {
-    const MrcalSpline spline(Layout(u_max, nx));
+  std::vector<int> grids(std::begin(kKnotsAcross), std::end(kKnotsAcross));
+  if (nx > 0) grids = {nx};
+  std::optional<MrcalSplineFit::Grid> users;  // the best of mrcal's users' grids
+  for (int across : grids) {
+    const MrcalSpline spline(Layout(u_max, across));
     const std::vector<double> control = Solve(spline, Samples(camera, spline.config(), in_circle));
     const ForeignCamera<MrcalSpline> fitted("mrcal", m.image_width, m.image_height, spline,
                                             {m.fx, m.fy, m.cx, m.cy, 0, 0}, control);
     const FitError error = ProjectionError(fitted, field);
+    if (across <= kMrcalUsersFinestNx && (!users || error.max_px < users->error.max_px)) users = {{across, error}};
     if (best.model.intrinsics.empty() || error.max_px < best.error.max_px) {
       best.model.lensmodel = spline.config().LensModel();
       best.model.intrinsics = {m.fx, m.fy, m.cx, m.cy};
@@ -161,9 +168,11 @@ MrcalSplineFit FitMrcalSpline(const Camera& camera, double observed_radius, doub
       best.model.width = m.image_width;
       best.model.height = m.image_height;
       best.error = error;
+      best.nx = across;
     }
     if (best.error.max_px < target_px) break;
   }
+  if (nx == 0 && best.nx > kMrcalUsersFinestNx) best.users_best = users;
   // The one written, as mrcal reads it, on every pixel within the circle and of the whole field.
   const auto written = MrcalCamera(best.model);
   best.error = ProjectionError(*written, field);

@@ -38,6 +38,11 @@ int main(int argc, char** argv) {
                  "(max_observed_radius), within the model's lens circle, and is not promised beyond it "
                  "(default: over the whole observed field within the lens circle)")
       ->check(CLI::ExistingFile);
+  int mrcal_nx = 0;
+  app.add_option("--mrcal-nx", mrcal_nx,
+                 "mrcal's spline with this many knots across, whatever its error (default: Nx 16, 20, 24 or 30, "
+                 "mrcal's users' grids, the first within 0.01 px; else finer, up to 160)")
+      ->check(CLI::Range(4, 1000));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -50,7 +55,7 @@ int main(int argc, char** argv) {
       if (!file.mono) std::printf(", %.4g (right)", observed[1]);
       std::printf("\n");
     }
-    const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out, observed);
+    const ws::ExportReport report = ws::ExportCalibration(file, ws::ParseExportFormat(format), out, observed, mrcal_nx);
     for (const std::string& line : report.lines) std::printf("%s\n", line.c_str());
     std::printf("%s: %s into %s:", report.exact ? "exact" : "NOT EXACT", format.c_str(), out.c_str());
     for (const std::string& name : report.files) std::printf(" %s", name.c_str());
