@@ -29,26 +29,11 @@ widestereo::camera_calibration_t MessageFromCameraModel(const CameraModel& model
                                                         const std::string& name) {
   widestereo::camera_calibration_t msg{};
   msg.name = name;
-  msg.image_width = model.image_width;
-  msg.image_height = model.image_height;
   msg.model = ModelName(model.distortion.kind);
-  msg.degree = model.distortion.degree;
-  msg.knots = model.distortion.knots;
+  ForEachCameraMessageField(msg, model, [](auto& to, const auto& from) { AssignField(to, from); });
   msg.nknots = int32_t(msg.knots.size());
-  msg.coeffs = model.distortion.coeffs;
   msg.ncoeffs = int32_t(msg.coeffs.size());
-  msg.fx = model.fx;
-  msg.fy = model.fy;
-  msg.cx = model.cx;
-  msg.cy = model.cy;
-  msg.p1 = model.p1;
-  msg.p2 = model.p2;
-  msg.field_cols = model.nonradial.cols;
-  msg.field_rows = model.nonradial.rows;
-  std::copy(model.nonradial.domain.begin(), model.nonradial.domain.end(), msg.field_domain);
-  msg.field_coeffs = model.nonradial.coeffs;
   msg.nfield = int32_t(msg.field_coeffs.size());
-  std::copy(model.nonradial.tilt.begin(), model.nonradial.tilt.end(), msg.sensor_tilt);
   return msg;
 }
 
