@@ -6,10 +6,10 @@
 #include <string>
 
 #include <ceres/ceres.h>
+#include <Eigen/Dense>
 
 #include "models/bspline_basis.h"
 #include "models/distortion_function.h"
-#include "models/eigen_decompositions.h"
 #include "models/monotone_cubic.h"
 
 namespace ws {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include <Eigen/Dense>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -13,7 +14,6 @@
 
 #include "calib/solver/covariance.h"
 #include "calib/start/pose_fit.h"
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 

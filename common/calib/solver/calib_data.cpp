@@ -1,10 +1,9 @@
 #include "calib/solver/calib_data.h"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <set>
-
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 

@@ -1,11 +1,11 @@
 #include "calib/solver/camera_block.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
 #include "calib/solver/nonradial_prior.h"
 #include "calib/solver/smoothness_prior.h"
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 namespace {

@@ -2,12 +2,11 @@
 
 #include <ceres/crs_matrix.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
-
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 

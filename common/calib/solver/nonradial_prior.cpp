@@ -1,12 +1,13 @@
 #include "calib/solver/nonradial_prior.h"
 
 #include "calib/solver/field_blocks.h"
-#include "models/eigen_decompositions.h"
 
 #include <ceres/cost_function.h>
 #include <ceres/jet.h>
 
+#include <Eigen/QR>
 #include <cstdint>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <vector>
 

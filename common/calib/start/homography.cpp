@@ -1,10 +1,9 @@
 #include "calib/start/homography.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 namespace {

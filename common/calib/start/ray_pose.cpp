@@ -1,8 +1,7 @@
 #include "calib/start/ray_pose.h"
 
+#include <Eigen/Dense>
 #include <cmath>
-
-#include "models/eigen_decompositions.h"
 
 namespace ws::calib {
 
