@@ -512,8 +512,12 @@ TEST(HostilePeer, WithTheRigKeyOnlyASignedRemoveTakesAViewOutOfTheCalibration) {
   calibrate->Signal(SIGINT);
   EXPECT_EQ(calibrate->Wait(30).exit_code, 0);
 
-  bus.TakePayloads(ch::kCalibrationViews);
   calibrate = std::make_unique<Command>(argv);
+  // The restarted process's own list: once it says it runs (its signal
+  // handlers are in place), not a list of the one before still on its way.
+  ASSERT_TRUE(bus.ListenUntil(20, [&] { return bus.status() && bus.status()->pid == calibrate->pid(); }))
+      << calibrate->Output();
+  bus.TakePayloads(ch::kCalibrationViews);
   EXPECT_TRUE(bus.ListenUntil(20, [&] { return !listed().empty(); })) << calibrate->Output();
   EXPECT_EQ(listed(), after) << "the views file brought the removed view back";
   calibrate->Signal(SIGINT);
