@@ -8,6 +8,8 @@
 #   bench/calib/folder.sh [CONFIG.yaml...]   (default: config/sim/default.yaml config/sim/fisheye.yaml)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+# The benchmarks are not in `make test`'s build (bench/CMakeLists.txt).
+cmake --build build --target bench -j"$(nproc)" > /dev/null
 OUT=$(mktemp -d /tmp/bench-folder-XXXX)
 CONFIGS=${*:-config/sim/default.yaml config/sim/fisheye.yaml}
 run() {  # LABEL BIN DIR BOARD

@@ -14,6 +14,8 @@
 # knots over fov_x_deg (the lens's horizontal field).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+# The benchmarks are not in `make test`'s build (bench/CMakeLists.txt).
+cmake --build build --target bench -j"$(nproc)" > /dev/null
 BIN=build/bin
 BENCH=build/bench
 DATA=../shared/data

@@ -6,6 +6,8 @@
 # per quarter of the run; everything is kept in logs/soak-<time>/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+# The benchmarks are not in `make test`'s build (bench/CMakeLists.txt).
+cmake --build build --target bench -j"$(nproc)" > /dev/null
 DURATION=${1:-1800}
 RATE=${2:-10}
 RUN=logs/soak-$(date +%Y%m%d-%H%M%S)

@@ -22,6 +22,8 @@
 # slower than the matcher: SETTINGS=stereo-cloud.voxel-leaf=0.02.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+# The benchmarks are not in `make test`'s build (bench/CMakeLists.txt).
+cmake --build build --target bench -j"$(nproc)" > /dev/null
 DURATION=${1:-60}
 RATE=${2:-15}
 OTHER=${3:-}
