@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "board/board_spec.h"
-#include "lcm_io/camera_fields.h"
+#include "lcm_io/camera_message_fields.h"
 #include "lcm_io/image_codec.h"
 #include "models/camera_ranges.h"
 

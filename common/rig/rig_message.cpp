@@ -1,6 +1,6 @@
 #include "rig/rig_message.h"
 
-#include "lcm_io/camera_fields.h"
+#include "lcm_io/camera_message_fields.h"
 
 namespace ws {
 

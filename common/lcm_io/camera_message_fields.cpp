@@ -1,4 +1,4 @@
-#include "lcm_io/camera_fields.h"
+#include "lcm_io/camera_message_fields.h"
 
 namespace ws {
 
