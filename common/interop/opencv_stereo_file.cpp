@@ -8,6 +8,7 @@
 #include "interop/foreign_camera.h"
 #include "interop/opencv_lens.h"
 #include "rig/rig_file.h"
+#include "rig/yaml_reader.h"
 #include "runtime/atomic_file.h"
 #include "runtime/opencv_yaml.h"
 
@@ -25,52 +26,29 @@ void Projections(const Rectification& rect, cv::Mat* P1, cv::Mat* P2) {
   P2->at<double>(0, 3) = -rect.f * rect.baseline;
 }
 
-class Reader {
- public:
-  explicit Reader(std::string path) : path_(std::move(path)) {}
-  [[noreturn]] void Fail(const std::string& field, const std::string& reason) const {
-    throw CalibrationFileError(path_ + ": " + field + ": " + reason);
-  }
-  // A matrix of `rows` x any columns (cols 0) or a given count of values.
-  cv::Mat Matrix(const cv::FileNode& root, const std::string& key, int rows, int cols) const {
-    const cv::FileNode node = root[key];
-    if (node.empty()) Fail(key, "missing");
-    if (!node.isMap() || !node["rows"].isInt() || !node["cols"].isInt() || int(node["rows"]) < 1 ||
-        int(node["cols"]) < 1 || int(node["rows"]) * int(node["cols"]) > 64)
-      Fail(key, "not a small !!opencv-matrix");
-    cv::Mat mat;
-    try {
-      node >> mat;
-    } catch (const cv::Exception&) {
-      Fail(key, "not an !!opencv-matrix");
-    }
-    mat.convertTo(mat, CV_64F);
-    if (mat.channels() != 1 || (rows && mat.rows != rows) || (cols && mat.cols != cols))
-      Fail(key, "not " + std::to_string(rows) + "x" + std::to_string(cols));
-    if (!cv::checkRange(mat)) Fail(key, "not finite");
-    return mat;
-  }
-  int Size(const cv::FileNode& root, const std::string& key) const {
-    const cv::FileNode node = root[key];
-    if (node.empty()) Fail(key, "missing (the image size must be given: image_width, image_height)");
-    if (!node.isInt() || int(node) < 1) Fail(key, "not a positive integer");
-    return int(node);
-  }
+// A camera's image size: its own "missing" says which field OpenCV's
+// calibration files leave out.
+int ImageSize(const YamlReader& in, const cv::FileNode& root, const std::string& key) {
+  if (root[key].empty()) in.Fail(key, "missing (the image size must be given: image_width, image_height)");
+  return in.Int(root, key, key, 1);
+}
 
- private:
-  std::string path_;
-};
+// An rows x cols !!opencv-matrix (as OpenCV writes K, R, T and P).
+cv::Mat Mat(const YamlReader& in, const cv::FileNode& root, const std::string& key, int rows, int cols) {
+  cv::Mat mat;
+  cv::eigen2cv(in.Matrix(root, key, key, rows, cols), mat);
+  return mat;
+}
 
-std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::FileNode& root,
+std::shared_ptr<const CameraProjection> ReadCamera(const YamlReader& in, const cv::FileNode& root,
                                                    const std::string& k_key, const std::string& d_key,
                                                    bool fisheye, int width, int height) {
-  const cv::Mat K = in.Matrix(root, k_key, 3, 3);
-  const cv::Mat D = in.Matrix(root, d_key, 0, 0);
+  const cv::Mat K = Mat(in, root, k_key, 3, 3);
+  // At most OpenCV's longest D, CALIB_TILTED_MODEL's 14.
+  const std::vector<double> d = in.Reals(root, d_key, d_key, 14);
   if (K.at<double>(0, 1) != 0 || K.at<double>(1, 0) != 0 || K.at<double>(2, 0) != 0 ||
       K.at<double>(2, 1) != 0 || K.at<double>(2, 2) != 1)
     in.Fail(k_key, "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
-  if (D.rows != 1 && D.cols != 1) in.Fail(d_key, "not a vector");
-  std::vector<double> d(D.begin<double>(), D.end<double>());
   CameraModel m;
   m.image_width = width;
   m.image_height = height;
@@ -102,11 +80,11 @@ std::shared_ptr<const CameraProjection> ReadCamera(const Reader& in, const cv::F
 // pair its maps make, pinhole cameras of P1 and P2 without distortion in the
 // rectified image, side by side (R = I), the right one at P2's x
 // translation -f baseline.
-AnyRig RectifiedPair(const Reader& in, const cv::FileNode& root) {
-  const cv::Mat P[2] = {in.Matrix(root, "P1", 3, 4), in.Matrix(root, "P2", 3, 4)};
+AnyRig RectifiedPair(const YamlReader& in, const cv::FileNode& root) {
+  const cv::Mat P[2] = {Mat(in, root, "P1", 3, 4), Mat(in, root, "P2", 3, 4)};
   CameraModel m;
-  m.image_width = in.Size(root, "rectified_width");
-  m.image_height = in.Size(root, "rectified_height");
+  m.image_width = ImageSize(in, root, "rectified_width");
+  m.image_height = ImageSize(in, root, "rectified_height");
   m.distortion = Distortion{ModelKind::kPoly6, 0, {}, {0, 0, 0}};
   AnyRig rig;
   rig.format = "opencv";
@@ -164,16 +142,10 @@ void WriteRectificationMaps(const std::string& path, const Rectification& rect) 
 }
 
 AnyRig ReadOpenCvCalibration(const std::string& path) {
-  const Reader in(path);
+  const YamlReader in(path, "with stereo-export or OpenCV's cv::FileStorage");
   cv::FileStorage fs;
-  try {
-    OpenOpenCvYaml(fs, path);
-  } catch (const YamlFileError& e) {
-    in.Fail("(file)", e.what());
-  }
-  const cv::FileNode root = fs.root();
-  if (!root.isMap()) in.Fail("(file)", "not a map of fields");
-  const int width = in.Size(root, "image_width"), height = in.Size(root, "image_height");
+  const cv::FileNode root = in.Open(fs, kMaxYamlFileBytes);
+  const int width = ImageSize(in, root, "image_width"), height = ImageSize(in, root, "image_height");
   std::string model = "pinhole";
   if (!root["distortion_model"].empty()) {
     if (!root["distortion_model"].isString()) in.Fail("distortion_model", "not a string");
@@ -193,8 +165,8 @@ AnyRig ReadOpenCvCalibration(const std::string& path) {
   const std::string k = root["K1"].empty() && !root["M1"].empty() ? "M" : "K";
   rig.left = ReadCamera(in, root, k + "1", "D1", fisheye, width, height);
   rig.right = ReadCamera(in, root, k + "2", "D2", fisheye, width, height);
-  cv::cv2eigen(in.Matrix(root, "R", 3, 3), rig.R);
-  cv::cv2eigen(in.Matrix(root, "T", 3, 1), rig.T);
+  rig.R = in.Matrix(root, "R", "R", 3, 3);
+  rig.T = in.Matrix(root, "T", "T", 3, 1);
   if (!IsRotation(rig.R))
     in.Fail("R", "not a rotation");
   return rig;

@@ -133,6 +133,9 @@ TEST(OpenCvCalibration, ReadsOneCameraAndRefusesWhatItCannotHold) {
       {header + size + K + D("0, 0, 0", 3), "distortion_coefficients: 3 coefficients"},
       {header + size + "distortion_model: kannala\n" + K + D("0, 0, 0, 0", 4), "distortion_model: 'kannala'"},
       {header + size + K, "distortion_coefficients: missing"},
+      {header + size + K + D("0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0", 15),
+       "distortion_coefficients: more than 14 numbers"},
+      {header + size + "camera_matrix: [300, 0, 400]\n" + D("0, 0, 0, 0", 4), "camera_matrix: "},
   };
   for (const auto& [text, expected] : cases) {
     const std::string message = Refusal([&] { LoadAnyRig(Write("bad.yml", text)); });
