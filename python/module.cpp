@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -13,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "interop/any_rig.h"
+#include "models/camera_field_table.h"
 #include "numpy_mat.h"
 #include "rectify/pair_triangulation.h"
 #include "rectify/ray_triangulation.h"
@@ -70,28 +72,29 @@ struct PyCamera {
       out.mutable_data()[i] = camera->InField(Eigen::Map<const Eigen::Vector3d>(rays.data() + 3 * i));
     return out;
   }
-  // widestereo's parameters (the calibration file's fields), or None.
+  // widestereo's parameters, or None: the calibration file's fields, as
+  // models/camera_field_table.h names them (fx fy cx cy apart).
   py::object Parameters() const {
     const Camera* own = camera->AsCamera();
     if (!own) return py::none();
-    const CameraModel& m = own->model();
+    return Fields([&](auto&& visit) { ForEachCameraField(own->model(), visit); });
+  }
+
+ private:
+  // The fields a visit of the camera table gives, as a dict: the model by
+  // its name, the non-radial part a dict of its own.
+  template <class ForEach>
+  static py::dict Fields(ForEach&& for_each) {
     py::dict d;
-    d["model"] = ModelName(m.distortion.kind);
-    d["image_width"] = m.image_width, d["image_height"] = m.image_height;
-    d["fx"] = m.fx, d["fy"] = m.fy, d["cx"] = m.cx, d["cy"] = m.cy, d["p1"] = m.p1, d["p2"] = m.p2;
-    d["degree"] = m.distortion.degree;
-    d["knots"] = m.distortion.knots;
-    d["coeffs"] = m.distortion.coeffs;
-    if (!m.nonradial.empty()) {
-      py::dict field;  // the calibration file's nonradial map, tilt included
-      if (m.nonradial.cols > 0) {
-        field["cols"] = m.nonradial.cols, field["rows"] = m.nonradial.rows;
-        field["domain"] = m.nonradial.domain;
-        field["coeffs"] = m.nonradial.coeffs;
-      }
-      if (m.nonradial.tilted()) field["tilt"] = m.nonradial.tilt;
-      d["nonradial"] = field;
-    }
+    for_each([&](const std::string& key, const auto& value) {
+      using T = std::decay_t<decltype(value)>;
+      if constexpr (std::is_same_v<T, NonRadial>)
+        d[key.c_str()] = Fields([&](auto&& visit) { ForEachNonRadialField(value, visit); });
+      else if constexpr (std::is_same_v<T, ModelKind>)
+        d[key.c_str()] = ModelName(value);
+      else
+        d[key.c_str()] = value;
+    });
     return d;
   }
 };

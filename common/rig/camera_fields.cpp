@@ -1,8 +1,11 @@
 #include "rig/camera_fields.h"
 
 #include <algorithm>
+#include <iterator>
+#include <type_traits>
 
 #include "models/bspline_basis.h"
+#include "models/camera_field_table.h"
 #include "models/model_registry.h"
 #include "models/nonradial_field.h"
 
@@ -18,6 +21,35 @@ void WriteVector(cv::FileStorage& fs, const std::string& key, const std::vector<
   } else {
     fs << cv::Mat(1, int(values.size()), CV_64F, const_cast<double*>(values.data()));
   }
+}
+
+// The fields `for_each` visits (camera_field_table.h) into the map open in
+// fs: fx, fy, cx, cy as OpenCV's camera_matrix, the model by its name, every
+// vector a matrix (WriteVector), the non-radial part a map of its own.
+template <class ForEach>
+void WriteFields(cv::FileStorage& fs, ForEach&& for_each) {
+  const std::string intrinsics[] = {"fx", "fy", "cx", "cy"};
+  double K[4] = {};  // fx, fy, cx, cy, written as the matrix once cy comes
+  for_each([&](const std::string& key, const auto& value) {
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_same_v<T, NonRadial>) {
+      fs << key << "{";
+      WriteFields(fs, [&](auto&& visit) { ForEachNonRadialField(value, visit); });
+      fs << "}";
+    } else if constexpr (std::is_same_v<T, ModelKind>) {
+      fs << key << ModelName(value);
+    } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+      WriteVector(fs, key, value);
+    } else if constexpr (std::is_class_v<T>) {  // a std::array
+      fs << key << std::vector<double>(value.begin(), value.end());
+    } else if (const auto* i = std::find(std::begin(intrinsics), std::end(intrinsics), key);
+               i != std::end(intrinsics)) {
+      K[i - intrinsics] = double(value);
+      if (*i == "cy") fs << "camera_matrix" << cv::Mat(cv::Matx33d(K[0], 0, K[2], 0, K[1], K[3], 0, 0, 1));
+    } else {
+      fs << key << value;
+    }
+  });
 }
 
 // A camera's non-radial field: its grid (4 to 64 control points a side),
@@ -53,23 +85,7 @@ NonRadial ReadNonRadial(const YamlReader& in, const cv::FileNode& node, const st
 }  // namespace
 
 void WriteCameraFields(cv::FileStorage& fs, const CameraModel& m) {
-  fs << "image_width" << m.image_width << "image_height" << m.image_height;
-  fs << "camera_matrix" << cv::Mat(cv::Matx33d(m.fx, 0, m.cx, 0, m.fy, m.cy, 0, 0, 1));
-  const ModelTraits& traits = Traits(m.distortion.kind);
-  fs << "model" << traits.name << "degree" << m.distortion.degree;
-  if (traits.spline) WriteVector(fs, "knots", m.distortion.knots);
-  WriteVector(fs, traits.coeff_key, m.distortion.coeffs);
-  fs << "p1" << m.p1 << "p2" << m.p2;
-  if (!m.nonradial.empty()) {
-    const NonRadial& f = m.nonradial;
-    fs << "nonradial" << "{";
-    if (f.cols > 0) {
-      fs << "cols" << f.cols << "rows" << f.rows << "domain" << std::vector<double>(f.domain.begin(), f.domain.end());
-      WriteVector(fs, "coeffs", f.coeffs);
-    }
-    if (f.tilted()) fs << "tilt" << std::vector<double>(f.tilt.begin(), f.tilt.end());
-    fs << "}";
-  }
+  WriteFields(fs, [&](auto&& visit) { ForEachCameraField(m, visit); });
 }
 
 CameraModel ReadCameraFields(const YamlReader& in, const cv::FileNode& node, const std::string& at) {

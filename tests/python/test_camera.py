@@ -124,3 +124,12 @@ def test_in_field_of_a_polynomial_is_what_its_image_holds(reference, kind):
     outside = camera.unproject(np.array([[-500.0, -500.0], [w + 300.0, h / 2]]))
     assert not camera.in_field(outside[~np.isnan(outside).any(axis=1)]).any()
     assert camera.in_field(np.array([[0.0, 0.0, 1.0]])).all()
+
+
+def test_parameters_are_the_calibration_files_fields(sim_calibration):
+    parameters = widestereo.Camera.load(sim_calibration, "left").parameters
+    assert parameters["model"] == "bspline" and "alpha" in parameters and "knots" in parameters
+    assert "coeffs" not in parameters  # the file names a model's coefficients by its own key
+    left = open(sim_calibration).read().split("\nright:")[0]
+    for key in set(parameters) - {"fx", "fy", "cx", "cy"}:  # the file holds those as camera_matrix
+        assert f"\n   {key}:" in left, key

@@ -17,6 +17,7 @@
 #include "calib/node/solved_rig.h"
 #include "models/model_registry.h"
 #include "opencv_fisheye.h"
+#include "models/camera_field_table.h"
 #include "rig/rig_file.h"
 #include "runtime/json_file.h"
 #include "synthetic_rig.h"
@@ -161,17 +162,29 @@ TEST(RigFile, ASensorTiltReadsBackBitForBit) {
   EXPECT_EQ(read.left.nonradial.cols, 0);
 }
 
-// The report calls a model's coefficients what the calibration file does
-// (models/model_kind.h, coeff_key) and holds the same numbers under it, and
-// the same knots: a solve's result of every model written both ways as
+// The report names a camera's fields as the calibration file does (the one
+// table, models/camera_field_table.h; the file holds fx fy cx cy as
+// camera_matrix), a model's coefficients under its coeff_key
+// (models/model_kind.h), and holds the same numbers under them: a solve's result of every model written both ways as
 // stereo-calibrate writes them (calib/node/solved_rig.h's ToRig and the file;
 // calib/node/report.h's StereoReport and runtime/json_file.h), then read back.
 TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
   const std::string dir = test::TempDir("rig-file-keys");
+  // Every model's sample; bspline_theta's left camera with a field and a tilt.
+  auto sample_of = [](ModelKind model) {
+    Rig sample = SampleRig(model);
+    if (model == ModelKind::kBsplineTheta)
+      sample.left.nonradial = NonRadial{4, 4, {-1.5, 1.5, -1, 1}, std::vector<double>(32, 1e-4), {0.01, -0.02}};
+    return sample;
+  };
   std::set<std::string> keys;
-  for (const ModelKind model : ModelKinds()) keys.insert(Traits(model).coeff_key);
+  for (const ModelKind model : ModelKinds())
+    ForEachCameraField(sample_of(model).left, [&](const std::string& key, const auto&) {
+      if (key != "fx" && key != "fy" && key != "cx" && key != "cy") keys.insert(key);
+    });
+  ASSERT_TRUE(keys.count("nonradial") && keys.count("knots") && keys.count("alpha") && keys.count("k"));
   for (const ModelKind model : ModelKinds()) {
-    const Rig sample = SampleRig(model);
+    const Rig sample = sample_of(model);
     StereoCalibration result;
     result.model = model;
     result.left.name = "left";
@@ -199,12 +212,15 @@ TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
       EXPECT_EQ(in_report["model"], static_cast<std::string>(in_file["model"])) << at;
       for (const std::string& key : keys)
         EXPECT_EQ(!in_file[key].empty(), in_report.contains(key)) << at << ": " << key;
+    if (in_report.contains("nonradial"))
+      for (const char* key : {"cols", "rows", "domain", "coeffs", "tilt"})
+        EXPECT_EQ(!in_file["nonradial"][key].empty(), in_report["nonradial"].contains(key)) << at << ": " << key;
       const std::string key = Traits(model).coeff_key;
       ASSERT_TRUE(in_report.contains(key)) << at;
       const std::vector<double> coeffs = VectorOf(in_file[key]);
       EXPECT_EQ(in_report[key].get<std::vector<double>>(), coeffs) << at;
       EXPECT_EQ(coeffs, camera.distortion.coeffs) << at;
-      EXPECT_EQ(in_report["knots"].get<std::vector<double>>(), camera.distortion.knots) << at;
+      EXPECT_EQ(in_report.value("knots", std::vector<double>{}), camera.distortion.knots) << at;
       EXPECT_EQ(in_report["degree"].get<int>(), static_cast<int>(in_file["degree"])) << at;
     }
   }

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include "calib/node/table2.h"
+#include "models/camera_field_table.h"
 #include "models/model_registry.h"
 
 namespace ws::calib {
@@ -13,6 +15,26 @@ Json Numbers(const std::vector<double>& values) {
   Json out = Json::array();
   for (double v : values) out.push_back(v);
   return out;
+}
+
+// The fields a visit of the camera table (models/camera_field_table.h)
+// gives, as a JSON object: the model by its name, the non-radial part an
+// object of its own.
+template <class ForEach>
+Json Fields(ForEach&& for_each) {
+  Json j = Json::object();
+  for_each([&](const std::string& key, const auto& value) {
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_same_v<T, NonRadial>)
+      j[key] = Fields([&](auto&& visit) { ForEachNonRadialField(value, visit); });
+    else if constexpr (std::is_same_v<T, ModelKind>)
+      j[key] = ModelName(value);
+    else if constexpr (std::is_class_v<T>)  // a vector or an array of numbers
+      j[key] = Numbers(std::vector<double>(value.begin(), value.end()));
+    else
+      j[key] = value;
+  });
+  return j;
 }
 
 // Per-view RMS with null for views not used.
@@ -81,21 +103,11 @@ Json CameraReport(const CameraCalibration& c) {
   j["views"] = c.views;
   j["points"] = c.points;
   j["outliers"] = c.outliers;
-  j["image_size"] = {m.image_width, m.image_height};
-  j["fx"] = m.fx;
-  j["fy"] = m.fy;
-  j["cx"] = m.cx;
-  j["cy"] = m.cy;
-  j["p1"] = m.p1;
-  j["p2"] = m.p2;
-  j["knots"] = Numbers(m.distortion.knots);
-  j[Traits(m.distortion.kind).coeff_key] = Numbers(m.distortion.coeffs);
+  j.update(Fields([&](auto&& visit) { ForEachCameraField(m, visit); }));
   Json stddev = Json::object();
   for (size_t i = 0; i < c.stddev.size() && i < c.param_names.size(); ++i)
     stddev[c.param_names[i]] = c.stddev[i];
   j["stddev"] = stddev;
-  j["model"] = ModelName(m.distortion.kind);
-  j["degree"] = m.distortion.degree;
   j["invalid_points"] = c.invalid_points;
   j["view_rms"] = ViewRmsJson(c.view_rms);
   j["skipped"] = c.skipped;
@@ -111,13 +123,6 @@ Json CameraReport(const CameraCalibration& c) {
       warp["stddev_y2_mm"] = 1e3 * c.board_warp_stddev[1];
     }
     j["board_warp"] = warp;
-  }
-  if (!m.nonradial.empty()) {  // models/nonradial_field.h
-    const NonRadial& f = m.nonradial;
-    j["nonradial"] = {{"cols", f.cols}, {"rows", f.rows},
-                      {"domain", Numbers(std::vector<double>(f.domain.begin(), f.domain.end()))},
-                      {"coeffs", Numbers(f.coeffs)},
-                      {"tilt", Numbers(std::vector<double>(f.tilt.begin(), f.tilt.end()))}};
   }
   Json field_curve = Json::array();
   for (const FieldTrial& t : c.field_curve)

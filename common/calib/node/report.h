@@ -3,13 +3,16 @@
 //
 //   {"model": "bspline",
 //    "cameras": [{"name": "left", "rms_px": 0.11, "views": 30, "points": 1620, "outliers": 0,
-//                 "image_size": [1280, 960], "fx": ..., "fy": ..., "cx": ..., "cy": ...,
-//                 "p1": ..., "p2": ..., "knots": [...], "alpha": [...] (or "k": [...]),
+//                 and the camera's fields as models/camera_field_table.h names them:
+//                 "image_width": 1280, "image_height": 960, "fx": ..., "fy": ..., "cx": ...,
+//                 "cy": ..., "model": "bspline", "degree": 3, "knots": [...] (the splines),
+//                 "alpha": [...] (or "k": [...]), "p1": ..., "p2": ..., "nonradial": {...}
+//                 (with a field or a tilt),
 //                 "stddev": {"fx": ..., ...}, ...}, {"name": "right", ...}],
 //    "stereo": {"rms_px": ..., "R": [9, row-major], "T": [3], "baseline_m": ..., ...},
 //    "solve_seconds": ...}
 //
-// Besides those keys each camera has "degree", "view_rms" (per input view,
+// Besides those keys each camera has "view_rms" (per input view,
 // null where the view was not used), "invalid_points", "skipped",
 // "init_method", "max_observed_radius" and "residual_grid" (rows, cols,
 // count, mean_x, mean_y, rms per cell, row-major); "stereo" has "views",
@@ -24,9 +27,8 @@
 // "y2_mm", "centre_mm", "stddev_x2_mm", "stddev_y2_mm"}; with --board-warp
 // auto, "board_warp_choice" {"kept", "flat_heldout_rms_px",
 // "warped_heldout_rms_px", "x2_mm", "y2_mm", "stddev_x2_mm", "stddev_y2_mm"}
-// (the bow this camera's views estimated, kept or not). With a non-radial
-// part (models/nonradial_field.h) "nonradial" {"cols", "rows", "domain",
-// "coeffs", "tilt"}; "field_curve" (--nonradial auto: none, the tilt, then
+// (the bow this camera's views estimated, kept or not). "field_curve"
+// (--nonradial auto: none, the tilt, then
 // every field tried, {"tilt", "cols", "rows", "smoothness", "rms_px",
 // "heldout_rms_px", "fold_rms_px"};
 // empty otherwise) and "field_chosen" (its index).
