@@ -212,9 +212,10 @@ TEST(RigFile, TheReportNamesEveryModelsCoefficientsAsTheFileDoes) {
       EXPECT_EQ(in_report["model"], static_cast<std::string>(in_file["model"])) << at;
       for (const std::string& key : keys)
         EXPECT_EQ(!in_file[key].empty(), in_report.contains(key)) << at << ": " << key;
-    if (in_report.contains("nonradial"))
-      for (const char* key : {"cols", "rows", "domain", "coeffs", "tilt"})
-        EXPECT_EQ(!in_file["nonradial"][key].empty(), in_report["nonradial"].contains(key)) << at << ": " << key;
+      if (in_report.contains("nonradial")) {
+        for (const char* key : {"cols", "rows", "domain", "coeffs", "tilt"})
+          EXPECT_EQ(!in_file["nonradial"][key].empty(), in_report["nonradial"].contains(key)) << at << ": " << key;
+      }
       const std::string key = Traits(model).coeff_key;
       ASSERT_TRUE(in_report.contains(key)) << at;
       const std::vector<double> coeffs = VectorOf(in_file[key]);
