@@ -58,13 +58,23 @@ std::string Described(const CameraModel& m) {
                                                                 : "");
 }
 
-// Where the spline was fitted: "within the lens circle (r = 480.2 px about
-// the principal point)", or "(all of it: ...)" when the model has none.
+// Where a fitted model was fitted: "within the lens circle (r = 480.2 px
+// about the principal point)", or "(all of it: ...)" when the model has none.
 std::string FittedRegion(const LensCircle& circle) {
   if (!std::isfinite(circle.radius)) return "(all of it: the model does not fold, no lens circle)";
   char text[96];
   std::snprintf(text, sizeof text, "within the lens circle (r = %.1f px about the principal point)", circle.radius);
   return text;
+}
+
+// A fit's errors, where it was fitted and over the whole observed field:
+// "1.20 px (RMS 0.31 px) over the 5120 pixels of the observed field within
+// the lens circle (...), where it was fitted; 3.4 px (RMS 0.5 px) over all
+// 6400 of the observed field".
+std::string FitErrors(const FitError& fitted, const LensCircle& circle, const FitError& image) {
+  return Px(fitted.max_px) + " (RMS " + Px(fitted.rms_px) + ") over the " + std::to_string(fitted.points) +
+         " pixels of the observed field " + FittedRegion(circle) + ", where it was fitted; " + Px(image.max_px) +
+         " (RMS " + Px(image.rms_px) + ") over all " + std::to_string(image.points) + " of the observed field";
 }
 
 void RequireStereo(const Rig& file, const std::string& why) {
@@ -157,7 +167,8 @@ void Ros(const Rig& file, const std::string& out, ExportReport* report) {
   }
 }
 
-void Kalibr(const Rig& file, const std::string& out, ExportReport* report) {
+void Kalibr(const Rig& file, const std::string& out, const std::array<double, 2>& observed_radius,
+            ExportReport* report) {
   const Cameras c = Of(file);
   std::vector<CameraModel> fitted(c.models.size());
   std::vector<KalibrCamera> cameras;
@@ -171,15 +182,16 @@ void Kalibr(const Rig& file, const std::string& out, ExportReport* report) {
     }
     const Camera camera(m);
     const std::string kind = camera.IsAngleModel() ? "kb4" : "radtan";
-    const ModelFit fit = FitSimplerModel(camera, kind);
+    const LensCircle circle = FindLensCircle(camera, observed_radius[i]);
+    const ModelFit fit = FitSimplerModel(camera, kind, circle);
     fitted[i] = fit.model;
     cameras.push_back({&fitted[i], *ExactTargetModel(fit.model, ExportFormat::kKalibr)});
     report->exact = false;
     report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
     const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                              " is not a Kalibr model: wrote the closest pinhole-" +
-                             cameras.back().distortion.name + ", off by up to " + Px(fit.error.max_px) +
-                             " (RMS " + Px(fit.error.rms_px) + ") over the observed field";
+                             cameras.back().distortion.name + ", off by up to " +
+                             FitErrors(fit.error, circle, fit.image_error);
     report->lines.push_back(what);
     comments.push_back("NOT EXACT: " + what);
   }
@@ -220,12 +232,8 @@ void Mrcal(const Rig& file, const std::string& out, const std::array<double, 2>&
       report->max_error_px = std::max(report->max_error_px, fit.error.max_px);
       const std::string what = std::string(kNames[i]) + ": " + Described(m) +
                                " is not an mrcal model: wrote a fitted " + model.lensmodel +
-                               ", worst projection difference " + Px(fit.error.max_px) + " (RMS " +
-                               Px(fit.error.rms_px) + ") over the " + std::to_string(fit.error.points) +
-                               " pixels of the observed field " + FittedRegion(fit.circle) + ", where it was fitted; " +
-                               Px(fit.image_error.max_px) + " (RMS " + Px(fit.image_error.rms_px) +
-                               ") over all " + std::to_string(fit.image_error.points) + " of the observed field" +
-                               FinerGrid(fit);
+                               ", worst projection difference " +
+                               FitErrors(fit.error, fit.circle, fit.image_error) + FinerGrid(fit);
       report->lines.push_back(what);
       comments.push_back("NOT EXACT: " + what);
     }
@@ -255,7 +263,7 @@ ExportReport ExportCalibration(const Rig& file, ExportFormat format, const std::
   switch (format) {
     case ExportFormat::kOpenCv: OpenCv(file, out, &report); break;
     case ExportFormat::kRos: Ros(file, out, &report); break;
-    case ExportFormat::kKalibr: Kalibr(file, out, &report); break;
+    case ExportFormat::kKalibr: Kalibr(file, out, observed_radius, &report); break;
     case ExportFormat::kMrcal: Mrcal(file, out, observed_radius, mrcal_nx, &report); break;
   }
   set.Commit();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace ws {
 
@@ -28,6 +29,13 @@ LensCircle FindLensCircle(const Camera& camera, double observed_radius) {
     }
   }
   return circle;
+}
+
+std::vector<FieldSample> Within(const std::vector<FieldSample>& samples, const LensCircle& circle) {
+  std::vector<FieldSample> inside;
+  std::copy_if(samples.begin(), samples.end(), std::back_inserter(inside),
+               [&](const FieldSample& s) { return circle.Contains(s.pixel); });
+  return inside;
 }
 
 }  // namespace ws

@@ -14,9 +14,11 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "interop/field_samples.h"
 #include "models/camera_model.h"
 
 namespace ws {
@@ -34,5 +36,8 @@ struct LensCircle {
 // outermost inlier corner), the ray goes past that: the circle is then the
 // smaller of the fold and the calibrated field.
 LensCircle FindLensCircle(const Camera& camera, double observed_radius = INFINITY);
+
+// The samples within the circle.
+std::vector<FieldSample> Within(const std::vector<FieldSample>& samples, const LensCircle& circle);
 
 }  // namespace ws

@@ -29,11 +29,11 @@ struct PixelResidual {
 // Fits Model's N coefficients and the intrinsics, the intrinsics at
 // `fixed_intrinsics` and the coefficients at `fixed_coeffs` held at 0.
 template <class Model, int N>
-ModelFit Fit(const Camera& camera, const Model& model, const std::vector<int>& fixed_intrinsics,
-             const std::vector<int>& fixed_coeffs) {
+ModelFit Fit(const Camera& camera, const LensCircle& circle, const Model& model,
+             const std::vector<int>& fixed_intrinsics, const std::vector<int>& fixed_coeffs) {
   const CameraModel& source = camera.model();
-  const std::vector<FieldSample> samples = FieldSamples(camera, 8.0);
-  if (samples.empty()) throw std::invalid_argument("the camera's observed field is empty");
+  const std::vector<FieldSample> samples = Within(FieldSamples(camera, 8.0), circle);
+  if (samples.empty()) throw std::invalid_argument("the camera's observed field within its lens circle is empty");
   double intrinsics[kNumIntrinsics] = {source.fx, source.fy, source.cx, source.cy, 0, 0};
   double coeffs[N] = {};
   ceres::Problem problem;
@@ -58,15 +58,18 @@ ModelFit Fit(const Camera& camera, const Model& model, const std::vector<int>& f
   fit.model.cx = intrinsics[kCx], fit.model.cy = intrinsics[kCy];
   fit.model.p1 = intrinsics[kP1], fit.model.p2 = intrinsics[kP2];
   fit.model.distortion = model.ToData(coeffs);
-  fit.error = ProjectionError(WidestereoProjection(fit.model), FieldSamples(camera, 4.0));
+  const WidestereoProjection fitted(fit.model);
+  const std::vector<FieldSample> image = FieldSamples(camera, 4.0);
+  fit.error = ProjectionError(fitted, Within(image, circle));
+  fit.image_error = ProjectionError(fitted, image);
   return fit;
 }
 
 }  // namespace
 
-ModelFit FitSimplerModel(const Camera& camera, const std::string& kind) {
-  if (kind == "kb4") return Fit<Kb4Distortion, 4>(camera, Kb4Distortion(), {kP1, kP2}, {});
-  if (kind == "radtan") return Fit<PolyDistortion<3>, 3>(camera, PolyDistortion<3>(), {}, {2});
+ModelFit FitSimplerModel(const Camera& camera, const std::string& kind, const LensCircle& circle) {
+  if (kind == "kb4") return Fit<Kb4Distortion, 4>(camera, circle, Kb4Distortion(), {kP1, kP2}, {});
+  if (kind == "radtan") return Fit<PolyDistortion<3>, 3>(camera, circle, PolyDistortion<3>(), {}, {2});
   throw std::invalid_argument("no fit to '" + kind + "' (kb4, radtan)");
 }
 

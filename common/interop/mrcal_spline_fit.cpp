@@ -22,14 +22,6 @@ namespace {
 // to a knot spacing; 800 kB).
 constexpr int kKnotsAcross[] = {16, 20, 24, 30, 40, 48, 64, 96, 128, 160};
 
-// The samples within the lens circle.
-std::vector<FieldSample> Within(const std::vector<FieldSample>& samples, const LensCircle& circle) {
-  std::vector<FieldSample> inside;
-  std::copy_if(samples.begin(), samples.end(), std::back_inserter(inside),
-               [&](const FieldSample& s) { return circle.Contains(s.pixel); });
-  return inside;
-}
-
 // The fit's samples in stereographic u, with the delta each needs.
 struct SplineSample {
   double u[2];

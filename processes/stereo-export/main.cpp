@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
       "rectification's cv::remap tables), ros (left.yaml, right.yaml: camera_info), kalibr "
       "(camchain.yaml), mrcal (camera-0.cameramodel, camera-1.cameramodel). A camera whose model "
       "the format has is written exactly; otherwise the export says so, in the files and here, "
-      "and prints the error of what it wrote instead (the maps; Kalibr's closest model; mrcal's "
-      "LENSMODEL_SPLINED_STEREOGRAPHIC fitted within the lens circle, docs/export.md)."};
+      "and prints the error of what it wrote instead (the maps; Kalibr's closest model and mrcal's "
+      "LENSMODEL_SPLINED_STEREOGRAPHIC, both fitted within the lens circle, docs/export.md)."};
   std::string in, format, out;
   app.add_option("calibration", in, "the calibration file")->required()->check(CLI::ExistingFile);
   app.add_option("--to", format, "opencv-stereo, ros, kalibr or mrcal")
@@ -34,7 +34,8 @@ int main(int argc, char** argv) {
   std::string calibration_report;
   app.add_option("--report", calibration_report,
                  "the calibration's report (stereo-calibrate --report, or NAME.report.json beside its --out): "
-                 "mrcal's spline is then fitted only out to each camera's outermost calibrated corner "
+                 "mrcal's spline and Kalibr's closest model are then fitted only out to each camera's "
+                 "outermost calibrated corner "
                  "(max_observed_radius), within the model's lens circle, and is not promised beyond it "
                  "(default: over the whole observed field within the lens circle)")
       ->check(CLI::ExistingFile);

@@ -142,8 +142,9 @@ def test_a_tilted_poly6_exports_to_opencv_and_ros_exactly(kinds, tmp_path):
 
 
 def fitted_circles(text):
-    """The lens circle radius each camera's mrcal spline was fitted within, as
-    stereo-export printed it (inf: the model does not fold)."""
+    """The lens circle radius each camera's fitted model (mrcal's spline,
+    Kalibr's closest model) was fitted within, as stereo-export printed it
+    (inf: the model does not fold)."""
     found = re.findall(r"^(left|right): .*?(?:lens circle \(r = ([0-9.]+) px|no lens circle)", text, re.M)
     return {side: float(r) if r else np.inf for side, r in found}
 
@@ -192,7 +193,8 @@ def test_every_export_loads_back(kinds, kind, fmt, tmp_path):
     for side in ("left", "right"):
         camera = getattr(rig, side)
         pixels, rays = image_pixels(camera, 8)
-        if fmt == "mrcal" and error > 0:  # where the spline was fitted
+        if fmt in ("mrcal", "kalibr") and error > 0:  # where the model was fitted
+            assert side in circles, text
             inside = np.linalg.norm(pixels - [camera.parameters["cx"], camera.parameters["cy"]], axis=1) < circles.get(side, np.inf) - 0.1
             pixels, rays = pixels[inside], rays[inside]
         worst = np.linalg.norm(getattr(back, side).project(rays) - camera.project(rays), axis=1).max()
