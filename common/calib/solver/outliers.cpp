@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "calib/solver/corner_noise.h"
 
@@ -28,15 +29,16 @@ double DetectionNoise(const Problem& problem, int camera) {
 }
 
 // Decides anew which of camera `camera`'s corners are outliers (their
-// inlier flag cleared) and which are not (options.h, OutlierRule); returns
-// how many flags changed.
-int RejectOutliers(Problem& problem, int camera, const RejectionSettings& options) {
+// inlier flag cleared) and which are not (options.h, OutlierRule), its
+// views' detection noise `noise_px` (DetectionNoise: the same in every
+// round, the corners do not move); returns how many flags changed.
+int RejectOutliers(Problem& problem, int camera, const RejectionSettings& options, double noise_px) {
   std::vector<CornerResidual> residuals = Residuals(problem, camera);
   double threshold = 0;
   if (options.outliers == OutlierRule::kSigma) {
     threshold = std::max(options.outlier_sigma * RobustSigma(residuals), options.outlier_min_px);
   } else {
-    const double sigma = std::max(RmsSigma(residuals), DetectionNoise(problem, camera));
+    const double sigma = std::max(RmsSigma(residuals), noise_px);
     const double alarm = Level(sigma, residuals.size(), kAlarmCorners);
     const bool alarmed = std::any_of(residuals.begin(), residuals.end(), [&](const auto& r) {
       return !r.outlier && !(r.residual.norm() <= alarm);
@@ -71,10 +73,14 @@ RejectionSettings OnTheCorners(const CalibrationOptions& options, const std::str
 SolveOutcome SolveWithRejection(Problem& problem, const RejectionSettings& settings) {
   SolveOutcome outcome = Solve(problem, settings.solve);
   const bool reject = settings.outliers != OutlierRule::kOff;
+  std::vector<double> noise_px(problem.cameras.size(), 0.0);
+  if (settings.outliers == OutlierRule::kChauvenet)
+    for (size_t c = 0; c < problem.cameras.size(); ++c)
+      if (!problem.cameras[c].fixed) noise_px[c] = DetectionNoise(problem, int(c));
   for (int round = 0; reject && round < kMaxRounds; ++round) {
     int changed = 0;
     for (size_t c = 0; c < problem.cameras.size(); ++c)
-      if (!problem.cameras[c].fixed) changed += RejectOutliers(problem, int(c), settings);
+      if (!problem.cameras[c].fixed) changed += RejectOutliers(problem, int(c), settings, noise_px[c]);
     if (changed == 0) break;
     outcome = Solve(problem, settings.solve);
   }
