@@ -26,13 +26,13 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   decode.reset();
   std::optional<StageTimer> rectify;
-  if (times) rectify.emplace(*times, "rectify");
+  if (times) rectify.emplace(*times, "rectify", StageTimer::Cpu::process);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
   rectify.reset();
   std::optional<StageTimer> match;
-  if (times) match.emplace(*times, "match");
+  if (times) match.emplace(*times, "match", StageTimer::Cpu::process);
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
   cv::Mat in_region = matched.disparity(region);  // matched straight into the whole image's
   matcher.ComputeInto(matched.left_rect(region), matched.right_rect(region), &in_region,
@@ -239,7 +239,7 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
     Outgoing outgoing{RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()), {}};
-    StageTimer cloud(process_.stage_times(), "cloud");
+    StageTimer cloud(process_.stage_times(), "cloud", StageTimer::Cpu::process);
     outgoing.messages = ToMessages(outgoing.matched, matcher_.config(), config_.cloud);
     cloud.Stop();
     // On its way to the filter from now: the next pair's matching may start
