@@ -52,7 +52,8 @@ struct MatchedFrame {
 // frame's size is not the calibration's (before decoding it); the message
 // names the calibration by `calibration_source` (e.g. its file). With
 // `times`, its stages are timed there as "decode" (the payloads: a view of a
-// raw image, a decode of a compressed one), "rectify" and "match".
+// raw image, a decode of a compressed one), "rectify" and "match", the last
+// two with the process's CPU time over them (StageTimer::Cpu::process).
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source = "the calibration",
