@@ -8,7 +8,8 @@
 // field's region (match/match_region.h) against the whole image, alternating;
 // and rectifying straight to the matcher's grid (RectifyOptions::downscale,
 // what stereo-match does) against the full-size remap and the matcher's own
-// downscale, alternating.
+// downscale, alternating. Last, the live SGBM against its other settings
+// (block size, OpenCV's modes, one thread) on the live grid.
 //
 //   bench_match [RUNS]    (default 5)
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -103,6 +105,61 @@ void CompareGrid(const char* name, const ws::MatcherConfig& config, const ws::Ri
               Median(grid_ms) / Median(full_ms));
 }
 
+// The live matcher's SGBM against the settings it could use instead, bare
+// OpenCV on the same pair rectified to the live grid: each one's median time,
+// its density and the share of the pixels both match whose disparities agree
+// within one pixel; and the live settings on one thread.
+void CompareSgbmSettings(const ws::MatcherConfig& live, const ws::Rig& rig, const widestereo::stereo_frame_t& frame,
+                         int runs) {
+  ws::RectifyOptions options;
+  options.downscale = live.downscale;
+  const ws::Rectification grid = ws::BuildRectification(rig, options);
+  cv::Mat left, right;
+  ws::RectifyPair(grid, ws::ImageToMat(frame.left), ws::ImageToMat(frame.right), &left, &right);
+  const ws::MatcherConfig at_grid = ws::AtMatchScale(live);
+  struct Variant {
+    const char* name;
+    int block_size;
+    int mode;
+    int threads;  // 0: OpenCV's default
+  };
+  const Variant variants[] = {{"3-way, block 7 (live)", 7, cv::StereoSGBM::MODE_SGBM_3WAY, 0},
+                              {"3-way, block 5", 5, cv::StereoSGBM::MODE_SGBM_3WAY, 0},
+                              {"3-way, block 3", 3, cv::StereoSGBM::MODE_SGBM_3WAY, 0},
+                              {"HH4", 7, cv::StereoSGBM::MODE_HH4, 0},
+                              {"8 paths (sgbm)", 7, cv::StereoSGBM::MODE_SGBM, 0},
+                              {"3-way, block 7, one thread", 7, cv::StereoSGBM::MODE_SGBM_3WAY, 1}};
+  std::printf("SGBM on the live %dx%d grid, %d disparities (bare OpenCV, no margin):\n", left.cols, left.rows,
+              at_grid.num_disparities);
+  const int threads = cv::getNumThreads();
+  const size_t n = std::size(variants);
+  std::vector<cv::Ptr<cv::StereoSGBM>> matchers;
+  for (const Variant& v : variants) {
+    ws::MatcherConfig config = at_grid;
+    config.block_size = v.block_size;
+    matchers.push_back(ws::MakeMatcher(config).dynamicCast<cv::StereoSGBM>());
+    matchers.back()->setMode(v.mode);
+  }
+  // Alternating runs: a machine whose speed drifts slows each alike.
+  std::vector<cv::Mat> disparities(n);
+  std::vector<std::vector<double>> ms(n);
+  for (int run = 0; run < runs; ++run)
+    for (size_t i = 0; i < n; ++i) {
+      if (variants[i].threads > 0) cv::setNumThreads(variants[i].threads);
+      ms[i].push_back(Milliseconds([&] { matchers[i]->compute(left, right, disparities[i]); }));
+      cv::setNumThreads(threads);
+    }
+  const cv::Mat& reference = disparities[0];
+  for (size_t i = 0; i < n; ++i) {
+    const cv::Mat valid = disparities[i] >= 0, both = valid & (reference >= 0);
+    cv::Mat difference;
+    cv::absdiff(disparities[i], reference, difference);
+    const double agree = cv::countNonZero(both & (difference <= cv::StereoMatcher::DISP_SCALE));
+    std::printf("  %-28s %7.1f ms  density %.3f  agreeing with the live within 1 px %.4f\n", variants[i].name,
+                Median(ms[i]), cv::countNonZero(valid) / double(valid.total()), agree / cv::countNonZero(both));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -137,5 +194,6 @@ int main(int argc, char** argv) {
   CompareRegion("live settings, focal scale 0.7", live,
                 ws::BuildRectification(rig, {0.7, {}, ws::RectificationMode::kPinhole}), frame, runs);
   CompareGrid("live settings, matcher's grid", live, rig, frame, runs);
+  CompareSgbmSettings(live, rig, frame, runs);
   return 0;
 }

@@ -35,6 +35,10 @@ echo "net.core.rmem_max = $(sysctl -n net.core.rmem_max)"
 build/bench/bench_transport --prepare "$RUN/frames" --sim config/sim/wall.yaml --log-dir "$RUN" --quiet
 mv "$RUN/frames/calibration.yaml" "$RUN/calibration.yaml"
 PORT=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+# The launches' bus on a UDP port of this run's own: processes of another
+# launch on the host (the default bus: 7667) neither reach the chain nor
+# are counted by the listener.
+BUS_PORT=$(python3 -c 'import socket; s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("", 0)); print(s.getsockname()[1])')
 # With BOTH=1 (and OTHER_TREE), each launch runs in this tree, then in the
 # other, before the next: the baseline in turn with the change ("VARIANT"
 # and "VARIANT-other" in the summary).
@@ -48,10 +52,11 @@ for tree in "${TREES[@]}"; do
   mkdir -p "$RUN/$dir"
   ln -sfn "$PWD/$RUN/frames" "$RUN/$dir/frames"
   ln -sfn "$PWD/$RUN/calibration.yaml" "$RUN/$dir/calibration.yaml"
-  python3 - "bench/transport/$variant.yaml" "$RUN/$dir/launch.yaml" "$tree" <<'PY'
-import sys, yaml
-launch_file, out, other = sys.argv[1:]
+  python3 - "bench/transport/$variant.yaml" "$RUN/$dir/launch.yaml" "$tree" "$BUS_PORT" <<'PY'
+import re, sys, yaml
+launch_file, out, other, bus_port = sys.argv[1:]
 launch = yaml.safe_load(open(launch_file))
+launch["lcm_url"] = re.sub(r":\d+\?", f":{bus_port}?", launch["lcm_url"], count=1)
 for p in launch["processes"]:
     if other and p["name"].startswith("stereo-"):
         p["executable"] = f"{other}/build/bin/{p['name']}"

@@ -92,7 +92,7 @@ void CloudNode::OnCloud(widestereo::point_cloud_t& msg) { stage_.Offer(std::move
 void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
   CloudFilterResult result;
   try {
-    StageTimer timer(process_.stage_times(), "filter");
+    StageTimer timer(process_.stage_times(), "filter", StageTimer::Cpu::process);
     result = filter_.Run(msg);
   } catch (const std::exception& e) {
     return process_.HandleRejected(channel::kStereoCloud, e.what());

@@ -26,13 +26,13 @@ MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, Disparit
   const cv::Mat left = ImageView(frame.left), right = ImageView(frame.right);
   decode.reset();
   std::optional<StageTimer> rectify;
-  if (times) rectify.emplace(*times, "rectify");
+  if (times) rectify.emplace(*times, "rectify", StageTimer::Cpu::process);
   MatchedFrame matched;
   const cv::Rect region = MatchRegion(*rect, matcher.config());
   RectifyPair(*rect, left, right, &matched.left_rect, &matched.right_rect, region);
   rectify.reset();
   std::optional<StageTimer> match;
-  if (times) match.emplace(*times, "match");
+  if (times) match.emplace(*times, "match", StageTimer::Cpu::process);
   matched.disparity = cv::Mat(rect->size, CV_32F, cv::Scalar(matcher.config().min_disparity - 1));
   cv::Mat in_region = matched.disparity(region);  // matched straight into the whole image's
   matcher.ComputeInto(matched.left_rect(region), matched.right_rect(region), &in_region,
@@ -97,8 +97,8 @@ MatchNode::MatchNode(Process& process, MatchConfig config)
             [this](const MapsJob& job) {
               process_.log().Info("maps for " + job.source + " not built: a newer calibration replaced it");
             }),
-      publish_(Live<MatchedFrame>(process, NewestFirst<MatchedFrame>::Policy::wait),
-               [this](MatchedFrame& matched) { Publish(matched); }),
+      publish_(Live<Outgoing>(process, NewestFirst<Outgoing>::Policy::wait),
+               [this](Outgoing& outgoing) { Publish(outgoing); }),
       match_(Live<widestereo::stereo_frame_t>(process, NewestFirst<widestereo::stereo_frame_t>::Policy::newest),
              [this](widestereo::stereo_frame_t& frame) { Match(frame); },
              [this](const widestereo::stereo_frame_t&) {
@@ -238,35 +238,36 @@ void MatchNode::Match(widestereo::stereo_frame_t& frame) {
   try {
     std::string source;
     std::shared_ptr<const Rectification> rect = Maps(frame, &source);
-    MatchedFrame matched = RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times());
+    Outgoing outgoing{RectifyAndMatch(std::move(rect), matcher_, frame, source, &process_.stage_times()), {}};
+    StageTimer cloud(process_.stage_times(), "cloud", StageTimer::Cpu::process);
+    outgoing.messages = ToMessages(outgoing.matched, matcher_.config(), config_.cloud);
+    cloud.Stop();
     // On its way to the filter from now: the next pair's matching may start
     // before the publishing stage has sent this one's cloud.
-    if (!process_.file_input()) downstream_.Sent(matched.frame_id, DownstreamGate::Clock::now());
-    publish_.Offer(std::move(matched));
+    if (!process_.file_input()) downstream_.Sent(outgoing.matched.frame_id, DownstreamGate::Clock::now());
+    publish_.Offer(std::move(outgoing));
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
 }
 
-void MatchNode::Publish(MatchedFrame& matched) {
-  std::optional<widestereo::disparity_t> disparity;  // its range and geometry name the legend's metres
+void MatchNode::Publish(Outgoing& outgoing) {
+  const MatchedFrame& matched = outgoing.matched;
+  // Its range and geometry name the legend's metres.
+  const widestereo::disparity_t& disparity = outgoing.messages.disparity;
   try {
-    StageTimer cloud(process_.stage_times(), "cloud");
-    MatchResult result = ToMessages(matched, matcher_.config(), config_.cloud);
-    cloud.Stop();
-    process_.Publish(channel::kStereoDisparity, result.disparity);
-    process_.Publish(channel::kStereoCloud, result.cloud);
-    disparity = std::move(result.disparity);
+    process_.Publish(channel::kStereoDisparity, disparity);
+    process_.Publish(channel::kStereoCloud, outgoing.messages.cloud);
   } catch (const std::exception& e) {
     process_.HandleRejected(channel::kStereoImages, e.what());
   }
   try {
     if (rectified_writer_.Wants(matched.frame_id))
       rectified_writer_.Write(matched.frame_id, {{"left", matched.left_rect}, {"right", matched.right_rect}});
-    if (disparity_writer_.Wants(matched.frame_id) && disparity) {
-      const view::DisparityLegend legend = view::MakeLegend(*disparity);
+    if (disparity_writer_.Wants(matched.frame_id)) {
+      const view::DisparityLegend legend = view::MakeLegend(disparity);
       disparity_writer_.Write(matched.frame_id,
-                              {{"disparity", view::WithLegend(view::ColourDisparity(ImageToMat(disparity->disparity), legend), legend)}});
+                              {{"disparity", view::WithLegend(view::ColourDisparity(ImageToMat(disparity.disparity), legend), legend)}});
     }
   } catch (const std::exception& e) {
     process_.ReportRecurring(e.what());

@@ -52,7 +52,8 @@ struct MatchedFrame {
 // frame's size is not the calibration's (before decoding it); the message
 // names the calibration by `calibration_source` (e.g. its file). With
 // `times`, its stages are timed there as "decode" (the payloads: a view of a
-// raw image, a decode of a compressed one), "rectify" and "match".
+// raw image, a decode of a compressed one), "rectify" and "match", the last
+// two with the process's CPU time over them (StageTimer::Cpu::process).
 MatchedFrame RectifyAndMatch(std::shared_ptr<const Rectification> rect, DisparityMatcher& matcher,
                              const widestereo::stereo_frame_t& frame,
                              const std::string& calibration_source = "the calibration",
@@ -89,11 +90,16 @@ MatchResult MatchFrame(const Rectification& rect, DisparityMatcher& matcher, con
 // pairs, the disparity (with its f, cx, cy and Q) and the cloud are all on
 // that grid.
 //
-// Live, the two stages run as a small pipeline (runtime/newest_first.h) on
-// two threads of their own, so that the input thread only hands frames over:
+// Live, the work runs as a small pipeline (runtime/newest_first.h) on two
+// threads of their own, so that the input thread only hands frames over:
 // matching takes the newest frame waiting (a frame replaced before it was
-// taken is counted as skipped on STEREO_IMAGES), while the cloud of the frame
-// before is built and published. At most one frame waits for each stage.
+// taken is counted as skipped on STEREO_IMAGES) and rectifies it, matches it
+// and builds its cloud, while the messages of the frame before are encoded
+// and sent. The three stages that spread over every core are on one thread:
+// OpenCV runs one parallel loop of a process at a time on every core, and
+// one started meanwhile on another thread runs on that thread alone (a
+// matching begun while the cloud before was built ran on one core, twice as
+// long, with the other free). At most one frame waits for each stage.
 // Live, a pair is also skipped, whole and before it is matched, when the
 // cloud filter downstream would still have one cloud being filtered and
 // another waiting by the time its cloud came (match/downstream_gate.h: its
@@ -146,7 +152,13 @@ class MatchNode {
   // std::invalid_argument for a frame of another size than the rig in use's,
   // std::runtime_error when its maps could not be built.
   std::shared_ptr<const Rectification> Maps(const widestereo::stereo_frame_t& frame, std::string* source);
-  void Publish(MatchedFrame& matched);
+  // A frame matched and its messages built: what the publishing stage sends
+  // (and saves).
+  struct Outgoing {
+    MatchedFrame matched;
+    MatchResult messages;
+  };
+  void Publish(Outgoing& outgoing);
 
   Process& process_;
   MatchConfig config_;
@@ -178,7 +190,7 @@ class MatchNode {
   // destroyed after them, since matching may wait for it.
   NewestFirst<MapsJob> maps_;
   // Destroyed (drained) before the rest, matching before publishing.
-  NewestFirst<MatchedFrame> publish_;
+  NewestFirst<Outgoing> publish_;
   NewestFirst<widestereo::stereo_frame_t> match_;
 };
 

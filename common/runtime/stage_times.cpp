@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <time.h>
+
 namespace ws {
 namespace {
 
@@ -45,6 +47,19 @@ std::vector<widestereo::stage_time_t> StageTimes::Summary() const {
     summary.push_back(t);
   }
   return summary;
+}
+
+double ProcessCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+void StageTimer::Stop() {
+  if (stopped_) return;
+  stopped_ = true;
+  times_.Add(stage_, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count());
+  if (cpu_start_ms_ >= 0) times_.Add(StagePart(stage_, "CPU"), ProcessCpuMs() - cpu_start_ms_);
 }
 
 }  // namespace ws

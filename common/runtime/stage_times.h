@@ -40,24 +40,36 @@ class StageTimes {
 std::string StagePart(const std::string& stage, const std::string& part);
 bool IsStagePart(const std::string& name);
 
-// Times its own lifetime (or until Stop()) as one frame of `stage`.
+// The process's CPU time so far, in ms: every thread's, on every core.
+double ProcessCpuMs();
+
+// Times its own lifetime (or until Stop()) as one frame of `stage`. With
+// Cpu::process, also the process's CPU time over it, as the part
+// "STAGE: CPU": what the stage cost the cores. A busy machine stretches it
+// far less than the wall time (a thread waiting for a core spends no CPU
+// time), so it compares two builds run in minutes of different load. It
+// counts whatever else the process ran meanwhile: meant for a stage that
+// has its process's cores to itself (stereo-match's rectify, match and
+// cloud, stereo-cloud's filter), their other threads only receiving and
+// sending.
 class StageTimer {
  public:
-  StageTimer(StageTimes& times, std::string stage)
-      : times_(times), stage_(std::move(stage)), start_(std::chrono::steady_clock::now()) {}
+  enum class Cpu { no, process };
+  StageTimer(StageTimes& times, std::string stage, Cpu cpu = Cpu::no)
+      : times_(times),
+        stage_(std::move(stage)),
+        start_(std::chrono::steady_clock::now()),
+        cpu_start_ms_(cpu == Cpu::process ? ProcessCpuMs() : -1) {}
   ~StageTimer() { Stop(); }
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
-  void Stop() {
-    if (stopped_) return;
-    stopped_ = true;
-    times_.Add(stage_, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count());
-  }
+  void Stop();
 
  private:
   StageTimes& times_;
   const std::string stage_;
   const std::chrono::steady_clock::time_point start_;
+  const double cpu_start_ms_;  // < 0: no CPU time taken
   bool stopped_ = false;
 };
 

@@ -72,14 +72,14 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
     EXPECT_EQ(clouds[i].npoints, stats[i].stage_points[3]);  // the cloud after outlier removal
     EXPECT_LT(clouds[i].npoints, wall.npoints);
   }
-  // Its budget: the filter, and each of the chain's stages as a part of it,
-  // timed on every cloud.
+  // Its budget: the filter, each of the chain's stages as a part of it and
+  // the process's CPU time over it, timed on every cloud.
   const auto status = Messages<widestereo::process_status_t>(events, ws::channel::kProcessStatus);
   ASSERT_FALSE(status.empty());
   std::map<std::string, int64_t> timed;
   for (const auto& stage : status.back().stages) timed[stage.stage] = stage.count;
   for (const std::string stage : {"filter", "filter: input", "filter: passthrough", "filter: voxel",
-                                  "filter: outliers", "filter: plane"})
+                                  "filter: outliers", "filter: plane", "filter: CPU"})
     EXPECT_EQ(timed[stage], 4) << stage;
 
   // The save command wrote cloud 1; --save-every 2 wrote clouds 2 and 4.

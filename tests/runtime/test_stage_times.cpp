@@ -47,6 +47,29 @@ TEST(StageTimes, TimersOnSeveralThreadsAllCount) {
   EXPECT_LE(summary[0].median_ms, summary[0].p99_ms);
 }
 
+// The CPU part holds the CPU time the process spent while the stage ran:
+// here at least the 20 ms of it the stage burns on its own thread, whatever
+// the wall time (nothing is asserted of that).
+TEST(StageTimes, WithCpuTheStageAlsoReportsTheProcesssCpuTimeAsAPart) {
+  ws::StageTimes times;
+  constexpr double kBurnMs = 20;
+  {
+    ws::StageTimer timer(times, "filter", ws::StageTimer::Cpu::process);
+    const double start = ws::ProcessCpuMs();
+    volatile double sink = 0;
+    while (ws::ProcessCpuMs() - start < kBurnMs) sink = sink + 1;
+  }
+  { ws::StageTimer timer(times, "publish"); }
+  const auto summary = times.Summary();
+  ASSERT_EQ(summary.size(), 3u);
+  EXPECT_EQ(summary[0].stage, "filter");
+  EXPECT_EQ(summary[1].stage, "filter: CPU");
+  EXPECT_TRUE(ws::IsStagePart(summary[1].stage));
+  EXPECT_EQ(summary[1].count, 1);
+  EXPECT_GE(summary[1].median_ms, kBurnMs);
+  EXPECT_EQ(summary[2].stage, "publish");  // no CPU part without Cpu::process
+}
+
 TEST(StageTimes, APartIsNamedAfterItsStageAndToldApart) {
   EXPECT_EQ(ws::StagePart("filter", "voxel"), "filter: voxel");
   EXPECT_TRUE(ws::IsStagePart(ws::StagePart("filter", "voxel")));
