@@ -1,10 +1,10 @@
-// The last frames stereo-view heard, held as they came (a PNG or JPEG
-// payload stays compressed, nothing is decoded), so that the view list can
-// make a thumbnail of one once stereo-detect has found a board in it: the
-// corners come later than the frame, by the detector's latency. Bounded:
-// at most kFramesHeld frames and kBytesHeld bytes of images, the oldest
-// forgotten first: of 1280x960 pairs, 64 PNG ones (1.04 MB each: 13 s at
-// 5 Hz) or 27 raw ones (2.46 MB). Not thread-safe: the input thread's.
+// The last thumbnails stereo-detect sent (STEREO_THUMBNAILS,
+// detect/thumbnail_frame.h), held as they came, so that the view list can
+// draw a view with one once its corners come (just after). Bounded: at most
+// kFramesHeld frames and kBytesHeld bytes of images, the oldest forgotten
+// first (a thumbnail is 12 KB: 128 of them are 25 s of a detector at 5 Hz;
+// the byte bound holds whatever a sender puts on the channel). Not
+// thread-safe: the input thread's.
 #pragma once
 
 #include <cstddef>

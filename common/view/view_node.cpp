@@ -178,9 +178,8 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
-  last_calibration_us_ = Clock();
-  if (const auto frame = ring_.Find(corners.frame_id, corners.utime))
-    Guarded(process_, channel::kStereoImages, [&] { view_list_.Found(corners, *frame); });
+  if (const auto thumbnail = thumbnails_.Find(corners.frame_id, corners.utime))
+    Guarded(process_, channel::kStereoThumbnails, [&] { view_list_.Found(corners, *thumbnail); });
   if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
     Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
@@ -235,33 +234,6 @@ void ViewNode::SubscribeSampled(const char* channel, Audience::Views views, int6
       gaps);
 }
 
-bool ViewNode::CalibrationHeard() const {
-  return last_calibration_us_ != INT64_MIN && Clock() - last_calibration_us_ < kCalibrationHeardUs;
-}
-
-void ViewNode::SubscribeImages() {
-  const Audience::Views both;
-  process_.SubscribeSampled<widestereo::stereo_frame_t>(
-      channel::kStereoImages,
-      [this, both] {
-        freshness_.Heard(channel::kStereoImages, Clock());  // asked once for every message that comes
-        frame_shown_ = audience_.Watching(both) && Due(last_frame_us_);
-        return frame_shown_ || CalibrationHeard();
-      },
-      [this](widestereo::stereo_frame_t& frame) {
-        if (!CalibrationHeard())
-          ring_.Clear();
-        else  // held as it came; the stage gets its own copy
-          ring_.Hold(frame_shown_ ? std::make_shared<const widestereo::stereo_frame_t>(frame)
-                                  : std::make_shared<const widestereo::stereo_frame_t>(std::move(frame)));
-        if (frame_shown_)
-          frames_.Offer(std::move(frame));
-        else
-          process_.Counters(channel::kStereoImages).skipped++;
-      },
-      2);  // LCM's queue holds two big messages at most: the stage takes the newest
-}
-
 template <class Msg>
 void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
                               Process::FrameGaps gaps) {
@@ -276,18 +248,19 @@ void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&
 
 void ViewNode::Start() {
   const bool live = !process_.file_input();
-  if (live) last_calibration_us_ = Clock();  // frames held from the start
   const Audience::Views depth{/*calibration=*/false, /*depth=*/true};
   // The channels that carry only the frames their sender looked at (a
   // newest-frame stage, a once-a-second check): gaps there are skips by
   // design, not losses (runtime/process.h).
   constexpr auto sparse = Process::FrameGaps::skipped;
-  SubscribeImages();
+  SubscribeSampled(channel::kStereoImages, Audience::Views{}, last_frame_us_, frames_);
+  process_.Subscribe<widestereo::stereo_frame_t>(channel::kStereoThumbnails, [this](widestereo::stereo_frame_t& m) {
+    thumbnails_.Hold(std::make_shared<const widestereo::stereo_frame_t>(std::move(m)));
+  });
   SubscribeShown<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
   SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
-    last_calibration_us_ = Clock();
     if (m.views_left + m.views_right < views_) {  // stereo-calibrate was reset: its views are gone
       spread_.Clear();
       Show("spread", spread_.Json().dump());

@@ -1,0 +1,33 @@
+#include "detect/thumbnail_frame.h"
+
+#include <algorithm>
+
+#include <opencv2/imgproc.hpp>
+
+#include "lcm_io/image_codec.h"
+
+namespace ws {
+namespace {
+
+widestereo::image_t Thumbnail(const widestereo::image_t& image, int64_t utime) {
+  const cv::Mat full = ImageView(image);
+  cv::Mat small;
+  cv::resize(full, small, {kThumbnailWidth, std::max(1, full.rows * kThumbnailWidth / full.cols)}, 0, 0,
+             cv::INTER_AREA);
+  return MatToImage(small, utime);
+}
+
+}  // namespace
+
+widestereo::stereo_frame_t ThumbnailFrame(const widestereo::stereo_frame_t& frame,
+                                          const widestereo::stereo_corners_t& corners) {
+  widestereo::stereo_frame_t thumbnail{};
+  thumbnail.frame_id = frame.frame_id;
+  thumbnail.utime = frame.utime;
+  const bool left = corners.left.n > 0;
+  thumbnail.left = left ? Thumbnail(frame.left, frame.utime) : NoImage(frame.utime);
+  thumbnail.right = left ? NoImage(frame.utime) : Thumbnail(frame.right, frame.utime);
+  return thumbnail;
+}
+
+}  // namespace ws
