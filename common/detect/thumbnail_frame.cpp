@@ -24,9 +24,8 @@ widestereo::stereo_frame_t ThumbnailFrame(const widestereo::stereo_frame_t& fram
   widestereo::stereo_frame_t thumbnail{};
   thumbnail.frame_id = frame.frame_id;
   thumbnail.utime = frame.utime;
-  const bool left = corners.left.n > 0;
-  thumbnail.left = left ? Thumbnail(frame.left, frame.utime) : NoImage(frame.utime);
-  thumbnail.right = left ? NoImage(frame.utime) : Thumbnail(frame.right, frame.utime);
+  thumbnail.left = Thumbnail(corners.left.n > 0 ? frame.left : frame.right, frame.utime);
+  thumbnail.right = NoImage(frame.utime);
   return thumbnail;
 }
 

@@ -178,8 +178,6 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
-  if (const auto thumbnail = thumbnails_.Find(corners.frame_id, corners.utime))
-    Guarded(process_, channel::kStereoThumbnails, [&] { view_list_.Found(corners, *thumbnail); });
   if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
     Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
@@ -254,9 +252,12 @@ void ViewNode::Start() {
   // design, not losses (runtime/process.h).
   constexpr auto sparse = Process::FrameGaps::skipped;
   SubscribeSampled(channel::kStereoImages, Audience::Views{}, last_frame_us_, frames_);
-  process_.Subscribe<widestereo::stereo_frame_t>(channel::kStereoThumbnails, [this](widestereo::stereo_frame_t& m) {
-    thumbnails_.Hold(std::make_shared<const widestereo::stereo_frame_t>(std::move(m)));
-  });
+  process_.Subscribe<widestereo::stereo_frame_t>(
+      channel::kStereoThumbnails,
+      [this](const widestereo::stereo_frame_t& m) {
+        Guarded(process_, channel::kStereoThumbnails, [&] { view_list_.Found(m); });
+      },
+      0, sparse);  // only the frames with a board
   SubscribeShown<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
   SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {

@@ -29,9 +29,8 @@
 // CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h),
 // as a change from the list before. stereo-detect sends a thumbnail of each
 // frame it found a board in (STEREO_THUMBNAILS, detect/thumbnail_frame.h)
-// just before its corners; the last ones are held (view/frame_ring.h,
-// bounded) for the corners to find, so that every view gets one, whatever
-// the page was shown and whichever full frames this process dropped.
+// just before its corners, so that every view gets one, whatever the page
+// was shown and whichever full frames this process dropped.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file), and remove with the view's frame id
@@ -52,7 +51,6 @@
 #include "view/blob_store.h"
 #include "view/board_spread.h"
 #include "view/event_hub.h"
-#include "view/frame_ring.h"
 #include "view/freshness.h"
 #include "view/page_events.h"
 #include "view/recording_watch.h"
@@ -128,8 +126,7 @@ class ViewNode {
   Freshness freshness_;
   std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
-  ViewList view_list_;  // the input thread's, as are the next two
-  FrameRing thumbnails_;  // the last STEREO_THUMBNAILS
+  ViewList view_list_;  // the input thread's, as is the next
   int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)

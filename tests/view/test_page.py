@@ -261,7 +261,9 @@ def test_thumbnails_every_view_has_one_though_this_page_heard_no_image(bus):
     assert image.shape[1] == 128 and image.shape[0] == 96
     bus.stop()
     thumbnails = bus.events("STEREO_THUMBNAILS")
-    assert thumbnails and all(t.left.width == 128 or t.right.width == 128 for t in thumbnails)
+    assert thumbnails and all((t.left.width, t.right.width) == (128, 0) for t in thumbnails)
+    boards = {c.frame_id for c in bus.events("STEREO_CORNERS") if c.left.n > 0 or c.right.n > 0}
+    assert boards and boards <= {t.frame_id for t in thumbnails}, "a frame with a board and no thumbnail"
 
 
 def view_counters(bus, pid):
