@@ -79,7 +79,7 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
         Show("cloud", CloudEvent(c, options_.cloud_points, blobs_));
       })) {
-  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6);
+  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6, options_.recording_files);
 }
 
 ViewNode::~ViewNode() = default;
@@ -203,9 +203,11 @@ void ViewNode::PublishView() {
     rig = rig_source_;
   }
   const int64_t now = Clock();
-  if (recording_ && recording_->Check(now)) {  // stereo-status shows both; a later error replaces only the first
-    process_.ReportError(recording_->StoppedText());
-    process_.SetState("recording stopped");
+  if (recording_) {
+    // stereo-status shows the state, and a stopped recording as the last
+    // error too (a later error replaces only that).
+    if (recording_->Check(now) && !recording_->StoppedText().empty()) process_.ReportError(recording_->StoppedText());
+    if (const std::string state = recording_->StateText(); !state.empty()) process_.SetState(state);
   }
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},

@@ -67,7 +67,8 @@ struct ViewOptions {
   int cloud_points = 20000; // points of a cloud sent to the page at most
   std::string first_view = "calibration";  // the tab a page opens on (the launch's purpose)
   std::string recording;        // the launch's LCM log ("": none), its size shown against...
-  double recording_cap_mb = 500;  // ...the size at which the launcher stops it
+  double recording_cap_mb = 500;  // ...the size at which the launcher stops it (rolling: that it keeps)
+  int recording_files = 1;        // 1, or a rolling recording's files (view/recording_watch.h)
 };
 
 // The pseudo-channel of PROCESS_STATUS counting the page's events: published
