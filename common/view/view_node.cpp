@@ -79,7 +79,8 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
         Show("cloud", CloudEvent(c, options_.cloud_points, blobs_));
       })) {
-  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6, options_.recording_files);
+  if (!options_.recording.empty())
+    recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6, options_.recording_files);
 }
 
 ViewNode::~ViewNode() = default;

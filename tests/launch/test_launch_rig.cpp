@@ -55,7 +55,8 @@ TEST(LaunchRig, RunLaunchOnAFolderAndACalibrationGivenByRigFileAndSet) {
     EXPECT_NE(record.find(std::string(process) + " stopped (code 0)"), std::string::npos) << record;
   // Depth came out of the user's pairs with the user's calibration (in the
   // rolling recording's newest file: 8 s fill less than one).
-  EXPECT_GT(Messages<widestereo::disparity_t>(ReadLog(run_dir + "/run.lcmlog.0"), ws::channel::kStereoDisparity).size(), 0u);
+  EXPECT_GT(Messages<widestereo::disparity_t>(ReadLog(run_dir + "/run.lcmlog.0"), ws::channel::kStereoDisparity).size(),
+            0u);
   EXPECT_EQ(TrackedFilesState(), before) << "the launch changed tracked files";
 }
 
@@ -109,7 +110,8 @@ TEST(LaunchRig, TheRunLaunchKeepsTheNewestMaxLogMbAndNoFileItDidNotWrite) {
   bool kept = false;
   for (const auto& entry : fs::directory_iterator(run_dir))
     if (entry.path().string().rfind(log + ".3.", 0) == 0)
-      kept = std::string(std::istreambuf_iterator<char>(std::ifstream(entry.path()).rdbuf()), {}) == "an earlier launch's";
+      kept = std::string(std::istreambuf_iterator<char>(std::ifstream(entry.path()).rdbuf()), {}) ==
+             "an earlier launch's";
   EXPECT_TRUE(kept) << "the earlier file, moved out of the recording's way";
   EXPECT_TRUE(fs::exists(log + ".9")) << "ten files: <log>.0 to <log>.9";
   EXPECT_FALSE(fs::exists(log + ".10")) << "ten files at most: the oldest deleted";

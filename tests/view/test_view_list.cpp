@@ -115,7 +115,8 @@ TEST(ViewList, ThumbnailsWaitingForTheirViewAreBounded) {
   BlobStore blobs;
   ViewList list(blobs);
   const int64_t made = int64_t(ws::view::kCandidatesKept) + 5;
-  for (int64_t id = 0; id < made; ++id) list.Found(ws::ThumbnailFrame(Frame(id, ws::Compression::none), Corners(id, 54, 0)));
+  for (int64_t id = 0; id < made; ++id)
+    list.Found(ws::ThumbnailFrame(Frame(id, ws::Compression::none), Corners(id, 54, 0)));
   const json whole = json::parse(list.Event(Views({View(0), View(made - 1)}))->whole);
   EXPECT_TRUE(whole["views"][0]["thumbnail"].is_string()) << "the newest candidate is kept";
   EXPECT_TRUE(whole["views"][1]["thumbnail"].is_null()) << "the oldest is forgotten";
