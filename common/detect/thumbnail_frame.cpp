@@ -11,9 +11,10 @@ namespace {
 
 widestereo::image_t Thumbnail(const widestereo::image_t& image, int64_t utime) {
   const cv::Mat full = ImageView(image);
+  if (full.cols <= kThumbnailWidth) return MatToImage(full, utime);  // never enlarged: a narrow image stays small
   cv::Mat small;
-  cv::resize(full, small, {kThumbnailWidth, std::max(1, full.rows * kThumbnailWidth / full.cols)}, 0, 0,
-             cv::INTER_AREA);
+  cv::resize(full, small, {kThumbnailWidth, std::max(1, int(int64_t(full.rows) * kThumbnailWidth / full.cols))}, 0,
+             0, cv::INTER_AREA);
   return MatToImage(small, utime);
 }
 

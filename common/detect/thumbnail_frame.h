@@ -16,8 +16,9 @@ inline constexpr int kThumbnailWidth = 128;
 
 // A frame of `frame`'s id and utime whose left image is the image a view of
 // it is drawn on (the left one, unless only the right saw the board), scaled
-// to kThumbnailWidth across, raw, and with no right image (as a one-camera
-// rig's frame). Throws DecodeError for an image that does not decode.
+// down to kThumbnailWidth across (a narrower image as it is: a thumbnail is
+// never larger than its image), raw, and with no right image (as a
+// one-camera rig's frame). Throws DecodeError for an image that does not decode.
 widestereo::stereo_frame_t ThumbnailFrame(const widestereo::stereo_frame_t& frame,
                                           const widestereo::stereo_corners_t& corners);
 
