@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "detect/thumbnail_frame.h"
 #include "lcm_io/channels.h"
 
 namespace ws {
@@ -44,13 +45,17 @@ OrderedPipeline::Delivery CornerStage::Detect(const widestereo::stereo_frame_t& 
   try {
     int unrefined = 0;
     auto corners = std::make_shared<const widestereo::stereo_corners_t>(finder_.Find(frame, &unrefined));
-    return [this, corners, unrefined] { Deliver(*corners, unrefined); };
+    std::shared_ptr<const widestereo::stereo_frame_t> thumbnail;
+    if (corners->left.n > 0 || corners->right.n > 0)
+      thumbnail = std::make_shared<const widestereo::stereo_frame_t>(ThumbnailFrame(frame, *corners));
+    return [this, corners, thumbnail, unrefined] { Deliver(*corners, thumbnail.get(), unrefined); };
   } catch (const std::exception& e) {
     return [this, id = frame.frame_id, why = std::string(e.what())] { Reject(id, why); };
   }
 }
 
-void CornerStage::Deliver(const widestereo::stereo_corners_t& corners, int unrefined) {
+void CornerStage::Deliver(const widestereo::stereo_corners_t& corners,
+                          const widestereo::stereo_frame_t* thumbnail, int unrefined) {
   frames_++;
   if (unrefined > 0) {
     unrefined_ += unrefined;
@@ -59,6 +64,8 @@ void CornerStage::Deliver(const widestereo::stereo_corners_t& corners, int unref
   }
   if (corners.left.n > 0) left_boards_++;
   if (corners.right.n > 0) right_boards_++;
+  // The thumbnail first: stereo-view holds it for the corners that follow.
+  if (thumbnail) process_.Publish(channel::kStereoThumbnails, *thumbnail);
   process_.Publish(channel::kStereoCorners, corners);
 }
 

@@ -2,6 +2,10 @@
 // through a StereoCornerFinder on an OrderedPipeline, and its corners are
 // published on STEREO_CORNERS in input order.
 //
+// - A frame in which either camera saw the board is also published on
+//   STEREO_THUMBNAILS, just before its corners, as the small image the page
+//   lists its view with (detect/thumbnail_frame.h).
+//
 // - Every frame that decodes is published, also when neither camera sees the
 //   board (n = 0 for both): the calibrator learns that the frame happened, and
 //   its frame-id gap count stays a count of frames lost.
@@ -41,7 +45,9 @@ class CornerStage {
   void OnFrame(const widestereo::stereo_frame_t& frame);
   // Runs on a worker: the finder's result, as the step that publishes it.
   OrderedPipeline::Delivery Detect(const widestereo::stereo_frame_t& frame);
-  void Deliver(const widestereo::stereo_corners_t& corners, int unrefined);
+  // `thumbnail`: null when neither camera saw the board.
+  void Deliver(const widestereo::stereo_corners_t& corners, const widestereo::stereo_frame_t* thumbnail,
+               int unrefined);
   void Reject(int64_t frame_id, const std::string& why);
 
   Process& process_;

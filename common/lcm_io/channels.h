@@ -5,6 +5,7 @@ namespace ws::channel {
 
 inline constexpr const char* kStereoImages = "STEREO_IMAGES";
 inline constexpr const char* kStereoCorners = "STEREO_CORNERS";
+inline constexpr const char* kStereoThumbnails = "STEREO_THUMBNAILS";
 inline constexpr const char* kStereoCommand = "STEREO_COMMAND";
 inline constexpr const char* kCalibrationStatus = "CALIBRATION_STATUS";
 inline constexpr const char* kCalibrationHealth = "CALIBRATION_HEALTH";

@@ -19,13 +19,10 @@ json Rms(double rms) { return rms < 0 ? json(nullptr) : json(rms); }
 
 }  // namespace
 
-void ViewList::Found(const widestereo::stereo_corners_t& corners, const widestereo::stereo_frame_t& frame) {
-  const Key key{frame.frame_id, frame.utime};
+void ViewList::Found(const widestereo::stereo_frame_t& thumbnail) {
+  const Key key{thumbnail.frame_id, thumbnail.utime};
   if (candidates_.count(key) || thumbnails_.count(key)) return;
-  if (corners.left.n <= 0 && corners.right.n <= 0) return;  // no board: no view will come of it
-  // As the page draws a view: on its left image unless the left did not see the board.
-  const auto& image = corners.left.n > 0 ? frame.left : frame.right;
-  candidates_[key] = std::make_shared<const Blob>(ImageJpeg(image, kThumbnailWidth));
+  candidates_[key] = std::make_shared<const Blob>(ImageJpeg(thumbnail.left, kThumbnailWidth));
   candidate_order_.push_back(key);
   if (candidate_order_.size() > kCandidatesKept) {
     candidates_.erase(candidate_order_.front());

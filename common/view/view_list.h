@@ -4,10 +4,10 @@
 // solve, and a thumbnail of its left image (of its right one when the left
 // did not see the board).
 //
-// Thumbnails: one is made (kThumbnailWidth pixels across, JPEG) of each
-// frame in which stereo-detect found a board (Found), from the frame as it
-// came (view/frame_ring.h), before stereo-calibrate says whether it took a
-// view from it; the newest kCandidatesKept wait in memory for a
+// Thumbnails: stereo-detect sends one (kThumbnailWidth pixels across,
+// detect/thumbnail_frame.h) of each frame in which it found a board, before
+// stereo-calibrate says whether it took a view from it; each is kept as a
+// JPEG (Found), and the newest kCandidatesKept wait in memory for a
 // CALIBRATION_VIEWS that lists them. A listed one goes to the BlobStore
 // (the page fetches it) and stays while its view does, kThumbnailsKept at
 // most (stereo-calibrate keeps 300 views unless --max-views says more):
@@ -32,14 +32,13 @@
 #include <string>
 #include <utility>
 
+#include "detect/thumbnail_frame.h"
 #include "view/blob_store.h"
 #include "widestereo/calibration_views_t.hpp"
-#include "widestereo/stereo_corners_t.hpp"
 #include "widestereo/stereo_frame_t.hpp"
 
 namespace ws::view {
 
-inline constexpr int kThumbnailWidth = 128;
 inline constexpr size_t kCandidatesKept = 64;
 inline constexpr size_t kThumbnailsKept = 512;
 
@@ -51,10 +50,10 @@ class ViewList {
 
   explicit ViewList(BlobStore& blobs) : blobs_(blobs) {}
 
-  // stereo-detect found `corners` in `frame` (the same frame id and utime):
-  // a thumbnail of the image a view of it would be drawn on. Throws
-  // DecodeError for a frame that cannot be decoded (nothing is kept).
-  void Found(const widestereo::stereo_corners_t& corners, const widestereo::stereo_frame_t& frame);
+  // A STEREO_THUMBNAILS frame: its left image is the thumbnail of the frame
+  // of that id and utime. Throws DecodeError for one that cannot be decoded
+  // (nothing is kept).
+  void Found(const widestereo::stereo_frame_t& thumbnail);
 
   // The update for `views`, or nothing when it says what the last one said
   // (the list changes when views come, go or are solved).

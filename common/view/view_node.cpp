@@ -79,7 +79,8 @@ ViewNode::ViewNode(Process& process, EventHub& hub, BlobStore& blobs, const Audi
       clouds_(Stage<widestereo::point_cloud_t>(process, channel::kStereoCloudFiltered, [this](auto& c) {
         Show("cloud", CloudEvent(c, options_.cloud_points, blobs_));
       })) {
-  if (!options_.recording.empty()) recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6);
+  if (!options_.recording.empty())
+    recording_.emplace(options_.recording, options_.recording_cap_mb * 1e6, options_.recording_files);
 }
 
 ViewNode::~ViewNode() = default;
@@ -178,9 +179,6 @@ void ViewNode::ShowFrame(widestereo::stereo_frame_t& frame) {
 }
 
 void ViewNode::ShowCorners(const widestereo::stereo_corners_t& corners) {
-  last_calibration_us_ = Clock();
-  if (const auto frame = ring_.Find(corners.frame_id, corners.utime))
-    Guarded(process_, channel::kStereoImages, [&] { view_list_.Found(corners, *frame); });
   if (const auto measures = MeasureBoard(corners.left); measures && spread_.Add(*measures))
     Show("spread", spread_.Json().dump());
   std::lock_guard<std::mutex> lock(recent_mutex_);
@@ -206,9 +204,11 @@ void ViewNode::PublishView() {
     rig = rig_source_;
   }
   const int64_t now = Clock();
-  if (recording_ && recording_->Check(now)) {  // stereo-status shows both; a later error replaces only the first
-    process_.ReportError(recording_->StoppedText());
-    process_.SetState("recording stopped");
+  if (recording_) {
+    // stereo-status shows the state, and a stopped recording as the last
+    // error too (a later error replaces only that).
+    if (recording_->Check(now) && !recording_->StoppedText().empty()) process_.ReportError(recording_->StoppedText());
+    if (const std::string state = recording_->StateText(); !state.empty()) process_.SetState(state);
   }
   hub_.Publish("status", nlohmann::json{{"commands_refused", CommandsRefused()},
                                         {"calibration", rig},
@@ -235,33 +235,6 @@ void ViewNode::SubscribeSampled(const char* channel, Audience::Views views, int6
       gaps);
 }
 
-bool ViewNode::CalibrationHeard() const {
-  return last_calibration_us_ != INT64_MIN && Clock() - last_calibration_us_ < kCalibrationHeardUs;
-}
-
-void ViewNode::SubscribeImages() {
-  const Audience::Views both;
-  process_.SubscribeSampled<widestereo::stereo_frame_t>(
-      channel::kStereoImages,
-      [this, both] {
-        freshness_.Heard(channel::kStereoImages, Clock());  // asked once for every message that comes
-        frame_shown_ = audience_.Watching(both) && Due(last_frame_us_);
-        return frame_shown_ || CalibrationHeard();
-      },
-      [this](widestereo::stereo_frame_t& frame) {
-        if (!CalibrationHeard())
-          ring_.Clear();
-        else  // held as it came; the stage gets its own copy
-          ring_.Hold(frame_shown_ ? std::make_shared<const widestereo::stereo_frame_t>(frame)
-                                  : std::make_shared<const widestereo::stereo_frame_t>(std::move(frame)));
-        if (frame_shown_)
-          frames_.Offer(std::move(frame));
-        else
-          process_.Counters(channel::kStereoImages).skipped++;
-      },
-      2);  // LCM's queue holds two big messages at most: the stage takes the newest
-}
-
 template <class Msg>
 void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
                               Process::FrameGaps gaps) {
@@ -276,18 +249,22 @@ void ViewNode::SubscribeShown(const char* channel, std::function<void(const Msg&
 
 void ViewNode::Start() {
   const bool live = !process_.file_input();
-  if (live) last_calibration_us_ = Clock();  // frames held from the start
   const Audience::Views depth{/*calibration=*/false, /*depth=*/true};
   // The channels that carry only the frames their sender looked at (a
   // newest-frame stage, a once-a-second check): gaps there are skips by
   // design, not losses (runtime/process.h).
   constexpr auto sparse = Process::FrameGaps::skipped;
-  SubscribeImages();
+  SubscribeSampled(channel::kStereoImages, Audience::Views{}, last_frame_us_, frames_);
+  process_.Subscribe<widestereo::stereo_frame_t>(
+      channel::kStereoThumbnails,
+      [this](const widestereo::stereo_frame_t& m) {
+        Guarded(process_, channel::kStereoThumbnails, [&] { view_list_.Found(m); });
+      },
+      0, sparse);  // only the frames with a board
   SubscribeShown<widestereo::stereo_corners_t>(
       channel::kStereoCorners, [this](const auto& m) { ShowCorners(m); }, sparse);
   SubscribeShown<widestereo::calibration_status_t>(channel::kCalibrationStatus, [this](const auto& m) {
     board_.Add(m);
-    last_calibration_us_ = Clock();
     if (m.views_left + m.views_right < views_) {  // stereo-calibrate was reset: its views are gone
       spread_.Clear();
       Show("spread", spread_.Json().dump());

@@ -27,13 +27,10 @@
 // undecoded, as sampled ones are.
 //
 // CALIBRATION_VIEWS: the list of views with their thumbnails (view/view_list.h),
-// as a change from the list before. From its start (a calibration's first
-// frames come before its first status) and while a calibration is heard
-// (STEREO_CORNERS or CALIBRATION_STATUS in the last kCalibrationHeardUs, 30 s),
-// every frame is held as it came (view/frame_ring.h, bounded) and a
-// thumbnail made of each one the board was found in, so that every view
-// gets one, whatever the page was shown: one whose frame was forgotten
-// before its corners came (a detector seconds behind) has none.
+// as a change from the list before. stereo-detect sends a thumbnail of each
+// frame it found a board in (STEREO_THUMBNAILS, detect/thumbnail_frame.h)
+// just before its corners, so that every view gets one, whatever the page
+// was shown and whichever full frames this process dropped.
 //
 // Commands (Command): solve, save, reset, restore to stereo-calibrate, no
 // arguments (the page names no file), and remove with the view's frame id
@@ -54,7 +51,6 @@
 #include "view/blob_store.h"
 #include "view/board_spread.h"
 #include "view/event_hub.h"
-#include "view/frame_ring.h"
 #include "view/freshness.h"
 #include "view/page_events.h"
 #include "view/recording_watch.h"
@@ -71,7 +67,8 @@ struct ViewOptions {
   int cloud_points = 20000; // points of a cloud sent to the page at most
   std::string first_view = "calibration";  // the tab a page opens on (the launch's purpose)
   std::string recording;        // the launch's LCM log ("": none), its size shown against...
-  double recording_cap_mb = 500;  // ...the size at which the launcher stops it
+  double recording_cap_mb = 500;  // ...the size at which the launcher stops it (rolling: that it keeps)
+  int recording_files = 1;        // 1, or a rolling recording's files (view/recording_watch.h)
 };
 
 // The pseudo-channel of PROCESS_STATUS counting the page's events: published
@@ -113,10 +110,6 @@ class ViewNode {
   template <class Msg>
   void SubscribeSampled(const char* channel, Audience::Views views, int64_t& last_us, NewestFirst<Msg>& stage,
                         Process::FrameGaps gaps = Process::FrameGaps::count);
-  // STEREO_IMAGES: a frame a browser shows (at most image_hz) to the frame
-  // stage; while a calibration is heard, every frame to the ring.
-  void SubscribeImages();
-  bool CalibrationHeard() const;
   // Subscribes `show` to `channel`, every message heard (freshness_).
   template <class Msg>
   void SubscribeShown(const char* channel, std::function<void(const Msg&)> show,
@@ -134,14 +127,7 @@ class ViewNode {
   Freshness freshness_;
   std::optional<RecordingWatch> recording_;
   BoardSpread spread_;  // of every board stereo-detect found (the input thread's)
-  // A calibration not heard for this long has stopped: frames are no longer
-  // held. stereo-calibrate's status comes every second; a loaded host may
-  // start it many seconds after the cameras.
-  static constexpr int64_t kCalibrationHeardUs = 30000000;
-  ViewList view_list_;  // the input thread's, as are the next four
-  FrameRing ring_;
-  int64_t last_calibration_us_ = INT64_MIN;
-  bool frame_shown_ = false;  // the frame being received goes to the frame stage
+  ViewList view_list_;  // the input thread's, as is the next
   int views_ = 0;       // stereo-calibrate's views at its last status
   int64_t last_frame_us_ = INT64_MIN, last_disparity_us_ = INT64_MIN, last_cloud_us_ = INT64_MIN;
   std::mutex rig_mutex_;  // guards rig_, rig_source_, rect_ (the frame thread builds rect_)

@@ -59,6 +59,12 @@ int main(int argc, char** argv) {
   app.add_option("--recording-cap-mb", options.recording_cap_mb, "The recording's cap (the launch's max_log_mb)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--recording-files", options.recording_files,
+                 "1: one file, stopped at the cap; N > 1: a rolling recording (the launch's rolling_log), "
+                 "LOG.0 the newest to LOG.N-1, the oldest deleted: the page and stereo-status say how many "
+                 "minutes it holds")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   app.add_option("--three-dir", three_dir, "Folder of three.js (Debian's libjs-three)")->capture_default_str();
   int niceness = 10;
   app.add_option("--nice", niceness,

@@ -11,6 +11,7 @@
 #include "auth/message_auth.h"
 #include "calib/node/calibration_session.h"
 #include "cloud/cloud_filter.h"
+#include "detect/thumbnail_frame.h"
 #include "fuzz_support.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/image_codec.h"
@@ -58,15 +59,20 @@ void Use(const stereo_frame_t& frame) {
   Authenticate(frame, ws::channel::kStereoImages);
   Use(frame.left);
   if (!ws::IsNoImage(frame.right)) Use(frame.right);  // a one-camera rig's (stereo-capture --mono)
-  // stereo-view makes a thumbnail of a frame the board was found in.
-  ws::view::BlobStore blobs;
-  ws::view::ViewList list(blobs);
+  // stereo-detect makes a thumbnail of a frame it found the board in, and
+  // stereo-view lists what comes on STEREO_THUMBNAILS (a frame as any other).
   widestereo::stereo_corners_t corners{};
   corners.frame_id = frame.frame_id;
   corners.utime = frame.utime;
   corners.left.n = 1;
   try {
-    list.Found(corners, frame);
+    ws::ThumbnailFrame(frame, corners);
+  } catch (const ws::DecodeError&) {
+  }
+  ws::view::BlobStore blobs;
+  ws::view::ViewList list(blobs);
+  try {
+    list.Found(frame);
   } catch (const ws::DecodeError&) {
   }
 }

@@ -5,11 +5,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "launch_fixture.h"
 #include "lcm_io/channels.h"
 #include "lcm_io/lcm_log.h"
 #include "widestereo/disparity_t.hpp"
+#include "widestereo/process_status_t.hpp"
 
 namespace {
 
@@ -51,8 +53,10 @@ TEST(LaunchRig, RunLaunchOnAFolderAndACalibrationGivenByRigFileAndSet) {
   EXPECT_NE(record.find("--calib " + dir + "/rig1/calib.yaml"), std::string::npos) << record;
   for (const char* process : {"stereo-capture", "stereo-match", "stereo-cloud", "stereo-health"})
     EXPECT_NE(record.find(std::string(process) + " stopped (code 0)"), std::string::npos) << record;
-  // Depth came out of the user's pairs with the user's calibration.
-  EXPECT_GT(Messages<widestereo::disparity_t>(ReadLog(run_dir + "/run.lcmlog"), ws::channel::kStereoDisparity).size(), 0u);
+  // Depth came out of the user's pairs with the user's calibration (in the
+  // rolling recording's newest file: 8 s fill less than one).
+  EXPECT_GT(Messages<widestereo::disparity_t>(ReadLog(run_dir + "/run.lcmlog.0"), ws::channel::kStereoDisparity).size(),
+            0u);
   EXPECT_EQ(TrackedFilesState(), before) << "the launch changed tracked files";
 }
 
@@ -87,27 +91,41 @@ TEST(LaunchRig, RecordingStopsAtMaxLogMbAndTheProcessesGoOn) {
 
 // A rolling recording never stops: the newest max_log_mb in ten files
 // (each split once past a tenth of it, so one message more at most), each a
-// complete log, the oldest deleted.
-TEST(LaunchRig, ARollingRecordingKeepsTheNewestMaxLogMb) {
+// complete log, the oldest deleted; the run launch records so (its
+// rolling_log), and stereo-view's heartbeat says how long it spans. Files of
+// those names the recording did not write (a reused run folder) are kept.
+TEST(LaunchRig, TheRunLaunchKeepsTheNewestMaxLogMbAndNoFileItDidNotWrite) {
   const std::string run_dir = TempDir("launch-rolling");
+  const std::string log = run_dir + "/run.lcmlog";
+  std::ofstream(log + ".3") << "an earlier launch's";
   const CommandResult r = RunCommand(
-      LaunchCommand("config/launch/calibrate.yaml", UniqueUdpmUrl(2) + "&recv_buf_size=16777216", run_dir,
-                    {"--max-log-mb", "3", "--rolling-log", "--duration", "10", "--set", "stereo-capture.rate=3"}),
+      LaunchCommand("config/launch/run.yaml", UniqueUdpmUrl(2) + "&recv_buf_size=16777216", run_dir,
+                    {"--max-log-mb", "3", "--duration", "10", "--set", "stereo-capture.rate=3"}),
       90);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string record = LaunchLog(run_dir);
   EXPECT_EQ(record.find("recording stopped"), std::string::npos) << record;
   EXPECT_NE(record.find("a rolling window of the last 3 MB"), std::string::npos) << record;
-  const std::string log = run_dir + "/calibrate.lcmlog";
-  EXPECT_TRUE(fs::exists(log + ".1")) << "a new file once one passed 0.3 MB";
+  EXPECT_NE(record.find("kept " + log + ".3 of an earlier launch as " + log + ".3."), std::string::npos) << record;
+  bool kept = false;
+  for (const auto& entry : fs::directory_iterator(run_dir))
+    if (entry.path().string().rfind(log + ".3.", 0) == 0)
+      kept = std::string(std::istreambuf_iterator<char>(std::ifstream(entry.path()).rdbuf()), {}) ==
+             "an earlier launch's";
+  EXPECT_TRUE(kept) << "the earlier file, moved out of the recording's way";
+  EXPECT_TRUE(fs::exists(log + ".9")) << "ten files: <log>.0 to <log>.9";
   EXPECT_FALSE(fs::exists(log + ".10")) << "ten files at most: the oldest deleted";
   EXPECT_FALSE(fs::exists(log));
+  bool said_rolling = false;
   for (int i = 0; i <= 9; ++i) {
     const std::string file = log + "." + std::to_string(i);
     if (!fs::exists(file)) continue;
     EXPECT_TRUE(ws::ScanLcmLog(file).complete()) << file;
     EXPECT_LT(fs::file_size(file), 6u * 1000 * 1000) << file << ": 0.3 MB and one message at most";
+    for (const auto& status : Messages<widestereo::process_status_t>(ReadLog(file), ws::channel::kProcessStatus))
+      said_rolling |= status.name == "stereo-view" && status.state.rfind("recording rolling: the last ", 0) == 0;
   }
+  EXPECT_TRUE(said_rolling) << "stereo-view's state: recording rolling: the last N min";
 }
 
 }  // namespace

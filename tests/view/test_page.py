@@ -3,6 +3,7 @@ the simulated rig's processes on a bus of their own (udpm, ttl 0), lcm-logger
 recording it, and the page checked against what the bus carried."""
 import json
 import os
+import re
 import signal
 import socket
 import time
@@ -18,7 +19,7 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
 import widestereo
-from view_support import CALIBRATION, free_port, key_file, until
+from view_support import BIN, CALIBRATION, free_port, key_file, until
 
 
 @pytest.fixture(scope="module")
@@ -213,6 +214,56 @@ def test_calibration_view_coaches_and_sends_commands_only_with_the_key(bus, brow
     assert len(commands) == 2 and all(" pid %d" % keyed.pid in s for s in senders), senders
     assert commands[0].command == "solve" and commands[0].auth.key_id != 0
     assert commands[1].command == "remove" and list(commands[1].args) == ["frame=%d" % frame_id, "utime=%d" % utime]
+
+
+def listed_views(port, enough, timeout):
+    """The page's views list as one event stream keeps it (the whole list,
+    then its changes), once `enough(views)` holds."""
+    views, topic, deadline = {}, None, time.time() + timeout
+    with urllib.request.urlopen("http://127.0.0.1:%d/events?view=calibration" % port, timeout=10) as stream:
+        for line in stream:
+            line = line.decode().rstrip("\n")
+            if line.startswith("event: "):
+                topic = line[len("event: "):]
+            elif line.startswith("data: ") and topic == "views":
+                update = json.loads(line[len("data: "):])
+                if "views" in update:
+                    views = {}
+                for view in update.get("views", []) + update.get("put", []):
+                    views[(view["frame_id"], view["utime"])] = view
+                for key in update.get("gone", []):
+                    views.pop(tuple(key), None)
+                if enough(views):
+                    return list(views.values())
+            assert time.time() < deadline, "the views listed: %d" % len(views)
+
+
+@pytest.mark.recorded("STEREO_THUMBNAILS|STEREO_CORNERS|CALIBRATION_VIEWS")
+def test_thumbnails_every_view_has_one_though_this_page_heard_no_image(bus):
+    # The images go from stereo-capture to stereo-detect on a bus of their
+    # own: stereo-view drops every image message, as a loaded one drops some,
+    # and still draws each view with the thumbnail stereo-detect sent.
+    bus_port = int(re.search(r":(\d+)\?", bus.url).group(1))
+    images_url = bus.url.replace(":%d?" % bus_port, ":%d?" % (bus_port + 1))
+    port = free_port()
+    view = bus.start("stereo-view", ["--port", str(port)])
+    bus.page(port, view)
+    bus.start(os.path.join(BIN, "stereo-capture"), ["--source", "sim:config/sim/default.yaml", "--rate", "2", "--loop",
+                                                    "--out-url", images_url, "--log-dir", bus.folder], own=False)
+    bus.start(os.path.join(BIN, "stereo-detect"), ["--board", "chessboard:9x6:0.05", "--in-url", images_url,
+                                                   "--out-url", bus.url, "--log-dir", bus.folder], own=False)
+    bus.start("stereo-calibrate", ["--model", "poly6", "--nonradial", "none", "--board-warp", "off",
+                                   "--out", os.path.join(bus.folder, "calib.yaml")])
+    views = listed_views(port, lambda views: len(views) >= 3, 180)
+    assert [v["frame_id"] for v in views if not v["thumbnail"]] == [], "views without a thumbnail"
+    thumbnail = urllib.request.urlopen("http://127.0.0.1:%d/%s" % (port, views[0]["thumbnail"]), timeout=10).read()
+    image = cv2.imdecode(np.frombuffer(thumbnail, np.uint8), cv2.IMREAD_UNCHANGED)
+    assert image.shape[1] == 128 and image.shape[0] == 96
+    bus.stop()
+    thumbnails = bus.events("STEREO_THUMBNAILS")
+    assert thumbnails and all((t.left.width, t.right.width) == (128, 0) for t in thumbnails)
+    boards = {c.frame_id for c in bus.events("STEREO_CORNERS") if c.left.n > 0 or c.right.n > 0}
+    assert boards and boards <= {t.frame_id for t in thumbnails}, "a frame with a board and no thumbnail"
 
 
 def view_counters(bus, pid):

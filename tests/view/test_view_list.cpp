@@ -60,9 +60,8 @@ widestereo::calibration_views_t Views(const std::vector<widestereo::calibration_
 TEST(ViewList, EveryViewWhoseFrameHadABoardGetsAThumbnailOfTheSideThatSawIt) {
   BlobStore blobs;
   ViewList list(blobs);
-  list.Found(Corners(1, 54, 54), Frame(1));
-  list.Found(Corners(2, 0, 54), Frame(2, ws::Compression::jpeg));
-  list.Found(Corners(3, 0, 0), Frame(3));  // no board: nothing made
+  list.Found(ws::ThumbnailFrame(Frame(1), Corners(1, 54, 54)));
+  list.Found(ws::ThumbnailFrame(Frame(2, ws::Compression::jpeg), Corners(2, 0, 54)));  // no thumbnail of frame 3
   const auto update = list.Event(Views({View(1), View(2), View(3)}));
   ASSERT_TRUE(update);
   const json whole = json::parse(update->whole);
@@ -73,7 +72,7 @@ TEST(ViewList, EveryViewWhoseFrameHadABoardGetsAThumbnailOfTheSideThatSawIt) {
     const auto blob = blobs.Get(std::stoll(whole["views"][i]["thumbnail"].get<std::string>().substr(5)));
     ASSERT_TRUE(blob);
     const cv::Mat thumbnail = cv::imdecode(blob->bytes, cv::IMREAD_GRAYSCALE);
-    EXPECT_EQ(thumbnail.size(), cv::Size(ws::view::kThumbnailWidth, 96));
+    EXPECT_EQ(thumbnail.size(), cv::Size(ws::kThumbnailWidth, 96));
     EXPECT_GT(thumbnail.at<uint8_t>(20, 20), 150) << "the image's bright square, scaled";
     EXPECT_LT(thumbnail.at<uint8_t>(80, 110), 90);
   }
@@ -88,7 +87,7 @@ TEST(ViewList, EachUpdateCarriesOnlyWhatChangedBesideTheWholeList) {
   ASSERT_TRUE(first);
   EXPECT_FALSE(list.Event(Views(views))) << "nothing changed: nothing sent";
 
-  list.Found(Corners(300, 54, 54), Frame(300));
+  list.Found(ws::ThumbnailFrame(Frame(300), Corners(300, 54, 54)));
   views.push_back(View(300));
   views.erase(views.begin() + 7);
   const auto second = list.Event(Views(views));
@@ -116,7 +115,8 @@ TEST(ViewList, ThumbnailsWaitingForTheirViewAreBounded) {
   BlobStore blobs;
   ViewList list(blobs);
   const int64_t made = int64_t(ws::view::kCandidatesKept) + 5;
-  for (int64_t id = 0; id < made; ++id) list.Found(Corners(id, 54, 0), Frame(id, ws::Compression::none));
+  for (int64_t id = 0; id < made; ++id)
+    list.Found(ws::ThumbnailFrame(Frame(id, ws::Compression::none), Corners(id, 54, 0)));
   const json whole = json::parse(list.Event(Views({View(0), View(made - 1)}))->whole);
   EXPECT_TRUE(whole["views"][0]["thumbnail"].is_string()) << "the newest candidate is kept";
   EXPECT_TRUE(whole["views"][1]["thumbnail"].is_null()) << "the oldest is forgotten";
@@ -128,7 +128,7 @@ TEST(ViewList, AFrameThatCannotBeDecodedMakesNoThumbnail) {
   auto frame = Frame(1);
   frame.left.data.resize(frame.left.data.size() / 2);  // a payload cut short
   frame.left.size = int32_t(frame.left.data.size());
-  EXPECT_THROW(list.Found(Corners(1, 54, 54), frame), ws::DecodeError);
+  EXPECT_THROW(list.Found(frame), ws::DecodeError);
   EXPECT_TRUE(json::parse(list.Event(Views({View(1)}))->whole)["views"][0]["thumbnail"].is_null());
 }
 

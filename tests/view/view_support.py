@@ -53,7 +53,7 @@ class Bus:
         argv = [executable] + args
         if own:
             argv += ["--in-url", self.url, "--out-url", self.url, "--log-dir", self.folder]
-        out = open(os.path.join(self.folder, "%s-%d.out" % (name, len(self.processes))), "w")
+        out = open(os.path.join(self.folder, "%s-%d.out" % (os.path.basename(name), len(self.processes))), "w")
         process = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, cwd=SOURCE)
         self.processes.append((name, process, out.name))
         return process

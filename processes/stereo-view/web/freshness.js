@@ -51,13 +51,13 @@ function showFreshness() {
     lines.push(`Stale: no ${channel} from ${f.source || "its sender"}${senderState(f.source)} since ` +
                `${clockTime(f.last_us)} (${f.age_s.toFixed(0)} s): what the page shows of it is from then`);
   const rec = clock.recording, notes = [];
-  if (rec && rec.capped)
+  if (rec && rec.capped && !rec.rolling)
     notes.push(`Recording stopped: ${rec.path} reached its cap of ${rec.cap_mb} MB at ${clockTime(rec.capped_us)}; ` +
                "nothing after is recorded (the processes go on; more: --max-log-mb)");
   const banner = $("#stale");
   banner.replaceChildren(...lines.concat(notes).map((text) => Object.assign(document.createElement("div"), { textContent: text })));
   banner.hidden = lines.length + notes.length === 0;
-  banner.dataset.recordingCapped = Boolean(rec && rec.capped);
+  banner.dataset.recordingCapped = Boolean(rec && rec.capped && !rec.rolling);
   banner.dataset.channels = stale.map(([channel]) => channel).join(" ");
   const flowing = Object.values(clock.freshness).some((f) => !f.stale);
   const [text, className, name] = !open ? [source ? "reconnecting…" : "connecting…", "off", "off"]

@@ -265,9 +265,14 @@ function showStatus(status) {
   const rec = status.recording, recording = $("#recording");
   recording.hidden = !rec;
   if (rec) {
-    recording.textContent = rec.capped ? `recording stopped at ${fmt(rec.mb, 0)} MB` :
-      rec.mb === null ? "not recording yet" : `recording ${fmt(rec.mb, 0)} of ${rec.cap_mb} MB`;
-    recording.className = rec.capped ? "warn" : "";
+    // A rolling recording never stops: once full it holds the last minutes, older ones deleted.
+    const span = rec.window_s === null ? "" : ` the last ${fmt(rec.window_s / 60, 1)} min,`;
+    recording.textContent = rec.mb === null ? "not recording yet"
+      : rec.rolling && rec.capped ? `recording rolling:${span} ${fmt(rec.mb, 0)} MB in ${rec.files} files, older deleted`
+      : rec.rolling ? `recording ${fmt(rec.mb, 0)} of ${rec.cap_mb} MB, then rolling`
+      : rec.capped ? `recording stopped at ${fmt(rec.mb, 0)} MB` : `recording ${fmt(rec.mb, 0)} of ${rec.cap_mb} MB`;
+    recording.className = rec.capped && !rec.rolling ? "warn" : "";
+    recording.dataset.rolling = Boolean(rec.rolling && rec.capped);
   }
   if (!state.tabPicked && status.first_view !== document.querySelector(".tab.active").dataset.view) {
     state.tabPicked = true;  // once: then the user's choice
