@@ -194,7 +194,8 @@ def test_every_export_loads_back(kinds, kind, fmt, tmp_path):
         camera = getattr(rig, side)
         pixels, rays = image_pixels(camera, 8)
         if fmt in ("mrcal", "kalibr") and error > 0:  # where the model was fitted
-            assert side in circles, text
+            if not re.search(r"^%s: .*, exactly$" % side, text, re.M):  # a fitted camera names its region
+                assert side in circles, text
             inside = np.linalg.norm(pixels - [camera.parameters["cx"], camera.parameters["cy"]], axis=1) < circles.get(side, np.inf) - 0.1
             pixels, rays = pixels[inside], rays[inside]
         worst = np.linalg.norm(getattr(back, side).project(rays) - camera.project(rays), axis=1).max()
