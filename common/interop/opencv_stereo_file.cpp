@@ -7,6 +7,7 @@
 
 #include "interop/foreign_camera.h"
 #include "interop/opencv_lens.h"
+#include "rig/camera_fields.h"
 #include "rig/rig_file.h"
 #include "rig/yaml_reader.h"
 #include "runtime/atomic_file.h"
@@ -33,27 +34,15 @@ int ImageSize(const YamlReader& in, const cv::FileNode& root, const std::string&
   return in.Int(root, key, key, 1);
 }
 
-// An rows x cols !!opencv-matrix (as OpenCV writes K, R, T and P).
-cv::Mat Mat(const YamlReader& in, const cv::FileNode& root, const std::string& key, int rows, int cols) {
-  cv::Mat mat;
-  cv::eigen2cv(in.Matrix(root, key, key, rows, cols), mat);
-  return mat;
-}
-
 std::shared_ptr<const CameraProjection> ReadCamera(const YamlReader& in, const cv::FileNode& root,
                                                    const std::string& k_key, const std::string& d_key,
                                                    bool fisheye, int width, int height) {
-  const cv::Mat K = Mat(in, root, k_key, 3, 3);
-  // At most OpenCV's longest D, CALIB_TILTED_MODEL's 14.
-  const std::vector<double> d = in.Reals(root, d_key, d_key, 14);
-  if (K.at<double>(0, 1) != 0 || K.at<double>(1, 0) != 0 || K.at<double>(2, 0) != 0 ||
-      K.at<double>(2, 1) != 0 || K.at<double>(2, 2) != 1)
-    in.Fail(k_key, "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
   CameraModel m;
   m.image_width = width;
   m.image_height = height;
-  m.fx = K.at<double>(0, 0), m.fy = K.at<double>(1, 1);
-  m.cx = K.at<double>(0, 2), m.cy = K.at<double>(1, 2);
+  ReadCameraMatrix(in, root, k_key, k_key, &m);
+  // At most OpenCV's longest D, CALIB_TILTED_MODEL's 14.
+  const std::vector<double> d = in.Reals(root, d_key, d_key, 14);
   try {
     if (fisheye) {
       if (d.size() != 4) in.Fail(d_key, "a fisheye D has 4 coefficients");
@@ -81,7 +70,7 @@ std::shared_ptr<const CameraProjection> ReadCamera(const YamlReader& in, const c
 // rectified image, side by side (R = I), the right one at P2's x
 // translation -f baseline.
 AnyRig RectifiedPair(const YamlReader& in, const cv::FileNode& root) {
-  const cv::Mat P[2] = {Mat(in, root, "P1", 3, 4), Mat(in, root, "P2", 3, 4)};
+  const Eigen::MatrixXd P[2] = {in.Matrix(root, "P1", "P1", 3, 4), in.Matrix(root, "P2", "P2", 3, 4)};
   CameraModel m;
   m.image_width = ImageSize(in, root, "rectified_width");
   m.image_height = ImageSize(in, root, "rectified_height");
@@ -89,19 +78,18 @@ AnyRig RectifiedPair(const YamlReader& in, const cv::FileNode& root) {
   AnyRig rig;
   rig.format = "opencv";
   for (int i = 0; i < 2; ++i) {
-    const cv::Mat& p = P[i];
-    if (p.at<double>(0, 1) != 0 || p.at<double>(1, 0) != 0 || p.at<double>(2, 0) != 0 || p.at<double>(2, 1) != 0 ||
-        p.at<double>(2, 2) != 1 || p.at<double>(1, 3) != 0 || p.at<double>(2, 3) != 0 ||
-        p.at<double>(0, 0) != P[0].at<double>(0, 0))
+    const Eigen::MatrixXd& p = P[i];
+    if (p(0, 1) != 0 || p(1, 0) != 0 || p(2, 0) != 0 || p(2, 1) != 0 || p(2, 2) != 1 || p(1, 3) != 0 ||
+        p(2, 3) != 0 || p(0, 0) != P[0](0, 0))
       in.Fail(i == 0 ? "P1" : "P2", "not a rectified pinhole camera [f 0 cx tx; 0 f cy 0; 0 0 1 0]");
-    m.fx = p.at<double>(0, 0), m.fy = p.at<double>(1, 1), m.cx = p.at<double>(0, 2), m.cy = p.at<double>(1, 2);
+    m.fx = p(0, 0), m.fy = p(1, 1), m.cx = p(0, 2), m.cy = p(1, 2);
     try {
       (i == 0 ? rig.left : rig.right) = std::make_shared<WidestereoProjection>(m);
     } catch (const std::invalid_argument& e) {
       in.Fail(i == 0 ? "P1" : "P2", e.what());
     }
   }
-  rig.T = Eigen::Vector3d(P[1].at<double>(0, 3) / m.fx, 0, 0);
+  rig.T = Eigen::Vector3d(P[1](0, 3) / m.fx, 0, 0);
   if (rig.T.x() == 0) in.Fail("P2", "no baseline (P2's x translation is 0)");
   return rig;
 }

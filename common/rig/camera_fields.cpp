@@ -92,14 +92,7 @@ CameraModel ReadCameraFields(const YamlReader& in, const cv::FileNode& node, con
   CameraModel m;
   m.image_width = in.Int(node, "image_width", at + "image_width", 1);
   m.image_height = in.Int(node, "image_height", at + "image_height", 1);
-  const Eigen::MatrixXd K = in.Matrix(node, "camera_matrix", at + "camera_matrix", 3, 3);
-  if (K(0, 1) != 0 || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
-    in.Fail(at + "camera_matrix", "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
-  if (!(K(0, 0) > 0) || !(K(1, 1) > 0)) in.Fail(at + "camera_matrix", "fx and fy must be positive");
-  m.fx = K(0, 0);
-  m.fy = K(1, 1);
-  m.cx = K(0, 2);
-  m.cy = K(1, 2);
+  ReadCameraMatrix(in, node, "camera_matrix", at + "camera_matrix", &m);
   Distortion& d = m.distortion;
   d.kind = ReadModelKind(in, node, at + "model");
   const ModelTraits& traits = Traits(d.kind);
@@ -131,6 +124,18 @@ CameraModel ReadCameraFields(const YamlReader& in, const cv::FileNode& node, con
     in.Fail(at + coeffs_key, e.what());
   }
   return m;
+}
+
+void ReadCameraMatrix(const YamlReader& in, const cv::FileNode& node, const std::string& key, const std::string& field,
+                      CameraModel* m) {
+  const Eigen::MatrixXd K = in.Matrix(node, key, field, 3, 3);
+  if (K(0, 1) != 0 || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
+    in.Fail(field, "not of the form [fx 0 cx; 0 fy cy; 0 0 1]");
+  if (!(K(0, 0) > 0) || !(K(1, 1) > 0)) in.Fail(field, "fx and fy must be positive");
+  m->fx = K(0, 0);
+  m->fy = K(1, 1);
+  m->cx = K(0, 2);
+  m->cy = K(1, 2);
 }
 
 ModelKind ReadModelKind(const YamlReader& in, const cv::FileNode& node, const std::string& field) {

@@ -32,6 +32,13 @@ void WriteCameraFields(cv::FileStorage& fs, const CameraModel& m);
 // side. Throws YamlFieldError.
 CameraModel ReadCameraFields(const YamlReader& in, const cv::FileNode& node, const std::string& at);
 
+// fx, fy, cx, cy from the 3 x 3 camera matrix under `key` (`field` in
+// messages), of the form [fx 0 cx; 0 fy cy; 0 0 1] with positive focal
+// lengths (OpenCV's K, as the calibration file and OpenCV's own files hold
+// it). Throws YamlFieldError.
+void ReadCameraMatrix(const YamlReader& in, const cv::FileNode& node, const std::string& key, const std::string& field,
+                      CameraModel* m);
+
 // The model kind named by node's "model" (`field` in messages).
 ModelKind ReadModelKind(const YamlReader& in, const cv::FileNode& node, const std::string& field);
 
