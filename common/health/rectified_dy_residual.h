@@ -15,6 +15,7 @@
 // Only the direction of T enters: the baseline's length changes no row.
 #pragma once
 
+#include <ceres/jet.h>
 #include <ceres/rotation.h>
 
 namespace ws {

@@ -1,6 +1,7 @@
 #include "models/bspline_basis.h"
 
 #include <algorithm>
+#include <ceres/jet.h>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -47,6 +48,17 @@ int FindSpan(const std::vector<double>& knots, int degree, double r) {
   int span = static_cast<int>(end - knots.begin()) - 1;
   while (empty(span)) --span;  // at or past t_n: last non-empty span
   return span;
+}
+
+void NonZeroBasisWithSlopes(const std::vector<double>& knots, int degree, int span, double r,
+                            double* values, double* slopes) {
+  using Dual = ceres::Jet<double, 1>;
+  Dual basis[kMaxSplineDegree + 1];
+  NonZeroBasis(knots, degree, span, Dual(r, 0), basis);
+  for (int j = 0; j <= degree; ++j) {
+    values[j] = basis[j].a;
+    slopes[j] = basis[j].v[0];
+  }
 }
 
 std::vector<double> EvaluateBasis(const std::vector<double>& knots, int degree, double r) {

@@ -67,6 +67,11 @@ void NonZeroBasis(const std::vector<double>& knots, int degree, int span, const 
   }
 }
 
+// NonZeroBasis at r, with each value's derivative d/dr in slopes[j]: the
+// recursion run on the dual number r + dr.
+void NonZeroBasisWithSlopes(const std::vector<double>& knots, int degree, int span, double r,
+                            double* values, double* slopes);
+
 // All n basis values at r (zero outside their support): one row of the
 // collocation matrix A of Eq. 9.
 std::vector<double> EvaluateBasis(const std::vector<double>& knots, int degree, double r);

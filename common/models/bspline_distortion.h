@@ -33,8 +33,6 @@
 #include <string>
 #include <vector>
 
-#include <ceres/jet.h>
-
 #include "models/bspline_basis.h"
 #include "models/distortion.h"
 #include "models/model_kind.h"
@@ -78,18 +76,17 @@ class Bspline {
   // dB = sum_j N_j(r0) d alpha_j + (sum_j alpha_j N_j'(r0)) dr.
   template <typename T>
   T RadialDistortion(const T* coeffs, const T& r) const {
-    using Dual = ceres::Jet<double, 1>;
     const double r0 = ScalarPart(r);
     const int span = FindSpan(knots_, degree_, r0);
-    Dual basis[kMaxSplineDegree + 1];
-    NonZeroBasis(knots_, degree_, span, Dual(r0, 0), basis);
+    double basis[kMaxSplineDegree + 1], slopes[kMaxSplineDegree + 1];
+    NonZeroBasisWithSlopes(knots_, degree_, span, r0, basis, slopes);
     T sum(0.0);
     double slope = 0;
     for (int j = 0; j <= degree_; ++j) {
       const int coeff = FirstOfSpan(span) + j;
       if (coeff < 0) continue;
-      sum += coeffs[coeff] * basis[j].a;
-      slope += ScalarPart(coeffs[coeff]) * basis[j].v[0];
+      sum += coeffs[coeff] * basis[j];
+      slope += ScalarPart(coeffs[coeff]) * slopes[j];
     }
     return sum + (r - r0) * slope;
   }

@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "models/projection.h"
+
 namespace ws {
 namespace {
 

@@ -24,8 +24,8 @@
 
 #include "models/distortion.h"
 #include "models/distortion_function.h"
+#include "models/intrinsics.h"
 #include "models/nonradial_field.h"
-#include "models/projection.h"
 
 namespace ws {
 
@@ -37,7 +37,7 @@ struct CameraModel {
   Distortion distortion;                  // D(r), with r in normalized coordinates
   NonRadial nonradial;                    // F; empty: none
 
-  // {fx, fy, cx, cy, p1, p2}, indexed by kFx..kP2 (projection.h).
+  // {fx, fy, cx, cy, p1, p2}, indexed by kFx..kP2 (intrinsics.h).
   std::array<double, kNumIntrinsics> Intrinsics() const { return {fx, fy, cx, cy, p1, p2}; }
 };
 

@@ -20,14 +20,12 @@
 
 #include <ceres/jet.h>
 
+#include "models/intrinsics.h"
 #include "models/nonradial_field.h"
 #include "models/radial_coordinate.h"
 #include "models/scalar_part.h"
 
 namespace ws {
-
-// Indices into the intrinsics array, and its size.
-constexpr int kFx = 0, kFy = 1, kCx = 2, kCy = 3, kP1 = 4, kP2 = 5, kNumIntrinsics = 6;
 
 // The distorted normalized point (x_d, y_d) of the ideal point (x, y).
 template <typename Model, typename T>

@@ -68,6 +68,16 @@ only_core "widestereo-core's link flags" "$(pkg-config --libs widestereo-core)"
 c++ -std=c++17 -O0 "$work/examples/use_calibration.cpp" -o "$work/use_calibration_pc" \
   $(pkg-config --cflags --libs widestereo-core)
 "$work/use_calibration_pc" "$calibration"
+# The headers it reads: the core's own and its packages', nothing of Ceres
+# (the core compiles without libceres-dev's headers).
+headers=$(c++ -std=c++17 -M "$work/examples/use_calibration.cpp" $(pkg-config --cflags widestereo-core) |
+  tr ' \\' '\n\n' | grep '\.h')
+grep -q "include/widestereo/models/camera_model.h" <<< "$headers" ||
+  { echo "FAIL: the header list does not hold the core's camera_model.h"; exit 1; }
+if grep ceres <<< "$headers"; then
+  echo "FAIL: the core's headers include the Ceres headers above"
+  exit 1
+fi
 
 # A component the package has not: find_package says which it has.
 mkdir "$work/nosuch"

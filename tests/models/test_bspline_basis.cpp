@@ -1,3 +1,4 @@
+#include <ceres/jet.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,6 +60,29 @@ TEST(BsplineBasis, MatchesTheDeBoorCoxDefinition) {
       for (int i = 0; i < n; ++i)
         EXPECT_NEAR(basis[i], DeBoorCox(c.knots, i, c.degree, r), 1e-14)
             << "N_" << i << "," << c.degree << "(" << r << ")";
+    }
+  }
+}
+
+TEST(BsplineBasis, SlopesAreTheDerivativesOfTheSpansPolynomials) {
+  for (const KnotCase& c : KnotCases()) {
+    const int n = NumBasisFunctions(c.knots, c.degree);
+    const double a = c.knots[c.degree], b = c.knots[n], h = 1e-6;
+    for (int s = 1; s < 100; ++s) {
+      const double r = a + (b - a) * s / 100;
+      const int span = FindSpan(c.knots, c.degree, r);
+      double values[kMaxSplineDegree + 1], slopes[kMaxSplineDegree + 1];
+      double plain[kMaxSplineDegree + 1], above[kMaxSplineDegree + 1], below[kMaxSplineDegree + 1];
+      NonZeroBasisWithSlopes(c.knots, c.degree, span, r, values, slopes);
+      NonZeroBasis(c.knots, c.degree, span, r, plain);
+      NonZeroBasis(c.knots, c.degree, span, r + h, above);  // the same span's polynomial
+      NonZeroBasis(c.knots, c.degree, span, r - h, below);
+      for (int j = 0; j <= c.degree; ++j) {
+        EXPECT_NEAR(values[j], plain[j], 1e-15);  // the dual number's division rounds apart
+        const double central = (above[j] - below[j]) / (2 * h);
+        EXPECT_NEAR(slopes[j], central, 1e-6 * (1 + std::abs(central)))
+            << "N'_" << span - c.degree + j << "," << c.degree << "(" << r << ")";
+      }
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "calib/solver/quality.h"
+#include "models/projection.h"
 
 namespace ws::calib {
 namespace {

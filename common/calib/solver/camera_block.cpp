@@ -6,6 +6,7 @@
 
 #include "calib/solver/nonradial_prior.h"
 #include "calib/solver/smoothness_prior.h"
+#include "models/projection.h"
 
 namespace ws::calib {
 namespace {

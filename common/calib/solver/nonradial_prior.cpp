@@ -1,6 +1,7 @@
 #include "calib/solver/nonradial_prior.h"
 
 #include "calib/solver/field_blocks.h"
+#include "models/projection.h"
 
 #include <ceres/cost_function.h>
 #include <ceres/jet.h>
