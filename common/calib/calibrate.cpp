@@ -17,6 +17,7 @@
 #include "calib/evaluate/heldout.h"
 #include "calib/mono_solve.h"
 #include "calib/solver/stage_log.h"
+#include "calib/start/angle_start.h"
 #include "calib/stereo_solve.h"
 #include "models/model_registry.h"
 
@@ -274,6 +275,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
   std::vector<std::optional<StereoCalibration>> solved(kinds.size());
   std::vector<std::string> errors(kinds.size());
   std::vector<std::shared_ptr<RadialStates>> radial(kinds.size());  // each model's, for its field
+  const auto angle_starts = std::make_shared<AngleStarts>();  // solved once for the angle models
   std::exception_ptr stopped;
   std::mutex done_mutex;
   int done = 0;
@@ -282,7 +284,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
       if (field_after) radial[k] = std::make_shared<RadialStates>();
       solved[k] = SolveModel(data, options,
                              {kinds[k], field_after ? FieldRule::kNone : options.nonradial,
-                              options.flow, std::nullopt, radial[k], nullptr});
+                              options.flow, std::nullopt, radial[k], nullptr, angle_starts});
     } catch (const CalibrationError& e) {
       errors[k] = e.what();
     } catch (...) {  // Stopped: the run ends
@@ -340,7 +342,7 @@ ModelCalibrations CalibrateStereoAllModels(const StereoData& data,
       results.solved[results.chosen] =
           SolveModel(data, options,
                      {chosen, options.nonradial, solved_radially.flow, solved_radially.inconsistent_views,
-                      nullptr, radial[k]});
+                      nullptr, radial[k], nullptr});
     } catch (const CalibrationError& e) {  // the radial solution stands
       results.failed.push_back({ModelName(chosen) + " with a non-radial field", e.what()});
     }

@@ -13,6 +13,7 @@
 #include "calib/solver/corner_noise.h"
 #include "calib/solver/outliers.h"
 #include "calib/solver/stage_log.h"
+#include "calib/start/angle_start.h"
 #include "calib/start/pose_fit.h"
 
 namespace ws::calib {
@@ -409,55 +410,80 @@ void ChooseField(const CalibrationOptions& options, FieldRule rule, const std::s
 // outlier rejection, to kRankingTolerance) and cross-validated, until two
 // counts in a row do no better than the best held-out RMS while fitting
 // about as well as the best fit (kMissedFit); then the count the rule of
-// selection.h keeps solved as any count is (SolveAll).
-void ChooseKnots(const CalibrationOptions& options, const std::string& what, MonoState* s) {
+// selection.h keeps solved as any count is (SolveAll). The counts run
+// `cores` at a time, each on a copy of the state from the same start; the
+// ladder is judged in order, so a stop wastes at most the ones solved
+// beside it, and the outcome is the one of the counts solved one by one.
+void ChooseKnots(const CalibrationOptions& options, const std::string& what, int cores,
+                 MonoState* s) {
   const SplineOptions& asked = options.spline;
   const CameraBlock solved = s->problem.cameras[0];
   const double r_max = FieldEnd(solved);
-  const std::vector<Pose> poses = s->poses;
+  struct Count {
+    CameraBlock camera;
+    double rms_px;
+    CrossValidation heldout;
+  };
+  const MonoState start = *s;  // read by the counts beside this thread, which writes *s
+  auto solve_count = [&](int knots) {
+    MonoState state = start;
+    state.problem = MaskedProblem(ForField(solved, {knots, asked.degree, asked.smoothness}, r_max),
+                                  &state, &state.inliers, 1);
+    SolveSettings settings =
+        StageSettings(options, what + " with " + std::to_string(knots) + " knots", options.max_iterations);
+    settings.tolerance = kRankingTolerance;
+    Solve(state.problem, settings);
+    return Count{state.problem.cameras[0], Rms(Residuals(state.problem, 0)),
+                 CrossValidate(state.problem, options.cv_folds)};
+  };
   std::vector<CameraBlock> solves;
   std::vector<CrossValidation> cvs;
   size_t best = 0;
   double best_fit = INFINITY;  // the lowest fitted RMS so far
   int saturated = 0;           // counts in a row that fit about as well as the best fit
+  bool stopped = false;
+  const int most = int(std::size(kKnotLadder));
+  const int at_once = std::max(cores, 1);
   const auto knots_start = std::chrono::steady_clock::now();
-  for (int knots : kKnotLadder) {
-    const SplineOptions spline{knots, asked.degree, asked.smoothness};
-    s->poses = poses;
-    const std::string trial = what + " with " + std::to_string(knots) + " knots";
-    s->problem = MaskedProblem(ForField(solved, spline, r_max), s, &s->inliers, 1);
-    SolveSettings settings = StageSettings(options, trial, options.max_iterations);
-    settings.tolerance = kRankingTolerance;
-    Solve(s->problem, settings);
-    const CrossValidation cv = CrossValidate(s->problem, options.cv_folds);
-    if (cv.folds == 0) throw CalibrationError(what + ": too few views to cross-validate the knots");
-    s->knot_curve.push_back(
-        {knots, Rms(Residuals(s->problem, 0)), cv.rms_px[0], cv.fold_rms_px[0]});
-    const int tried = int(solves.size()) + 1, most = int(std::size(kKnotLadder));
-    Say(options, trial + ": rms " + Fixed(s->knot_curve.back().rms_px) + " px, held-out " + Fixed(cv.rms_px[0]) +
-                     " px (count " + std::to_string(tried) + " of at most " + std::to_string(most) + ", " +
-                     TimeLeft(knots_start, tried, most) + " at most)");
-    solves.push_back(s->problem.cameras[0]);
-    cvs.push_back(cv);
-    if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;
-    best_fit = std::min(best_fit, s->knot_curve.back().rms_px);
-    saturated = s->knot_curve.back().rms_px <= kMissedFit * best_fit ? saturated + 1 : 0;
-    if (solves.size() >= best + 3 && saturated >= 2) break;
+  for (int first = 0; first < most && !stopped; first += at_once) {
+    // The group's first count on this thread, the others beside it.
+    std::vector<std::future<Count>> group;
+    for (int j = first; j < std::min(first + at_once, most); ++j)
+      group.push_back(std::async(j == first ? std::launch::deferred : std::launch::async, solve_count,
+                                 kKnotLadder[j]));
+    for (size_t j = 0; j < group.size() && !stopped; ++j) {
+      Count count = group[j].get();
+      const int knots = kKnotLadder[first + int(j)];
+      const CrossValidation& cv = count.heldout;
+      if (cv.folds == 0) throw CalibrationError(what + ": too few views to cross-validate the knots");
+      s->knot_curve.push_back({knots, count.rms_px, cv.rms_px[0], cv.fold_rms_px[0]});
+      const int tried = int(solves.size()) + 1;
+      Say(options, what + " with " + std::to_string(knots) + " knots: rms " + Fixed(count.rms_px) +
+                       " px, held-out " + Fixed(cv.rms_px[0]) + " px (count " + std::to_string(tried) +
+                       " of at most " + std::to_string(most) + ", " +
+                       TimeLeft(knots_start, tried, most) + " at most)");
+      solves.push_back(count.camera);
+      cvs.push_back(cv);
+      if (cv.rms_px[0] < s->knot_curve[best].heldout_rms_px) best = solves.size() - 1;
+      best_fit = std::min(best_fit, count.rms_px);
+      saturated = count.rms_px <= kMissedFit * best_fit ? saturated + 1 : 0;
+      stopped = solves.size() >= best + 3 && saturated >= 2;
+    }
   }
   std::vector<Candidate> counts;
   for (size_t i = 0; i < solves.size(); ++i)
     counts.push_back(Scored(std::to_string(s->knot_curve[i].knots) + " knots",
                             int(ParamNames(solves[i]).size()), cvs[i], 0));
   const int chosen = Record(options, Select(s->prepared.name, "knots", counts), s).chosen;
-  s->poses = poses;
   SolveAll(solves[chosen], OnTheCorners(options, what), WarpAlwaysFree(options), options, s);
   s->heldout = cvs[chosen];
 }
 
-// The radial model up to its field: the start, the continuation, the
-// outliers, the knots and the board's bow.
+// The radial model up to its field: the start (plan.angle_starts's of
+// camera_slot where shared), the continuation, the outliers, the knots
+// (`cores` at once) and the board's bow.
 void SolveRadial(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
-                 const ModelPlan& plan, MonoState* s) {
+                 const ModelPlan& plan, int camera_slot, int cores, MonoState* s) {
   // The model (knots, the board's bow, the field) is chosen with no
   // standard deviations on the corners the radial model keeps (OnTheCorners:
   // a board misdetected or bent far beyond a bow would otherwise decide
@@ -472,7 +498,8 @@ void SolveRadial(const CameraData& data, const BoardExtent& board, const Calibra
   s->warp = BoardWarp{{0, 0}, board, false};
   Prepared& p = s->prepared;
   RequireViews(p, options.min_views);
-  const Init init = Initialize(p, options, plan.model);
+  const Init init = Initialize(p, options, plan.model,
+                               plan.angle_starts ? &plan.angle_starts->camera[camera_slot] : nullptr);
   s->poses = init.poses;
   s->inliers.assign(p.views.size(), {});
   for (size_t v = 0; v < p.views.size(); ++v) s->inliers[v].assign(p.views[v].size(), 1);
@@ -564,7 +591,7 @@ void SolveRadial(const CameraData& data, const BoardExtent& board, const Calibra
   if (options.outliers != OutlierRule::kOff)  // the radial model's outliers
     SolveAll(s->problem.cameras[0], RejectingOutliers(options, what + " (gross outliers)"),
              WarpAlwaysFree(options), options, s);
-  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(options, what, s);
+  if (auto_knots && Traits(KindOf(s->problem.cameras[0].model)).spline) ChooseKnots(options, what, cores, s);
   if (options.board_warp == WarpRule::kAuto) ChooseWarp(options, what, s);
 }
 
@@ -577,7 +604,7 @@ void SolveMono(const CameraData& data, const BoardExtent& board, const Calibrati
     *s = radial;
     Restore(Keep(radial), s);  // its problem over this state's own views
   } else {
-    SolveRadial(data, board, options, plan, s);
+    SolveRadial(data, board, options, plan, camera, cores, s);
     if (plan.keep_radial) plan.keep_radial->camera[camera] = *s;
   }
   const std::string what = s->prepared.name + " camera (" + ModelName(plan.model) + ")";

@@ -56,7 +56,8 @@ struct RadialStates {
 // the final solve or chosen by the held-out RMS as options.board_warp says.
 // `camera` is its slot in plan.keep_radial and plan.from_radial (0: left):
 // with from_radial the radial solve is not repeated, its copy resumed.
-// `cores`: how many trials of the field's ladders may be solved at once.
+// `cores`: how many trials of the knots' and the field's ladders may be solved at
+// once (the knots' on threads of their own: beside another model's solve too).
 // Throws CalibrationError.
 void SolveMono(const CameraData& data, const BoardExtent& board, const CalibrationOptions& options,
                const ModelPlan& plan, MonoState* state, int camera = 0, int cores = 1);

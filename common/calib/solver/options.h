@@ -173,6 +173,7 @@ struct CalibrationOptions {
 // first. Whether the pairs were exposed together is the data's, not the
 // lens's: the radial solve's judgement stands for its field.
 struct RadialStates;  // mono_solve.h
+struct AngleStarts;   // calib/start/angle_start.h
 
 struct ModelPlan {
   ModelKind model = ModelKind::kBspline;
@@ -188,10 +189,13 @@ struct ModelPlan {
   // model's field does not solve its radial model again.
   std::shared_ptr<RadialStates> keep_radial;
   std::shared_ptr<const RadialStates> from_radial;
+  // The angle models' start (angle_start.h), shared by the models solved
+  // at once; none: each solves its own.
+  std::shared_ptr<AngleStarts> angle_starts;
 };
 // The plan of the options' own model, non-radial rule and flow.
 inline ModelPlan PlanAsAsked(const CalibrationOptions& options) {
-  return {options.model, options.nonradial, options.flow, std::nullopt, nullptr, nullptr};
+  return {options.model, options.nonradial, options.flow, std::nullopt, nullptr, nullptr, nullptr};
 }
 
 // Throws CalibrationError for options no calibration can use (knots out of

@@ -13,6 +13,7 @@
 // RMS is least. No focal length or field of view is assumed.
 #pragma once
 
+#include <mutex>
 #include <vector>
 
 #include "calib/solver/pose.h"
@@ -28,7 +29,24 @@ struct AngleStartFit {
 };
 
 // Throws CalibrationError when no lens and focal length give a pose to at
-// least min_views views.
+// least min_views views. The grid's lenses are solved on every core.
 AngleStartFit AngleStart(const Prepared& prepared, int min_views);
+
+// One camera's AngleStart, solved once for the angle models that each ask
+// for it on the same views (they run at once: the first to ask solves it,
+// the others wait for it).
+class SharedAngleStart {
+ public:
+  const AngleStartFit& Get(const Prepared& prepared, int min_views);
+
+ private:
+  std::once_flag once_;
+  AngleStartFit fit_;
+};
+
+// Both cameras' (left, right).
+struct AngleStarts {
+  SharedAngleStart camera[2];
+};
 
 }  // namespace ws::calib

@@ -80,12 +80,12 @@ void RequireSpread(const Prepared& p, const std::vector<Pose>& used,
 
 // An angle model's start (angle_start.h): every view its lens can pose
 // keeps its place.
-Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
-  AngleStartFit start = AngleStart(p, options.min_views);
+Init InitializeAngle(Prepared& p, const CalibrationOptions& options, SharedAngleStart* shared) {
+  const AngleStartFit start = shared ? shared->Get(p, options.min_views) : AngleStart(p, options.min_views);
   Init init;
   init.pinhole = start.pinhole;
   init.lens = start.lens;
-  init.poses = std::move(start.poses);
+  init.poses = start.poses;
   std::vector<Pose> used;
   for (size_t v = 0; v < p.views.size(); ++v) {
     if (!p.usable[v]) continue;
@@ -105,11 +105,12 @@ Init InitializeAngle(Prepared& p, const CalibrationOptions& options) {
 
 }  // namespace
 
-Init Initialize(Prepared& p, const CalibrationOptions& options, ModelKind kind) {
+Init Initialize(Prepared& p, const CalibrationOptions& options, ModelKind kind,
+                SharedAngleStart* shared) {
   if (p.width <= 0 || p.height <= 0)
     throw CalibrationError(p.name + " camera: no image size in the corners");
   if (Traits(kind).angle)
-    return InitializeAngle(p, options);
+    return InitializeAngle(p, options, shared);
   const int n = static_cast<int>(p.views.size());
   Init init;
   init.homographies.resize(n);

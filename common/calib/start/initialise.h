@@ -50,8 +50,11 @@ struct Init {
 // skipped. For an angle model `kind` (kb4, bspline_theta) the start of
 // angle_start.h instead, with no homographies. Throws CalibrationError when
 // too few views remain or when the board planes are all within
-// options.min_view_angle_deg of parallel.
-Init Initialize(Prepared& prepared, const CalibrationOptions& options, ModelKind kind);
+// options.min_view_angle_deg of parallel. With `shared`, an angle model's
+// start is the one every angle model of these views shares.
+class SharedAngleStart;
+Init Initialize(Prepared& prepared, const CalibrationOptions& options, ModelKind kind,
+                SharedAngleStart* shared = nullptr);
 
 // The camera of the start: the model of `kind` with only fx fy cx cy free
 // (PinholeBlock) on the start's lens: D = 0 (a pinhole for the
