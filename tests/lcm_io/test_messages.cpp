@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lcm_io/decode.h"
+#include "lcm_io/point_cloud.h"
 #include "test_support.h"
 
 namespace {
@@ -245,6 +246,65 @@ TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
     bad[npoints_at] = first_byte;  // -16777216 or 2^31-ish points in a 40-byte message
     EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(bad.data(), int(bad.size())), ws::DecodeError);
   }
+}
+
+// stereo-match and stereo-cloud send and take their clouds as ws::PointCloud
+// (its points in one array): the bytes of point_cloud_t, both ways, and the
+// same refusals.
+TEST(Messages, PointCloudIsPointCloudTOnTheWire) {
+  point_cloud_t generated{};
+  generated.utime = 6;
+  generated.frame_id = 9;
+  generated.frame = "left_rectified";
+  generated.npoints = 3;
+  generated.xyz = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}};
+  generated.nintensity = 3;
+  generated.intensity = {10, 20, 255};
+  ws::PointCloud flat;
+  flat.utime = 6;
+  flat.frame_id = 9;
+  flat.frame = "left_rectified";
+  flat.npoints = 3;
+  flat.xyz = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}};
+  flat.nintensity = 3;
+  flat.intensity = {10, 20, 255};
+  const auto bytes = Encode(generated);
+  EXPECT_EQ(Encode(flat), bytes);
+  EXPECT_EQ(flat.getEncodedSize(), generated.getEncodedSize());
+  const auto decoded = ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(bytes.size()));
+  EXPECT_EQ(Encode(decoded), bytes);
+  EXPECT_EQ(decoded.xyz, flat.xyz);
+  EXPECT_EQ(decoded.frame, "left_rectified");
+
+  flat.nintensity = flat.npoints = 0;
+  flat.xyz.clear();
+  flat.intensity.clear();
+  generated.nintensity = generated.npoints = 0;
+  generated.xyz.clear();
+  generated.intensity.clear();
+  EXPECT_EQ(Encode(flat), Encode(generated)) << "no points";
+  flat.npoints = 1;
+  EXPECT_LT(flat.encode(std::vector<uint8_t>(1024).data(), 0, 1024), 0) << "npoints beyond its points";
+
+  // Every truncation, and every length field made negative or too long.
+  for (size_t size = 0; size < bytes.size(); ++size)
+    EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(size)), ws::DecodeError) << size;
+  const size_t frame_at = 8 + 8 + 8, npoints_at = frame_at + 4 + 15, nintensity_at = npoints_at + 4 + 3 * 12;
+  for (size_t at : {frame_at, npoints_at, nintensity_at})
+    for (uint8_t first_byte : {uint8_t(0xff), uint8_t(0x7f)}) {
+      auto bad = bytes;
+      bad[at] = first_byte;
+      EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(bad.data(), int(bad.size())), ws::DecodeError) << at;
+      EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(bad.data(), int(bad.size())), ws::DecodeError) << at;
+    }
+  auto nul = bytes;
+  nul[frame_at + 4 + 3] = 0;  // "lef\0_rectified"
+  EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(nul.data(), int(nul.size())), ws::DecodeError);
+  EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(nul.data(), int(nul.size())), ws::DecodeError);
+  auto one_intensity = bytes;  // nintensity 1 of 3 points: decodes, does not validate
+  one_intensity[nintensity_at + 3] = 1;
+  one_intensity.resize(nintensity_at + 4 + 4);
+  EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(one_intensity.data(), int(one_intensity.size())), ws::DecodeError);
 }
 
 // Found by tests/fuzz: LCM's string decoder took any length field and any
