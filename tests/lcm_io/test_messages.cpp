@@ -248,42 +248,37 @@ TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
   }
 }
 
+// The first `points` of three points (an odd one among them), with
+// intensity, in either cloud type.
+template <class Cloud>
+Cloud SampleCloud(int points) {
+  const float xyz[3][3] = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}}, intensity[3] = {10, 20, 255};
+  Cloud cloud{};
+  cloud.utime = 6;
+  cloud.frame_id = 9;
+  cloud.frame = "left_rectified";
+  for (int i = 0; i < points; ++i) {
+    cloud.xyz.push_back({xyz[i][0], xyz[i][1], xyz[i][2]});
+    cloud.intensity.push_back(intensity[i]);
+  }
+  cloud.npoints = cloud.nintensity = points;
+  return cloud;
+}
+
 // stereo-match and stereo-cloud send and take their clouds as ws::PointCloud
 // (its points in one array): the bytes of point_cloud_t, both ways, and the
 // same refusals.
 TEST(Messages, PointCloudIsPointCloudTOnTheWire) {
-  point_cloud_t generated{};
-  generated.utime = 6;
-  generated.frame_id = 9;
-  generated.frame = "left_rectified";
-  generated.npoints = 3;
-  generated.xyz = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}};
-  generated.nintensity = 3;
-  generated.intensity = {10, 20, 255};
-  ws::PointCloud flat;
-  flat.utime = 6;
-  flat.frame_id = 9;
-  flat.frame = "left_rectified";
-  flat.npoints = 3;
-  flat.xyz = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}};
-  flat.nintensity = 3;
-  flat.intensity = {10, 20, 255};
-  const auto bytes = Encode(generated);
+  auto flat = SampleCloud<ws::PointCloud>(3);
+  const auto bytes = Encode(SampleCloud<point_cloud_t>(3));
   EXPECT_EQ(Encode(flat), bytes);
-  EXPECT_EQ(flat.getEncodedSize(), generated.getEncodedSize());
+  EXPECT_EQ(flat.getEncodedSize(), int(bytes.size()));
   const auto decoded = ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(bytes.size()));
   EXPECT_EQ(Encode(decoded), bytes);
   EXPECT_EQ(decoded.xyz, flat.xyz);
   EXPECT_EQ(decoded.frame, "left_rectified");
-
-  flat.nintensity = flat.npoints = 0;
-  flat.xyz.clear();
-  flat.intensity.clear();
-  generated.nintensity = generated.npoints = 0;
-  generated.xyz.clear();
-  generated.intensity.clear();
-  EXPECT_EQ(Encode(flat), Encode(generated)) << "no points";
-  flat.npoints = 1;
+  EXPECT_EQ(Encode(SampleCloud<ws::PointCloud>(0)), Encode(SampleCloud<point_cloud_t>(0))) << "no points";
+  flat.npoints = 4;
   EXPECT_LT(flat.encode(std::vector<uint8_t>(1024).data(), 0, 1024), 0) << "npoints beyond its points";
 
   // Every truncation, and every length field made negative or too long.
