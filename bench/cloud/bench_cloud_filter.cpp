@@ -56,11 +56,11 @@ double SceneDepth(double x, double y) {
   return std::min(wall > 0 ? wall : INFINITY, floor);
 }
 
-widestereo::point_cloud_t StereoWallCloud(const Camera& camera, unsigned seed) {
+ws::PointCloud StereoWallCloud(const Camera& camera, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   std::normal_distribution<double> disparity_noise(0, kDisparitySigma);
-  widestereo::point_cloud_t msg{};
+  ws::PointCloud msg{};
   msg.frame = "left_rectified";
   msg.xyz.reserve(size_t(camera.width) * camera.height);
   for (int v = 0; v < camera.height; ++v)
@@ -109,7 +109,7 @@ struct Contender {
 // alternating runs: the grid search the chain uses on voxels, the k-d tree
 // on every core (the chain's search before the grid, and still its search
 // when the voxel stage is off), and PCL's own single-threaded filter.
-void BenchOutliers(const widestereo::point_cloud_t& msg, int runs, const ws::CloudFilterConfig& config) {
+void BenchOutliers(const ws::PointCloud& msg, int runs, const ws::CloudFilterConfig& config) {
   const ws::VoxelOutput voxels = ws::DownsampleVoxels(
       ws::KeepDepthRange(ws::ToPcl(msg), config.z_min, config.z_max), config.voxel_leaf);
   const ws::PclCloud::Ptr cloud = voxels.cloud;
@@ -138,7 +138,7 @@ void BenchOutliers(const widestereo::point_cloud_t& msg, int runs, const ws::Clo
 }
 
 // The chain with `config`, `runs` times: the median time per stage.
-void BenchChain(const char* name, const widestereo::point_cloud_t& cloud, const ws::CloudFilterConfig& config,
+void BenchChain(const char* name, const ws::PointCloud& cloud, const ws::CloudFilterConfig& config,
                 int runs) {
   const ws::CloudFilter filter{config};
   std::vector<widestereo::cloud_stats_t> stats;
@@ -168,7 +168,7 @@ void BenchChain(const char* name, const widestereo::point_cloud_t& cloud, const 
 // The default chain against the one before issue #16 (RANSAC on every
 // point), then our outlier stage against PCL's.
 void Bench(const char* name, const Camera& camera, int runs) {
-  const widestereo::point_cloud_t cloud = StereoWallCloud(camera, 1);
+  const ws::PointCloud cloud = StereoWallCloud(camera, 1);
   std::printf("\n%s: %dx%d = %d points, %d runs (leaf 1 cm)\n", name, camera.width, camera.height,
               cloud.npoints, runs);
   ws::CloudFilterConfig before;
@@ -180,7 +180,7 @@ void Bench(const char* name, const Camera& camera, int runs) {
 
 // The live chain (config/stereo-cloud-live.yaml's voxels and neighbours) on
 // `cloud`.
-void BenchLive(const std::string& name, const widestereo::point_cloud_t& cloud, int runs) {
+void BenchLive(const std::string& name, const ws::PointCloud& cloud, int runs) {
   ws::CloudFilterConfig live;
   live.voxel_leaf = 0.04;
   live.outliers_mean_k = 8;
@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s", kUsage);
     return 2;
   }
-  std::vector<widestereo::point_cloud_t> saved;
+  std::vector<ws::PointCloud> saved;
   for (int i = 2; i < argc; ++i) {
     try {
       saved.push_back(ws::ReadPcd(argv[i]));

@@ -38,7 +38,7 @@
 #include "runtime/process_cli.h"
 #include "runtime/wall_clock.h"
 #include "source/sim_source.h"
-#include "widestereo/point_cloud_t.hpp"
+#include "lcm_io/point_cloud.h"
 #include "widestereo/stereo_frame_t.hpp"
 
 namespace {
@@ -151,8 +151,8 @@ int main(int argc, char** argv) {
     arrival_s[f.frame_id] = since_first * 1e-6;
     ++pairs;
   });
-  process.Subscribe<widestereo::point_cloud_t>(ws::channel::kStereoCloudFiltered,
-                                               [&](const widestereo::point_cloud_t& c) {
+  process.Subscribe<ws::PointCloud>(ws::channel::kStereoCloudFiltered,
+                                               [&](const ws::PointCloud& c) {
                                                  const int64_t now = ws::WallMicros();
                                                  cloud_ids.insert(c.frame_id);
                                                  latency_ms.push_back((now - c.utime) * 1e-3);

@@ -43,7 +43,7 @@ CloudFilter::CloudFilter(const CloudFilterConfig& config) : config_(config) {
   ValidateCloudFilterConfig(config_);
 }
 
-CloudFilterResult CloudFilter::Run(const widestereo::point_cloud_t& msg) const {
+CloudFilterResult CloudFilter::Run(const PointCloud& msg) const {
   CloudFilterResult result;
   StageClock clock;
   PclCloud::Ptr cloud = ToPcl(msg);

@@ -7,14 +7,14 @@
 
 #include "cloud/cloud_filter_config.h"
 #include "widestereo/cloud_stats_t.hpp"
-#include "widestereo/point_cloud_t.hpp"
+#include "lcm_io/point_cloud.h"
 
 namespace ws {
 
 struct CloudFilterResult {
   // The cloud after outlier removal, with the input's utime, frame_id and
   // frame, and intensity when the input had it.
-  widestereo::point_cloud_t cloud;
+  PointCloud cloud;
   // Stages "input", "passthrough", "voxel", "outliers", "plane" (always all
   // five; a disabled stage passes its input on): points after each (for
   // "plane", its inliers) and wall time in each. The plane's normal faces the
@@ -35,7 +35,7 @@ class CloudFilter {
   // result: empty when no point survives the pass-through (empty, all NaN,
   // all out of range) or all points are one point, with a note saying so;
   // without a plane for collinear points.
-  CloudFilterResult Run(const widestereo::point_cloud_t& msg) const;
+  CloudFilterResult Run(const PointCloud& msg) const;
 
   const CloudFilterConfig& config() const { return config_; }
 

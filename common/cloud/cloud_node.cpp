@@ -22,7 +22,7 @@ std::string Join(const std::vector<std::string>& lines) {
 
 // "1167047 points in, 412163 out; plane 1.9996 m, normal (0.0000, 0.0000, -1.0000),
 // inlier RMS 1.10 mm (411950 inliers); 2140 ms"
-std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult& result) {
+std::string Summary(const PointCloud& in, const CloudFilterResult& result) {
   const auto& s = result.stats;
   double ms = 0;
   for (double stage_ms : s.stage_ms) ms += stage_ms;
@@ -45,7 +45,7 @@ std::string Summary(const widestereo::point_cloud_t& in, const CloudFilterResult
 // 70-80 ms against 20 ms for the later ones (bench/transport) and the first
 // clouds waited for it; warmed up, the first cloud came 40-75 ms sooner.
 void WarmUp(const CloudFilter& filter) {
-  widestereo::point_cloud_t plane{};
+  PointCloud plane{};
   plane.frame = "warm-up";
   for (int row = 0; row < 240; ++row)
     for (int col = 0; col < 320; ++col)
@@ -66,10 +66,10 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
                                 [this](const CommandArgs& args) { SaveCommand(args); }}}),
       filter_(filter),
       save_(std::move(save)),
-      stage_(process.file_input() ? NewestFirst<widestereo::point_cloud_t>::Policy::in_line
-                                  : NewestFirst<widestereo::point_cloud_t>::Policy::newest,
-             [this](widestereo::point_cloud_t& msg) { Filter(msg); },
-             [this](const widestereo::point_cloud_t&) {
+      stage_(process.file_input() ? NewestFirst<PointCloud>::Policy::in_line
+                                  : NewestFirst<PointCloud>::Policy::newest,
+             [this](PointCloud& msg) { Filter(msg); },
+             [this](const PointCloud&) {
                process_.CountSkipped(channel::kStereoCloud, "a newer cloud came while filtering");
              }) {
   if (save_.save_every < 0)
@@ -87,9 +87,9 @@ CloudNode::CloudNode(Process& process, const CloudFilterConfig& filter, CloudSav
 
 CloudNode::~CloudNode() { stage_.Drain(); }
 
-void CloudNode::OnCloud(widestereo::point_cloud_t& msg) { stage_.Offer(std::move(msg)); }
+void CloudNode::OnCloud(PointCloud& msg) { stage_.Offer(std::move(msg)); }
 
-void CloudNode::Filter(const widestereo::point_cloud_t& msg) {
+void CloudNode::Filter(const PointCloud& msg) {
   CloudFilterResult result;
   try {
     StageTimer timer(process_.stage_times(), "filter", StageTimer::Cpu::process);
@@ -163,13 +163,13 @@ std::string CloudNode::Progress() const {
 
 // A cloud saved by frame id is a new file: a frame id that names one already
 // there (a replay, a peer's chosen id) refuses the save.
-std::string CloudNode::PeriodicPath(const widestereo::point_cloud_t& cloud) const {
+std::string CloudNode::PeriodicPath(const PointCloud& cloud) const {
   char name[48];
   std::snprintf(name, sizeof name, "cloud_%06lld.pcd", (long long)cloud.frame_id);
   return CommandOutputFile({save_.pcd_dir, name, ".pcd"});
 }
 
-void CloudNode::Save(const widestereo::point_cloud_t& cloud, const std::string& path) {
+void CloudNode::Save(const PointCloud& cloud, const std::string& path) {
   WritePcd(path, cloud);
   ++saved_;
   process_.log().Info("frame " + std::to_string(cloud.frame_id) + ": " +

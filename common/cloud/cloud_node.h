@@ -39,7 +39,7 @@
 #include "runtime/newest_first.h"
 #include "runtime/process.h"
 #include "widestereo/command_t.hpp"
-#include "widestereo/point_cloud_t.hpp"
+#include "lcm_io/point_cloud.h"
 
 namespace ws {
 
@@ -56,16 +56,16 @@ class CloudNode {
   ~CloudNode();
 
   // Takes the cloud (moves it to the filter's stage).
-  void OnCloud(widestereo::point_cloud_t& msg);
+  void OnCloud(PointCloud& msg);
   // Throws (so Process counts the command as rejected) when a `save` fails.
   void OnCommand(const widestereo::command_t& command) { commands_.Dispatch(command); }
   // "clouds 12 | last 40211 pts, plane 2.003 m, rms 4.1 mm | saved 3"
   std::string Progress() const;
 
  private:
-  void Filter(const widestereo::point_cloud_t& msg);
-  std::string PeriodicPath(const widestereo::point_cloud_t& cloud) const;
-  void Save(const widestereo::point_cloud_t& cloud, const std::string& path);
+  void Filter(const PointCloud& msg);
+  std::string PeriodicPath(const PointCloud& cloud) const;
+  void Save(const PointCloud& cloud, const std::string& path);
   // save [path=NAME.pcd] [overwrite=0|1]: the newest filtered cloud.
   void SaveCommand(const CommandArgs& args);
 
@@ -74,12 +74,12 @@ class CloudNode {
   const CloudFilter filter_;
   const CloudSaveConfig save_;
   mutable std::mutex mutex_;  // guards what follows, but for the stage
-  std::optional<widestereo::point_cloud_t> newest_;
+  std::optional<PointCloud> newest_;
   widestereo::cloud_stats_t newest_stats_{};
   int64_t filtered_ = 0;
   int64_t saved_ = 0;
   bool in_empty_run_ = false;
-  NewestFirst<widestereo::point_cloud_t> stage_;  // last: drained before the rest goes
+  NewestFirst<PointCloud> stage_;  // last: drained before the rest goes
 };
 
 }  // namespace ws

@@ -140,7 +140,7 @@ PclCloud Widen(const pcl::PCLPointCloud2& blob) {
 
 }  // namespace
 
-void WritePcd(const std::string& path, const widestereo::point_cloud_t& msg) {
+void WritePcd(const std::string& path, const PointCloud& msg) {
   const PclCloud::Ptr cloud = ToPcl(msg);
   try {
     WriteFileAtomically(path, msg.nintensity > 0 ? BinaryPcd(*cloud) : BinaryPcd(Narrow<pcl::PointXYZ>(*cloud)));
@@ -149,7 +149,7 @@ void WritePcd(const std::string& path, const widestereo::point_cloud_t& msg) {
   }
 }
 
-widestereo::point_cloud_t ReadPcd(const std::string& path) {
+PointCloud ReadPcd(const std::string& path) {
   // PCL 1.13 takes a file without a PCD header for one with no fields, and
   // its read() then crashes: look at the header first. On some malformed
   // headers it throws std::out_of_range.
@@ -185,7 +185,7 @@ widestereo::point_cloud_t ReadPcd(const std::string& path) {
   } catch (const std::exception& e) {
     throw PcdError("cannot read PCD '" + path + "': " + e.what());
   }
-  return FromPcl(cloud, with_intensity, widestereo::point_cloud_t{});
+  return FromPcl(cloud, with_intensity, PointCloud{});
 }
 
 }  // namespace ws

@@ -4,7 +4,7 @@
 
 namespace ws {
 
-PclCloud::Ptr ToPcl(const widestereo::point_cloud_t& msg) {
+PclCloud::Ptr ToPcl(const PointCloud& msg) {
   ValidatePointCloud(msg);
   PclCloud::Ptr cloud(new PclCloud);
   cloud->resize(msg.npoints);
@@ -19,9 +19,9 @@ PclCloud::Ptr ToPcl(const widestereo::point_cloud_t& msg) {
   return cloud;
 }
 
-widestereo::point_cloud_t FromPcl(const PclCloud& cloud, bool with_intensity,
-                                  const widestereo::point_cloud_t& header) {
-  widestereo::point_cloud_t msg;
+PointCloud FromPcl(const PclCloud& cloud, bool with_intensity,
+                                  const PointCloud& header) {
+  PointCloud msg;
   msg.utime = header.utime;
   msg.frame_id = header.frame_id;
   msg.frame = header.frame;

@@ -11,15 +11,12 @@ std::string Count(int64_t n) { return std::to_string(n); }
 
 }  // namespace
 
-void ValidatePointCloud(const widestereo::point_cloud_t& msg) {
+void ValidatePointCloud(const PointCloud& msg) {
   if (msg.npoints < 0) Reject("negative npoints " + Count(msg.npoints));
   if (msg.nintensity < 0) Reject("negative nintensity " + Count(msg.nintensity));
   if (msg.xyz.size() != size_t(msg.npoints))
     Reject("npoints is " + Count(msg.npoints) + " but xyz holds " + Count(msg.xyz.size()) +
            " points");
-  for (size_t i = 0; i < msg.xyz.size(); ++i)
-    if (msg.xyz[i].size() != 3)
-      Reject("point " + Count(i) + " has " + Count(msg.xyz[i].size()) + " coordinates, not 3");
   if (msg.nintensity != 0 && msg.nintensity != msg.npoints)
     Reject("nintensity is " + Count(msg.nintensity) + ", must be 0 or npoints (" +
            Count(msg.npoints) + ")");

@@ -37,7 +37,7 @@ struct MatchConfig {
 
 struct MatchResult {
   widestereo::disparity_t disparity;
-  widestereo::point_cloud_t cloud;
+  PointCloud cloud;
 };
 
 // A frame rectified and matched: the first stage of MatchFrame.

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -71,7 +70,7 @@ bool SampleAt(const cv::Mat& disparity, const cv::Mat& gray, float min_disparity
 // when `gray` is not empty, intensity).
 void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min_disparity,
                   const cv::Mat& gray, const CloudSampling& sampling, const std::vector<double>& xs,
-                  const std::vector<double>& ys, int begin, int end, widestereo::point_cloud_t* cloud) {
+                  const std::vector<double>& ys, int begin, int end, PointCloud* cloud) {
   for (int j = begin; j < end; ++j)
     for (double x : xs) {
       float d, intensity;
@@ -85,7 +84,7 @@ void RowsToPoints(const Rectification& rect, const cv::Mat& disparity, float min
 
 }  // namespace
 
-widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
+PointCloud DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
                                            float min_disparity, const cv::Mat& intensity,
                                            const CloudSampling& sampling) {
   CV_Assert(disparity.type() == CV_32FC1 && sampling.step >= 1 && rect.downscale >= 1);
@@ -103,26 +102,25 @@ widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::
   const int n = rect.downscale, step = std::max(sampling.step, n);
   const std::vector<double> xs = Positions(disparity.cols * n, n, step);
   const std::vector<double> ys = Positions(disparity.rows * n, n, step);
-  // A megapixel frame gives a million points, each its own small array in
-  // point_cloud_t: bands of rows are converted on every core, then moved
-  // into the message in row order.
+  // A megapixel frame gives a million points: bands of rows are converted
+  // on every core, then copied into the message in row order.
   const int rows = int(ys.size());
   const int band_rows = std::max(1, 32 / step);
   const int bands = (rows + band_rows - 1) / band_rows;
-  std::vector<widestereo::point_cloud_t> parts(static_cast<size_t>(bands));
+  std::vector<PointCloud> parts(static_cast<size_t>(bands));
   cv::parallel_for_(cv::Range(0, bands), [&](const cv::Range& range) {
     for (int band = range.start; band < range.end; ++band)
       RowsToPoints(rect, disparity, min_disparity, gray, sampling, xs, ys, band * band_rows,
                    std::min(rows, (band + 1) * band_rows), &parts[size_t(band)]);
   });
-  widestereo::point_cloud_t cloud;
+  PointCloud cloud;
   cloud.frame = kLeftRectifiedFrame;
   size_t total = 0;
   for (const auto& part : parts) total += part.xyz.size();
   cloud.xyz.reserve(total);
   cloud.intensity.reserve(gray.empty() ? 0 : total);
-  for (auto& part : parts) {
-    std::move(part.xyz.begin(), part.xyz.end(), std::back_inserter(cloud.xyz));
+  for (const auto& part : parts) {
+    cloud.xyz.insert(cloud.xyz.end(), part.xyz.begin(), part.xyz.end());
     cloud.intensity.insert(cloud.intensity.end(), part.intensity.begin(), part.intensity.end());
   }
   cloud.npoints = int32_t(cloud.xyz.size());

@@ -20,8 +20,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "lcm_io/point_cloud.h"
 #include "rectify/rectification.h"
-#include "widestereo/point_cloud_t.hpp"
 
 namespace ws {
 
@@ -33,7 +33,7 @@ struct CloudSampling {
 inline constexpr const char* kLeftRectifiedFrame = "left_rectified";
 
 // `intensity` (8-bit grey or BGR, the left rectified image) may be empty.
-widestereo::point_cloud_t DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
+PointCloud DisparityToCloud(const Rectification& rect, const cv::Mat& disparity,
                                            float min_disparity, const cv::Mat& intensity,
                                            const CloudSampling& sampling);
 

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     process.SetProgress([&] { return node.Progress(); });
     // stereo-match makes a cloud of the newest pair only: the frame ids it
     // passed over are skipped by design, not lost (runtime/process.h).
-    process.Subscribe<widestereo::point_cloud_t>(
+    process.Subscribe<ws::PointCloud>(
         ws::channel::kStereoCloud, [&](auto& msg) { node.OnCloud(msg); }, 2, ws::Process::FrameGaps::skipped);
     process.Subscribe<widestereo::command_t>(
         ws::channel::kStereoCommand, [&](const auto& msg) { node.OnCommand(msg); });

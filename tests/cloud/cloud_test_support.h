@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "widestereo/point_cloud_t.hpp"
+#include "lcm_io/point_cloud.h"
 
 namespace ws::testing {
 
@@ -21,9 +21,9 @@ using Point = std::array<float, 3>;
 
 // A consistent message holding `points`, with `intensity` (empty or one per
 // point), utime 1000, frame_id 7, frame "left_rectified".
-inline widestereo::point_cloud_t MakeCloud(const std::vector<Point>& points,
+inline PointCloud MakeCloud(const std::vector<Point>& points,
                                            const std::vector<float>& intensity = {}) {
-  widestereo::point_cloud_t msg{};
+  PointCloud msg{};
   msg.utime = 1000;
   msg.frame_id = 7;
   msg.frame = "left_rectified";
@@ -46,7 +46,7 @@ constexpr float kWallIntensity = 100, kOutlierIntensity = 7;
 
 // The wall, outliers in range, and points every filter must drop: OpenCV's
 // missing-disparity Z (10000), NaN, infinite, and behind the camera.
-inline widestereo::point_cloud_t NoisyWallScene() {
+inline PointCloud NoisyWallScene() {
   std::mt19937 rng(42);
   std::normal_distribution<float> noise(0, kNoiseSigma);
   std::uniform_real_distribution<float> lateral(-1, 1), depth(0.5f, 4.0f);

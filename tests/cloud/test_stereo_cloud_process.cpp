@@ -23,7 +23,7 @@ using namespace ws::test;
 using ws::testing::MakeCloud;
 using ws::testing::Point;
 
-widestereo::point_cloud_t Framed(widestereo::point_cloud_t cloud, int64_t frame_id) {
+ws::PointCloud Framed(ws::PointCloud cloud, int64_t frame_id) {
   cloud.frame_id = frame_id;
   cloud.utime = 1000000 * frame_id;
   return cloud;
@@ -57,7 +57,7 @@ TEST(StereoCloudProcess, FiltersTheWallAndWritesPcdFilesEveryNAndOnSave) {
   EXPECT_EQ(r.output.find("[pcl::"), std::string::npos) << r.output;
 
   const auto events = ReadLog(dir + "/out.lcmlog");
-  const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloudFiltered);
+  const auto clouds = Messages<ws::PointCloud>(events, ws::channel::kStereoCloudFiltered);
   const auto stats = Messages<widestereo::cloud_stats_t>(events, ws::channel::kCloudStats);
   ASSERT_EQ(clouds.size(), 4u);
   ASSERT_EQ(stats.size(), 4u);
@@ -126,7 +126,7 @@ TEST(StereoCloudProcess, BadCloudsGiveEmptyResultsCountedWithoutStalling) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   const auto events = ReadLog(dir + "/out.lcmlog");
-  const auto clouds = Messages<widestereo::point_cloud_t>(events, ws::channel::kStereoCloudFiltered);
+  const auto clouds = Messages<ws::PointCloud>(events, ws::channel::kStereoCloudFiltered);
   const auto stats = Messages<widestereo::cloud_stats_t>(events, ws::channel::kCloudStats);
   ASSERT_EQ(clouds.size(), 4u);
   ASSERT_EQ(stats.size(), 4u);

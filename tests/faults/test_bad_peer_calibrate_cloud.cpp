@@ -85,11 +85,11 @@ TEST_P(BadPeer, StereoCalibrateRejectsItAllAndSolvesTheSame) {
 
 TEST_P(BadPeer, StereoCloudRejectsItAllAndFiltersTheSame) {
   const std::string dir = TempDir("faults-cloud");
-  std::vector<widestereo::point_cloud_t> clouds;
+  std::vector<ws::PointCloud> clouds;
   std::vector<LogEvent> clean_in;
   for (int i = 0; i < 3; ++i) {
     // The wall moved by i cm, so that every frame's output differs.
-    widestereo::point_cloud_t cloud = ws::testing::NoisyWallScene();
+    ws::PointCloud cloud = ws::testing::NoisyWallScene();
     for (auto& p : cloud.xyz) p[2] += 0.01f * float(i);
     cloud.frame_id = i;
     cloud.utime = (i + 1) * 200000;

@@ -135,12 +135,14 @@ void Use(const calibration_status_t& status) {
 }
 void Use(const calibration_health_t& health) { Show(health); }
 
-// stereo-cloud runs its filter chain on every cloud; stereo-view shows it.
+// stereo-view shows every cloud; stereo-cloud decodes the same bytes as a
+// PointCloud and runs its filter chain on it.
 void Use(const point_cloud_t& cloud) {
   static const ws::CloudFilter filter{ws::CloudFilterConfig{}};
   ws::view::BlobStore blobs;
   ws::view::CloudEvent(cloud, 100, blobs);
-  filter.Run(cloud);
+  const std::vector<uint8_t> bytes = ws::EncodeMessage(cloud);
+  filter.Run(ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(bytes.size())));
 }
 
 // stereo-view shows every solve's outcome and every calibration status.

@@ -5,7 +5,7 @@
 #include "fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  widestereo::point_cloud_t cloud;
+  ws::PointCloud cloud;
   try {
     cloud = ws::ReadPcd(ws::fuzz::WriteInputFile(data, size, ".pcd"));
   } catch (const ws::PcdError&) {

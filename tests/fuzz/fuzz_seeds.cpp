@@ -307,8 +307,8 @@ void StatusAndCommandSeeds(Seeds& seeds) {
   seeds.Message("five-stages", stats);
 }
 
-point_cloud_t Cloud(bool with_intensity) {
-  point_cloud_t cloud{};
+ws::PointCloud Cloud(bool with_intensity) {
+  ws::PointCloud cloud;
   cloud.frame = "left_rectified";
   for (int i = 0; i < 40; ++i) {
     cloud.xyz.push_back({0.05f * (i % 8), 0.05f * float(i / 8), 2.0f + 0.001f * float(i % 3)});

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lcm_io/decode.h"
+#include "lcm_io/point_cloud.h"
 #include "test_support.h"
 
 namespace {
@@ -245,6 +246,60 @@ TEST(Messages, NegativeOrHugeArrayLengthsAreRejected) {
     bad[npoints_at] = first_byte;  // -16777216 or 2^31-ish points in a 40-byte message
     EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(bad.data(), int(bad.size())), ws::DecodeError);
   }
+}
+
+// The first `points` of three points (an odd one among them), with
+// intensity, in either cloud type.
+template <class Cloud>
+Cloud SampleCloud(int points) {
+  const float xyz[3][3] = {{0, 0, 2}, {0.1f, -0.2f, 2.1f}, {1e-30f, 3e30f, -0.f}}, intensity[3] = {10, 20, 255};
+  Cloud cloud{};
+  cloud.utime = 6;
+  cloud.frame_id = 9;
+  cloud.frame = "left_rectified";
+  for (int i = 0; i < points; ++i) {
+    cloud.xyz.push_back({xyz[i][0], xyz[i][1], xyz[i][2]});
+    cloud.intensity.push_back(intensity[i]);
+  }
+  cloud.npoints = cloud.nintensity = points;
+  return cloud;
+}
+
+// stereo-match and stereo-cloud send and take their clouds as ws::PointCloud
+// (its points in one array): the bytes of point_cloud_t, both ways, and the
+// same refusals.
+TEST(Messages, PointCloudIsPointCloudTOnTheWire) {
+  auto flat = SampleCloud<ws::PointCloud>(3);
+  const auto bytes = Encode(SampleCloud<point_cloud_t>(3));
+  EXPECT_EQ(Encode(flat), bytes);
+  EXPECT_EQ(flat.getEncodedSize(), int(bytes.size()));
+  const auto decoded = ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(bytes.size()));
+  EXPECT_EQ(Encode(decoded), bytes);
+  EXPECT_EQ(decoded.xyz, flat.xyz);
+  EXPECT_EQ(decoded.frame, "left_rectified");
+  EXPECT_EQ(Encode(SampleCloud<ws::PointCloud>(0)), Encode(SampleCloud<point_cloud_t>(0))) << "no points";
+  flat.npoints = 4;
+  EXPECT_LT(flat.encode(std::vector<uint8_t>(1024).data(), 0, 1024), 0) << "npoints beyond its points";
+
+  // Every truncation, and every length field made negative or too long.
+  for (size_t size = 0; size < bytes.size(); ++size)
+    EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(bytes.data(), int(size)), ws::DecodeError) << size;
+  const size_t frame_at = 8 + 8 + 8, npoints_at = frame_at + 4 + 15, nintensity_at = npoints_at + 4 + 3 * 12;
+  for (size_t at : {frame_at, npoints_at, nintensity_at})
+    for (uint8_t first_byte : {uint8_t(0xff), uint8_t(0x7f)}) {
+      auto bad = bytes;
+      bad[at] = first_byte;
+      EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(bad.data(), int(bad.size())), ws::DecodeError) << at;
+      EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(bad.data(), int(bad.size())), ws::DecodeError) << at;
+    }
+  auto nul = bytes;
+  nul[frame_at + 4 + 3] = 0;  // "lef\0_rectified"
+  EXPECT_THROW(ws::DecodeMessage<point_cloud_t>(nul.data(), int(nul.size())), ws::DecodeError);
+  EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(nul.data(), int(nul.size())), ws::DecodeError);
+  auto one_intensity = bytes;  // nintensity 1 of 3 points: decodes, does not validate
+  one_intensity[nintensity_at + 3] = 1;
+  one_intensity.resize(nintensity_at + 4 + 4);
+  EXPECT_THROW(ws::DecodeMessage<ws::PointCloud>(one_intensity.data(), int(one_intensity.size())), ws::DecodeError);
 }
 
 // Found by tests/fuzz: LCM's string decoder took any length field and any

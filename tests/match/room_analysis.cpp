@@ -23,12 +23,12 @@ RoomFit MeasureRoom(const widestereo::point_cloud_t& cloud, const RoomField& fie
   const Rectification& rect = field.latlon;
   const int cols = (rect.size.width + cell - 1) / cell, rows = (rect.size.height + cell - 1) / cell;
   cv::Mat covered(rows, cols, CV_8UC1, cv::Scalar(0));
-  std::vector<widestereo::point_cloud_t> on_face(field.planes.size());
+  std::vector<PointCloud> on_face(field.planes.size());
   for (const auto& p : cloud.xyz) {
     const cv::Vec3d X(p[0], p[1], p[2]);
     double scale = 0;
     const int face = FirstPlaneHit(field.planes, X, &scale);
-    if (face >= 0) on_face[size_t(face)].xyz.push_back(p);
+    if (face >= 0) on_face[size_t(face)].xyz.push_back({p[0], p[1], p[2]});
     cv::Point2d left, right;
     if (!RectifiedPixel(rect, X, &left) || !RectifiedPixel(rect, X - cv::Vec3d(rect.baseline, 0, 0), &right))
       continue;
